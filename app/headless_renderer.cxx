@@ -1,0 +1,54 @@
+#include "headless_renderer.h"
+
+#include "vtkShadelabFloatCapturePass.h"
+#include "vtkShadelabOSMesaRenderWindow.h"
+#include "vtkShadelabOutputWindow.h"
+
+#include <vtkAutoInit.h>
+#include <vtkOutputWindow.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderer.h>
+
+// vtkRenderer::New and vtkPolyDataMapper::New return the OpenGL2 classes only
+// once this module's object factory is registered.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+namespace shadelab
+{
+HeadlessRenderer::HeadlessRenderer()
+  : Window(vtkSmartPointer<vtkShadelabOSMesaRenderWindow>::New())
+  , Renderer(vtkSmartPointer<vtkRenderer>::New())
+  , Capture(vtkSmartPointer<vtkShadelabFloatCapturePass>::New())
+{
+  this->Capture->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
+  this->Renderer->SetPass(this->Capture);
+  this->Window->AddRenderer(this->Renderer);
+}
+
+HeadlessRenderer::~HeadlessRenderer()
+{
+  this->Window->Finalize();
+}
+
+std::string HeadlessRenderer::Start(int width, int height)
+{
+  vtkShadelabOSMesaRenderWindow::ChooseRasterizerThreads();
+  this->Window->SetMultiSamples(0); // exact, repeatable pixels
+  this->Window->SetSize(width, height);
+  this->Window->Initialize();
+  if (!this->Window->GetContextReady())
+  {
+    auto* output = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+    return "headless OpenGL: " +
+      (output && !output->GetFirstError().empty() ? output->GetFirstError()
+                                                  : std::string("no OSMesa context"));
+  }
+  return {};
+}
+
+FloatImage HeadlessRenderer::Render()
+{
+  this->Window->Render();
+  return { this->Capture->GetWidth(), this->Capture->GetHeight(), this->Capture->GetPixels() };
+}
+}

@@ -1,0 +1,40 @@
+// The headless backend as the commands use it: an OSMesa render window with
+// one renderer whose frames are captured as unclamped floats.
+#ifndef shadelab_headless_renderer_h
+#define shadelab_headless_renderer_h
+
+#include "image_output.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkRenderer;
+class vtkShadelabFloatCapturePass;
+class vtkShadelabOSMesaRenderWindow;
+
+namespace shadelab
+{
+class HeadlessRenderer
+{
+public:
+  HeadlessRenderer();
+  ~HeadlessRenderer();
+
+  /** Creates the OpenGL context for width x height pictures; an error text or "". */
+  std::string Start(int width, int height);
+
+  /** The renderer to fill with the scene. */
+  vtkRenderer* GetRenderer() const { return this->Renderer; }
+
+  /** Renders one frame and returns it. */
+  FloatImage Render();
+
+private:
+  vtkSmartPointer<vtkShadelabOSMesaRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkShadelabFloatCapturePass> Capture;
+};
+}
+
+#endif

@@ -1,0 +1,205 @@
+#include "image_output.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+namespace shadelab
+{
+namespace
+{
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+OIIO::TypeDesc ToTypeDesc(PixelType type)
+{
+  switch (type)
+  {
+    case PixelType::UInt16:
+      return OIIO::TypeDesc::UINT16;
+    case PixelType::Half:
+      return OIIO::TypeDesc::HALF;
+    case PixelType::Float:
+      return OIIO::TypeDesc::FLOAT;
+    default:
+      return OIIO::TypeDesc::UINT8;
+  }
+}
+
+// Beside the target, so that the rename stays on one file system.
+std::string TemporaryName(const std::string& path)
+{
+  return path + ".tmp-" + std::to_string(getpid());
+}
+
+std::string OneLine(std::string s)
+{
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ')
+  {
+    s.pop_back();
+  }
+  return s;
+}
+
+// Creates the writer for path's format and opens it on the temporary name.
+std::unique_ptr<OIIO::ImageOutput> Open(
+  const std::string& path, const OIIO::ImageSpec& spec, std::string& error)
+{
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out)
+  {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    error = ext.empty() ? "no file extension to choose an image format by"
+                        : "no image format for \"" + ext + "\" (OpenImageIO: " +
+        OneLine(OIIO::geterror()) + ")";
+    return nullptr;
+  }
+  const std::string temporary = TemporaryName(path);
+  if (!out->open(temporary, spec))
+  {
+    const int saved = errno;
+    std::remove(temporary.c_str());
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    if (access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
+    {
+      error = std::string("cannot write: ") + std::strerror(errno);
+    }
+    else
+    {
+      const std::string why = OneLine(out->geterror());
+      error = "cannot write: " + (why.empty() ? std::string(std::strerror(saved)) : why);
+    }
+    return nullptr;
+  }
+  if (out->spec().format != spec.format)
+  {
+    out->close();
+    std::remove(temporary.c_str());
+    error = std::string("the ") + out->format_name() + " format cannot store " +
+      spec.format.c_str() + " pixels (float output: .exr, or .tif with --pixel-type float)";
+    return nullptr;
+  }
+  return out;
+}
+
+template <typename T>
+std::vector<T> Quantise(const FloatImage& image, double scale)
+{
+  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * 3);
+  for (int y = 0; y < image.Height; ++y)
+  {
+    const float* src = image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
+    T* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
+    for (int x = 0; x < image.Width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double v = src[4 * x + c];
+        // NaN compares false and lands on 0.
+        const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
+        dst[3 * x + c] = static_cast<T>(std::floor(scale * clamped + 0.5));
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<float> FlipToRgb(const FloatImage& image)
+{
+  std::vector<float> out(static_cast<size_t>(image.Width) * image.Height * 3);
+  for (int y = 0; y < image.Height; ++y)
+  {
+    const float* src = image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
+    float* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
+    for (int x = 0; x < image.Width; ++x)
+    {
+      std::copy(src + 4 * x, src + 4 * x + 3, dst + 3 * x);
+    }
+  }
+  return out;
+}
+}
+
+PixelType ResolvePixelType(const std::string& path, PixelType requested)
+{
+  if (requested != PixelType::Auto)
+  {
+    return requested;
+  }
+  const std::string ext = Lower(std::filesystem::path(path).extension().string());
+  return ext == ".exr" || ext == ".hdr" || ext == ".pfm" ? PixelType::Float : PixelType::UInt8;
+}
+
+std::string CheckImageOutput(const std::string& path, PixelType type)
+{
+  std::string error;
+  OIIO::ImageSpec spec(1, 1, 3, ToTypeDesc(ResolvePixelType(path, type)));
+  auto out = Open(path, spec, error);
+  if (out)
+  {
+    // A whole (one-pixel) image: some writers complain when closed empty.
+    const float black[3] = { 0, 0, 0 };
+    out->write_image(OIIO::TypeDesc::FLOAT, black);
+    out->close();
+    std::remove(TemporaryName(path).c_str());
+  }
+  return error;
+}
+
+std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
+  const std::vector<std::pair<std::string, std::string>>& metadata)
+{
+  const PixelType resolved = ResolvePixelType(path, type);
+  OIIO::ImageSpec spec(image.Width, image.Height, 3, ToTypeDesc(resolved));
+  for (const auto& [key, value] : metadata)
+  {
+    spec.attribute(key, value);
+  }
+  std::string error;
+  auto out = Open(path, spec, error);
+  if (!out)
+  {
+    return error;
+  }
+  bool written = false;
+  switch (resolved)
+  {
+    case PixelType::UInt16:
+      written = out->write_image(OIIO::TypeDesc::UINT16, Quantise<uint16_t>(image, 65535).data());
+      break;
+    case PixelType::Half:
+    case PixelType::Float:
+      written = out->write_image(OIIO::TypeDesc::FLOAT, FlipToRgb(image).data());
+      break;
+    default:
+      written = out->write_image(OIIO::TypeDesc::UINT8, Quantise<uint8_t>(image, 255).data());
+      break;
+  }
+  const std::string temporary = TemporaryName(path);
+  if (!written || !out->close())
+  {
+    error = "cannot write: " + OneLine(out->geterror());
+    std::remove(temporary.c_str());
+    return error;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    error = std::string("cannot rename the finished image into place: ") + std::strerror(errno);
+    std::remove(temporary.c_str());
+    return error;
+  }
+  return {};
+}
+}

@@ -1,0 +1,59 @@
+// shadelab: the lecture's illumination model and shading rules on triangle
+// meshes, through VTK. Each command lives in its own file.
+#include "errors.h"
+#include "metadata.h"
+#include "render_command.h"
+#include "shadelabVersion.h"
+#include "vtkShadelabOutputWindow.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  // VTK's messages are collected and reported as one line by the commands.
+  vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
+
+  CLI::App program("shadelab: triangle meshes under the classic illumination model "
+                   "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
+    "shadelab");
+  program.set_version_flag("--version", std::string("shadelab ") + shadelab::ShadelabVersion);
+  program.require_subcommand(1);
+  program.footer("Exit status: 0 on success, 1 for unreadable input or a failed render, "
+                 "2 for a bad command line. Errors are one line on stderr.");
+
+  shadelab::RenderOptions render;
+  CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
+
+  try
+  {
+    program.parse(argc, argv);
+  }
+  catch (const CLI::CallForHelp& e)
+  {
+    return program.exit(e);
+  }
+  catch (const CLI::CallForVersion& e)
+  {
+    return program.exit(e);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    std::string what = e.what();
+    for (char& c : what)
+    {
+      c = c == '\n' ? ' ' : c;
+    }
+    std::cerr << "shadelab: error: " << what << " (see shadelab --help)" << std::endl;
+    return shadelab::ExitUsage;
+  }
+
+  const std::string commandLine = shadelab::QuoteCommandLine(argc, argv);
+  if (renderCommand->parsed())
+  {
+    vtkMessages->SetEcho(render.Verbose);
+    return shadelab::RunRender(render, commandLine);
+  }
+  return shadelab::ExitUsage;
+}

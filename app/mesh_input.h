@@ -1,0 +1,26 @@
+// A mesh file in, ready to render: read by the filters library's reader,
+// with the vertex normals that --normals and --weighting ask for.
+#ifndef shadelab_mesh_input_h
+#define shadelab_mesh_input_h
+
+#include "options.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace shadelab
+{
+struct LoadedMesh
+{
+  vtkSmartPointer<vtkPolyData> Mesh; // null on error
+  std::string Error;                 // one line, without the file name
+  bool NormalsFromFile = false;
+};
+
+LoadedMesh LoadMesh(const SceneOptions& options);
+}
+
+#endif

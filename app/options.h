@@ -1,0 +1,94 @@
+// The command line's options (DESIGN.md, "Command line"), declared once and
+// shared by every command that renders a mesh.
+#ifndef shadelab_options_h
+#define shadelab_options_h
+
+#include "shadelabIllumination.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI
+{
+class App;
+}
+
+namespace shadelab
+{
+enum class NormalsMode
+{
+  Auto,    // the file's normals when it has them, else computed
+  File,    // the file's normals; an error when it has none
+  Compute  // always computed
+};
+
+enum class PixelType
+{
+  Auto, // float for formats made for it (EXR, HDR, PFM), else 8-bit
+  UInt8,
+  UInt16,
+  Half,
+  Float
+};
+
+struct ImageSize
+{
+  int Width = 1024;
+  int Height = 768;
+};
+
+/** Everything that decides what a picture shows. */
+struct SceneOptions
+{
+  std::string Mesh;
+  Shading ShadingRule = Shading::Phong;
+  Reflection ReflectionModel = Reflection::BlinnPhong;
+  std::string MaterialName = "chrome";
+  std::optional<Rgb> Ka, Kd, Ks;
+  std::optional<double> Ns;
+  // OpenGL's default global ambient: the lecture's table is OpenGL's classic
+  // material table, whose ka values were chosen for it.
+  Rgb Ambient{ 0.2, 0.2, 0.2 };
+  std::vector<Light> Lights; // empty: one white point light at the camera
+  ImageSize Size;
+  std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
+  double ViewAngle = 30;
+  bool Orthographic = false;
+  std::optional<double> ParallelScale;
+  Rgb Background{ 0, 0, 0 };
+  NormalsMode Normals = NormalsMode::Auto;
+  std::string Weighting = "uniform";
+
+  /** The material after the --ka/--kd/--ks/--ns overrides. */
+  Material EffectiveMaterial() const;
+};
+
+struct RenderOptions
+{
+  SceneOptions Scene;
+  std::string Output;
+  PixelType Pixels = PixelType::Auto;
+  bool Verbose = false;
+};
+
+/** Declares the scene options on a command. */
+void AddSceneOptions(CLI::App& command, SceneOptions& options);
+
+// Value parsers, exposed for tests. Each throws std::invalid_argument with a
+// message that names what is wrong with the text.
+Vec3 ParseVec3(const std::string& text);
+Rgb ParseRgb(const std::string& text);
+ImageSize ParseSize(const std::string& text);
+Light ParseLight(const std::string& text);
+double ParseNumber(const std::string& text);
+
+const char* ToString(NormalsMode mode);
+const char* ToString(PixelType type);
+
+/** The largest image side and area: the float read-back of 8192x8192 is 1 GiB. */
+constexpr int MaxImageSide = 16384;
+constexpr long long MaxImagePixels = 8192LL * 8192LL;
+}
+
+#endif

@@ -1,0 +1,23 @@
+// `shadelab render MESH -o OUT [options]`: one headless picture.
+#ifndef shadelab_render_command_h
+#define shadelab_render_command_h
+
+#include "options.h"
+
+#include <string>
+
+namespace CLI
+{
+class App;
+}
+
+namespace shadelab
+{
+/** Declares the render command and its options on the program. */
+CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& options);
+
+/** Runs it; returns the exit code. */
+int RunRender(const RenderOptions& options, const std::string& commandLine);
+}
+
+#endif

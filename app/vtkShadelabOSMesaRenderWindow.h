@@ -1,0 +1,69 @@
+/**
+ * @class   vtkShadelabOSMesaRenderWindow
+ * @brief   headless render window over an OSMesa (llvmpipe) core-profile context
+ *
+ * Debian's VTK 9.1 is built for X11/GLX without its own OSMesa window
+ * (VTK_OPENGL_HAS_OSMESA is off), so this class drives an OSMesa context
+ * through vtkGenericOpenGLRenderWindow, the way vtkOSOpenGLRenderWindow
+ * would: RGBA, 24-bit depth, core profile 3.2. It needs the GLX answers of
+ * glx_shim.cxx in the same executable and libOSMesa ahead of libOpenGL/libGL
+ * in symbol lookup; CMake's shadelab_link_osmesa() arranges both.
+ *
+ * The context is made in Initialize(); a failure is reported through
+ * vtkErrorMacro and leaves GetContextReady() false.
+ */
+#ifndef vtkShadelabOSMesaRenderWindow_h
+#define vtkShadelabOSMesaRenderWindow_h
+
+#include <vtkGenericOpenGLRenderWindow.h>
+
+#include <vector>
+
+class vtkShadelabOSMesaRenderWindow : public vtkGenericOpenGLRenderWindow
+{
+public:
+  static vtkShadelabOSMesaRenderWindow* New();
+  vtkTypeMacro(vtkShadelabOSMesaRenderWindow, vtkGenericOpenGLRenderWindow);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Creates the OSMesa context and initialises VTK's OpenGL state in it. */
+  void Initialize() override;
+  void Finalize() override;
+
+  void MakeCurrent() override;
+  bool IsCurrent() override;
+  vtkTypeBool IsDirect() override { return 1; }
+  int SupportsOpenGL() override { return this->ContextReady ? 1 : 0; }
+  void Frame() override {}
+
+  void SetSize(int width, int height) override;
+  void SetSize(int size[2]) override { this->SetSize(size[0], size[1]); }
+
+  vtkGetMacro(ContextReady, bool);
+
+  /**
+   * Sets LP_NUM_THREADS (llvmpipe's rasteriser threads) to the number of
+   * processors this process may run on, unless the user has set it. Mesa's
+   * own default counts every online processor, which oversubscribes a
+   * container or a job limited by CPU affinity. Call before the first context.
+   */
+  static void ChooseRasterizerThreads();
+
+protected:
+  vtkShadelabOSMesaRenderWindow();
+  ~vtkShadelabOSMesaRenderWindow() override;
+
+private:
+  vtkShadelabOSMesaRenderWindow(const vtkShadelabOSMesaRenderWindow&) = delete;
+  void operator=(const vtkShadelabOSMesaRenderWindow&) = delete;
+
+  bool BindBuffer();
+
+  void* Context = nullptr; // OSMesaContext, kept opaque to keep osmesa.h out
+  // OSMesa's default framebuffer. VTK renders into its own framebuffer
+  // objects and only blits here, so this is never read back.
+  std::vector<unsigned char> Buffer;
+  bool ContextReady = false;
+};
+
+#endif

@@ -1,0 +1,126 @@
+#include "vtkShadelabFileReader.h"
+
+#include "shadelabMeshReadError.h"
+
+#include <vtkErrorCode.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <new>
+
+namespace
+{
+struct FileCloser
+{
+  void operator()(std::FILE* file) const { std::fclose(file); }
+};
+using FilePointer = std::unique_ptr<std::FILE, FileCloser>;
+
+[[noreturn]] void FailErrno(const char* what, int error)
+{
+  throw shadelab::MeshReadError(std::string(what) + ": " + std::strerror(error),
+    error == ENOENT ? vtkErrorCode::FileNotFoundError : vtkErrorCode::CannotOpenFileError);
+}
+
+// Opens for reading and returns the size, or 0 where the file (a pipe)
+// does not know it. fopen() succeeds on a directory; fstat() catches that.
+FilePointer Open(const char* fileName, std::size_t& size)
+{
+  FilePointer file(std::fopen(fileName, "rb"));
+  if (!file)
+  {
+    FailErrno("cannot open", errno);
+  }
+  struct stat info;
+  if (fstat(fileno(file.get()), &info) != 0)
+  {
+    FailErrno("cannot open", errno);
+  }
+  if (S_ISDIR(info.st_mode))
+  {
+    FailErrno("cannot open", EISDIR);
+  }
+  size = S_ISREG(info.st_mode) ? static_cast<std::size_t>(info.st_size) : 0;
+  return file;
+}
+}
+
+vtkShadelabFileReader::vtkShadelabFileReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkShadelabFileReader::~vtkShadelabFileReader()
+{
+  this->SetFileName(nullptr);
+}
+
+std::string vtkShadelabFileReader::ReadFileBytes(const char* fileName)
+{
+  std::size_t size = 0;
+  FilePointer file = Open(fileName, size);
+  std::string bytes(size, '\0');
+  std::size_t used = std::fread(bytes.data(), 1, bytes.size(), file.get());
+  // A file without a size (or one that grew) is read on to its end.
+  while (used == bytes.size() && !std::feof(file.get()) && !std::ferror(file.get()))
+  {
+    bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
+    used += std::fread(bytes.data() + used, 1, bytes.size() - used, file.get());
+  }
+  if (std::ferror(file.get()))
+  {
+    FailErrno("cannot read", errno);
+  }
+  bytes.resize(used);
+  return bytes;
+}
+
+void vtkShadelabFileReader::CheckReadable(const char* fileName)
+{
+  std::size_t size;
+  Open(fileName, size);
+}
+
+int vtkShadelabFileReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  try
+  {
+    if (!this->FileName || !*this->FileName)
+    {
+      throw shadelab::MeshReadError("no file name given", vtkErrorCode::NoFileNameError);
+    }
+    vtkNew<vtkPolyData> triangles;
+    this->ReadMesh(this->FileName, triangles);
+    output->ShallowCopy(triangles);
+    return 1;
+  }
+  catch (const shadelab::MeshReadError& error)
+  {
+    this->SetErrorCode(error.GetCode());
+    vtkErrorMacro(<< error.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+    vtkErrorMacro(<< "out of memory");
+  }
+  return 0;
+}
+
+void vtkShadelabFileReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

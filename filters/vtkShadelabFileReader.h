@@ -1,0 +1,55 @@
+/**
+ * @class   vtkShadelabFileReader
+ * @brief   abstract base of shadelab's mesh readers: one file in, triangles out
+ *
+ * A source (no input ports) that reads FileName. Every subclass outputs the
+ * same thing: double points, triangles only, and the file's point normals,
+ * if it has any, as the float array "Normals" set as the active normals.
+ *
+ * On bad input a reader reports exactly one error through vtkErrorMacro, as
+ * one line without the file name (the program adds it), sets ErrorCode (a
+ * vtkErrorCode value), leaves the output empty and fails the request, so
+ * GetExecutive()->Update() returns 0. Subclasses implement ReadMesh() and
+ * throw shadelab::MeshReadError; this class turns that into the error.
+ */
+#ifndef vtkShadelabFileReader_h
+#define vtkShadelabFileReader_h
+
+#include <vtkPolyDataAlgorithm.h>
+
+#include <string>
+
+class vtkShadelabFileReader : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkShadelabFileReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The file to read. */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+
+protected:
+  vtkShadelabFileReader();
+  ~vtkShadelabFileReader() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /** Reads `fileName` into `triangles`, or throws shadelab::MeshReadError. */
+  virtual void ReadMesh(const char* fileName, vtkPolyData* triangles) = 0;
+
+  /** The whole file in memory; throws "cannot open: <strerror>" and the like. */
+  static std::string ReadFileBytes(const char* fileName);
+
+  /** Throws like ReadFileBytes() when the file cannot be opened for reading. */
+  static void CheckReadable(const char* fileName);
+
+  char* FileName = nullptr;
+
+private:
+  vtkShadelabFileReader(const vtkShadelabFileReader&) = delete;
+  void operator=(const vtkShadelabFileReader&) = delete;
+};
+
+#endif

@@ -1,0 +1,115 @@
+#include "cli_test_support.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace shadelab_test
+{
+namespace
+{
+std::string Quote(const std::string& s)
+{
+  std::string q = "'";
+  for (char c : s)
+  {
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return q + "'";
+}
+
+std::string Slurp(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}
+
+RunResult RunShadelab(const std::vector<std::string>& args)
+{
+  TempDir capture;
+  std::string command = "env -u DISPLAY " + Quote(SHADELAB_BINARY);
+  for (const std::string& a : args)
+  {
+    command += " " + Quote(a);
+  }
+  command += " >" + Quote((capture / "out").string()) + " 2>" + Quote((capture / "err").string()) +
+    " </dev/null";
+  const int status = std::system(command.c_str());
+  RunResult r;
+  r.ExitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.Stdout = Slurp(capture / "out");
+  r.Stderr = Slurp(capture / "err");
+  return r;
+}
+
+TempDir::TempDir()
+{
+  std::random_device random;
+  this->Path = std::filesystem::temp_directory_path() /
+    ("shadelab-test-" + std::to_string(getpid()) + "-" + std::to_string(random()));
+  std::filesystem::create_directories(this->Path);
+}
+
+TempDir::~TempDir()
+{
+  std::error_code ignored;
+  std::filesystem::remove_all(this->Path, ignored);
+}
+
+std::vector<std::string> TempDir::Files() const
+{
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(this->Path))
+  {
+    names.push_back(entry.path().filename().string());
+  }
+  return names;
+}
+
+Image ReadImage(const std::filesystem::path& path)
+{
+  Image image;
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    (void)OIIO::geterror();
+    return image;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  image.Width = spec.width;
+  image.Height = spec.height;
+  image.Channels = spec.nchannels;
+  image.Format = spec.format.c_str();
+  image.Description = spec.get_string_attribute("ImageDescription");
+  image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+  const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
+  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data());
+  if (eightBit)
+  {
+    for (float& v : image.Pixels)
+    {
+      v = std::round(v * 255.0f);
+    }
+  }
+  in->close();
+  return image;
+}
+
+std::filesystem::path SharedMesh(const std::string& name)
+{
+  return std::filesystem::path(SHADELAB_SHARED_DIR) / "data" / "meshes" / name;
+}
+
+void WriteText(const std::filesystem::path& path, const std::string& text)
+{
+  std::ofstream(path, std::ios::binary) << text;
+}
+}

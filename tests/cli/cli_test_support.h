@@ -1,0 +1,56 @@
+// Running the shadelab binary from tests and reading what it wrote.
+#ifndef shadelab_cli_test_support_h
+#define shadelab_cli_test_support_h
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shadelab_test
+{
+struct RunResult
+{
+  int ExitCode = -1;
+  std::string Stdout;
+  std::string Stderr;
+};
+
+/** Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI). */
+RunResult RunShadelab(const std::vector<std::string>& args);
+
+/** A fresh empty folder under the system's temporary folder, removed by the destructor. */
+class TempDir
+{
+public:
+  TempDir();
+  ~TempDir();
+  std::filesystem::path operator/(const std::string& name) const { return this->Path / name; }
+  const std::filesystem::path& path() const { return this->Path; }
+  /** The names of the files in it. */
+  std::vector<std::string> Files() const;
+
+private:
+  std::filesystem::path Path;
+};
+
+struct Image
+{
+  int Width = 0;
+  int Height = 0;
+  int Channels = 0;
+  std::vector<float> Pixels; // top row first; 8-bit files as 0..255
+  std::string Description;   // the ImageDescription attribute
+  std::string Format;        // the pixel type as stored
+};
+
+/** Reads an image through OpenImageIO; Width 0 when it cannot. */
+Image ReadImage(const std::filesystem::path& path);
+
+/** The shared meshes (../shared/data/meshes). */
+std::filesystem::path SharedMesh(const std::string& name);
+
+/** Writes text to path. */
+void WriteText(const std::filesystem::path& path, const std::string& text);
+}
+
+#endif

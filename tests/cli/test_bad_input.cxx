@@ -1,0 +1,139 @@
+// Bad input (DESIGN.md, "Command line"): a one-line error on stderr naming
+// the input and the problem, a non-zero exit, no crash and no output file.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+using namespace shadelab_test;
+
+namespace
+{
+struct BadCase
+{
+  const char* Name;
+  // Writes the input into dir and returns the command's arguments after
+  // "render"; "OUT" stands for the output path.
+  std::vector<std::string> (*Make)(const TempDir& dir);
+  int ExitCode;
+  std::vector<const char*> Words; // each must appear in the error line
+};
+
+std::string Binary(const void* data, size_t size)
+{
+  return std::string(static_cast<const char*>(data), size);
+}
+
+std::vector<std::string> WithMesh(const TempDir& dir, const std::string& name,
+  const std::string& content, std::vector<std::string> extra = {})
+{
+  WriteText(dir / name, content);
+  std::vector<std::string> args = { (dir / name).string(), "-o", "OUT" };
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+const std::string Tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+std::string BinaryPlyHeader(const std::string& counts)
+{
+  return "ply\nformat binary_little_endian 1.0\n" + counts +
+    "property float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+const BadCase Cases[] = {
+  { "MissingFile", [](const TempDir& d) { return std::vector<std::string>{ (d / "nope.obj").string(), "-o", "OUT" }; }, 1, { "nope.obj", "No such file" } },
+  { "UnknownMeshFormat", [](const TempDir& d) { return WithMesh(d, "mesh.xyz", "1 2 3\n"); }, 1, { "mesh.xyz", ".xyz" } },
+  { "EmptyObj", [](const TempDir& d) { return WithMesh(d, "empty.obj", ""); }, 1, { "empty.obj", "triangles" } },
+  { "ObjOnlyVertices", [](const TempDir& d) { return WithMesh(d, "points.obj", "v 0 0 0\nv 1 0 0\n"); }, 1, { "points.obj", "triangles" } },
+  { "ObjNaNCoordinate", [](const TempDir& d) { return WithMesh(d, "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"); }, 1, { "nan.obj" } },
+  { "ObjIndexOutOfRange", [](const TempDir& d) { return WithMesh(d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"); }, 1, { "range.obj", "9" } },
+  { "ObjZeroIndex", [](const TempDir& d) { return WithMesh(d, "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); }, 1, { "zero.obj" } },
+  { "ObjMalformedNumber", [](const TempDir& d) { return WithMesh(d, "garbage.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"); }, 1, { "garbage.obj", "line 2" } },
+  { "PlyTruncated", [](const TempDir& d) {
+      std::string ply = BinaryPlyHeader("element vertex 3\n");
+      const float v[6] = { 0, 0, 0, 1, 0, 0 }; // two of three vertices
+      return WithMesh(d, "short.ply", ply + Binary(v, sizeof v)); }, 1, { "short.ply" } },
+  { "PlyLyingHeader", [](const TempDir& d) {
+      return WithMesh(d, "liar.ply", BinaryPlyHeader("element vertex 4000000000\n")); }, 1, { "liar.ply", "4000000000" } },
+  { "StlTruncated", [](const TempDir& d) {
+      std::string stl(80, ' ');
+      const uint32_t count = 1000000;
+      stl += Binary(&count, 4) + std::string(100, '\0');
+      return WithMesh(d, "short.stl", stl); }, 1, { "short.stl" } },
+  { "UnknownImageFormat", [](const TempDir& d) {
+      WriteText(d / "t.obj", Tetrahedron);
+      return std::vector<std::string>{ (d / "t.obj").string(), "-o", (d / "out.notaformat").string() }; }, 1, { "out.notaformat", "format" } },
+  { "UnwritableFolder", [](const TempDir& d) {
+      WriteText(d / "t.obj", Tetrahedron);
+      return std::vector<std::string>{ (d / "t.obj").string(), "-o", (d / "no" / "such" / "dir.png").string() }; }, 1, { "dir.png", "cannot write" } },
+  { "FloatIntoJpeg", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--pixel-type", "float" }); }, 1, { "OUT", "float" } },
+  { "CameraAtFocalPoint", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--camera-position", "1,1,1", "--camera-focal-point", "1,1,1" }); }, 1, { "camera", "focal point" } },
+  { "ViewUpAlongViewDirection", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--camera-position", "0,5,0", "--camera-focal-point", "0,0,0", "--camera-view-up", "0,1,0" }); }, 1, { "view-up", "parallel" } },
+  { "FileNormalsMissing", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--normals", "file" }); }, 1, { "t.obj", "normals" } },
+  { "SizeZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "0x10" }); }, 2, { "--size", "0x10" } },
+  { "SizeHuge", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "100000x100000" }); }, 2, { "--size" } },
+  { "SizeGarbage", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "big" }); }, 2, { "--size", "big" } },
+  { "ColourTwoNumbers", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ka", "1,2" }); }, 2, { "--ka", "1,2" } },
+  { "ColourNegative", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--kd", "1,-2,0" }); }, 2, { "--kd", "negative" } },
+  { "ColourNaN", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ambient", "nan,0,0" }); }, 2, { "--ambient", "nan" } },
+  { "UnknownLightKind", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "laser:1,2,3" }); }, 2, { "--light", "laser" } },
+  { "SpotWithoutAngle", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1" }); }, 2, { "--light", "spot" } },
+  { "SpotAngleTooWide", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1:120" }); }, 2, { "--light", "120" } },
+  { "DirectionZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "directional:0,0,0" }); }, 2, { "--light", "zero" } },
+  { "ViewAngleOutOfRange", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" }); }, 2, { "--view-angle", "200" } },
+  { "ParallelScaleZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--parallel-scale", "0" }); }, 2, { "--parallel-scale" } },
+  { "UnknownMaterial", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--material", "unobtainium" }); }, 2, { "--material", "unobtainium" } },
+  { "UnknownShading", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--shading", "wobbly" }); }, 2, { "--shading", "wobbly" } },
+  { "NegativeShininess", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ns", "-1" }); }, 2, { "--ns" } },
+  { "UnknownOption", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--frobnicate" }); }, 2, { "--frobnicate" } },
+};
+
+class BadInput : public testing::TestWithParam<BadCase>
+{
+};
+}
+
+TEST_P(BadInput, OneLineErrorNonZeroExitNoOutput)
+{
+  TempDir dir;
+  std::vector<std::string> args = GetParam().Make(dir);
+  const std::string out = (dir / "out.jpg").string();
+  std::replace(args.begin(), args.end(), std::string("OUT"), out);
+  args.insert(args.begin(), "render");
+  const auto before = dir.Files();
+
+  const RunResult r = RunShadelab(args);
+  EXPECT_EQ(r.ExitCode, GetParam().ExitCode) << r.Stderr;
+  ASSERT_FALSE(r.Stderr.empty());
+  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 1) << r.Stderr;
+  EXPECT_EQ(r.Stderr.rfind("shadelab: error: ", 0), 0u) << r.Stderr;
+  for (const char* word : GetParam().Words)
+  {
+    const std::string expected = std::strcmp(word, "OUT") == 0 ? out : word;
+    EXPECT_NE(r.Stderr.find(expected), std::string::npos)
+      << "'" << expected << "' missing from: " << r.Stderr;
+  }
+  EXPECT_EQ(dir.Files(), before) << "an output or temporary file was left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(Render, BadInput, testing::ValuesIn(Cases),
+  [](const testing::TestParamInfo<BadCase>& info) { return std::string(info.param.Name); });
+
+// Non-manifold and degenerate faces are not errors: they render.
+TEST(AwkwardInput, NonManifoldAndDegenerateFacesRender)
+{
+  TempDir dir;
+  // Three triangles sharing one edge (non-manifold), one zero-area triangle.
+  WriteText(dir / "fin.obj",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 0 0\n"
+    "f 1 2 3\nf 1 2 4\nf 1 2 5\nf 1 2 6\n");
+  const RunResult r = RunShadelab(
+    { "render", (dir / "fin.obj").string(), "-o", (dir / "fin.png").string(), "--size", "64x64" });
+  EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+  EXPECT_EQ(ReadImage(dir / "fin.png").Width, 64);
+}

@@ -6,14 +6,18 @@
 #include "shadelabVersion.h"
 #include "vtkShadelabOutputWindow.h"
 
+#include <vtkLogger.h>
+
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
 int main(int argc, char** argv)
 {
-  // VTK's messages are collected and reported as one line by the commands.
+  // VTK's messages are collected and reported as one line by the commands;
+  // VTK 9.1 also copies every error to its logger on stderr.
   vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 
   CLI::App program("shadelab: triangle meshes under the classic illumination model "
                    "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
@@ -53,6 +57,10 @@ int main(int argc, char** argv)
   if (renderCommand->parsed())
   {
     vtkMessages->SetEcho(render.Verbose);
+    if (render.Verbose)
+    {
+      vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+    }
     return shadelab::RunRender(render, commandLine);
   }
   return shadelab::ExitUsage;

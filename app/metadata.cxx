@@ -104,7 +104,9 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(
   j["normals"] = ToString(o.Normals);
   j["weighting"] = o.Weighting;
 
+  // OpenImageIO's EXR writer stamps the current time unless DateTime is
+  // set; an empty one keeps the file a function of the scene alone.
   return { { "Software", std::string("shadelab ") + ShadelabVersion },
-    { "ImageDescription", j.dump() } };
+    { "ImageDescription", j.dump() }, { "DateTime", "" } };
 }
 }

@@ -96,6 +96,11 @@ const BadCase Cases[] = {
 class BadInput : public testing::TestWithParam<BadCase>
 {
 };
+
+void PrintTo(const BadCase& c, std::ostream* os)
+{
+  *os << c.Name;
+}
 }
 
 TEST_P(BadInput, OneLineErrorNonZeroExitNoOutput)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -142,22 +143,6 @@ PixelType ResolvePixelType(const std::string& path, PixelType requested)
   return ext == ".exr" || ext == ".hdr" || ext == ".pfm" ? PixelType::Float : PixelType::UInt8;
 }
 
-std::string CheckImageOutput(const std::string& path, PixelType type)
-{
-  std::string error;
-  OIIO::ImageSpec spec(1, 1, 3, ToTypeDesc(ResolvePixelType(path, type)));
-  auto out = Open(path, spec, error);
-  if (out)
-  {
-    // A whole (one-pixel) image: some writers complain when closed empty.
-    const float black[3] = { 0, 0, 0 };
-    out->write_image(OIIO::TypeDesc::FLOAT, black);
-    out->close();
-    std::remove(TemporaryName(path).c_str());
-  }
-  return error;
-}
-
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
   const std::vector<std::pair<std::string, std::string>>& metadata)
 {
@@ -166,6 +151,10 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
   for (const auto& [key, value] : metadata)
   {
     spec.attribute(key, value);
+  }
+  if (const char* level = std::getenv("SHADELAB_PNG_LEVEL"))
+  {
+    spec.attribute("png:compressionLevel", std::atoi(level));
   }
   std::string error;
   auto out = Open(path, spec, error);

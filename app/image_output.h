@@ -1,6 +1,7 @@
 // Pictures out through OpenImageIO: the format from the file's extension,
 // written to a temporary name in the same folder and renamed, so a reader of
-// OUT never sees a partial file.
+// OUT never sees a partial file. Runs in the shadelab-image-writer process
+// (image_writer_process.h), away from the renderer.
 #ifndef shadelab_image_output_h
 #define shadelab_image_output_h
 
@@ -24,17 +25,11 @@ struct FloatImage
 PixelType ResolvePixelType(const std::string& path, PixelType requested);
 
 /**
- * Checks, before any rendering, that path can be written as requested: a
- * format OpenImageIO knows, a folder that exists and is writable, a pixel
- * type the format stores. Returns an error text, or an empty string.
- */
-std::string CheckImageOutput(const std::string& path, PixelType type);
-
-/**
  * Writes image to path as RGB: 8 and 16-bit types store
  * round(max*clamp(I, 0, 1)), float types store I as rendered. metadata
  * becomes string attributes of the file (ImageDescription, Software, ...).
- * Returns an error text, or an empty string; on error no file is left.
+ * Returns an error text (an unknown format, an unwritable path, a pixel type
+ * the format cannot store), or an empty string; on error no file is left.
  */
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
   const std::vector<std::pair<std::string, std::string>>& metadata);

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <iostream>
 
 int main(int argc, char** argv)
@@ -18,6 +19,9 @@ int main(int argc, char** argv)
   // VTK 9.1 also copies every error to its logger on stderr.
   vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  // A writer process that died must not take shadelab with it through
+  // SIGPIPE: the write fails and the error is reported instead.
+  std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App program("shadelab: triangle meshes under the classic illumination model "
                    "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",

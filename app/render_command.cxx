@@ -3,7 +3,7 @@
 #include "camera.h"
 #include "errors.h"
 #include "headless_renderer.h"
-#include "image_output.h"
+#include "image_writer_process.h"
 #include "mesh_input.h"
 #include "metadata.h"
 #include "scene.h"
@@ -67,10 +67,11 @@ private:
 int RunRender(const RenderOptions& o, const std::string& commandLine)
 {
   PhaseTimer timer(o.Verbose);
-  if (const std::string error = CheckImageOutput(o.Output, o.Pixels); !error.empty())
+  if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
   {
     return ReportError(o.Output, error);
   }
+  ImageWriterProcess writer;
   const LoadedMesh loaded = LoadMesh(o.Scene);
   if (!loaded.Mesh)
   {
@@ -84,18 +85,19 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
   {
     return ReportError("render", error);
   }
+  timer.Lap("context");
   if (const std::string error = BuildScene(o.Scene, loaded.Mesh, renderer.GetRenderer());
       !error.empty())
   {
     return ReportError("camera", error);
   }
-  timer.Lap("context");
   const FloatImage image = renderer.Render();
   timer.Lap("frame");
 
   const auto metadata =
     DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera());
-  if (const std::string error = WriteImage(o.Output, image, o.Pixels, metadata); !error.empty())
+  if (const std::string error = writer.Write(o.Output, image, o.Pixels, metadata);
+      !error.empty())
   {
     return ReportError(o.Output, error);
   }

@@ -1,0 +1,128 @@
+#include "image_writer_protocol.h"
+
+#include "options.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+
+namespace shadelab
+{
+namespace
+{
+constexpr uint32_t Magic = 0x53484c31; // "SHL1"
+constexpr uint64_t MaxText = 1 << 24;
+
+bool WriteAll(int fd, const void* data, size_t size)
+{
+  const char* p = static_cast<const char*>(data);
+  while (size > 0)
+  {
+    const ssize_t n = write(fd, p, size);
+    if (n < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (n <= 0)
+    {
+      return false;
+    }
+    p += n;
+    size -= static_cast<size_t>(n);
+  }
+  return true;
+}
+
+bool ReadAll(int fd, void* data, size_t size)
+{
+  char* p = static_cast<char*>(data);
+  while (size > 0)
+  {
+    const ssize_t n = read(fd, p, size);
+    if (n < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (n <= 0)
+    {
+      return false;
+    }
+    p += n;
+    size -= static_cast<size_t>(n);
+  }
+  return true;
+}
+
+template <typename T>
+bool Send(int fd, T value)
+{
+  return WriteAll(fd, &value, sizeof value);
+}
+
+template <typename T>
+bool Receive(int fd, T& value)
+{
+  return ReadAll(fd, &value, sizeof value);
+}
+
+bool SendText(int fd, const std::string& s)
+{
+  return Send<uint64_t>(fd, s.size()) && WriteAll(fd, s.data(), s.size());
+}
+
+bool ReceiveText(int fd, std::string& s)
+{
+  uint64_t size = 0;
+  if (!Receive(fd, size) || size > MaxText)
+  {
+    return false;
+  }
+  s.resize(size);
+  return ReadAll(fd, s.data(), size);
+}
+}
+
+bool SendImageRequest(int fd, const ImageRequest& r)
+{
+  bool ok = Send(fd, Magic) && SendText(fd, r.Path) &&
+    Send<uint32_t>(fd, static_cast<uint32_t>(r.Type)) &&
+    Send<uint32_t>(fd, static_cast<uint32_t>(r.Metadata.size()));
+  for (const auto& [key, value] : r.Metadata)
+  {
+    ok = ok && SendText(fd, key) && SendText(fd, value);
+  }
+  return ok && Send<int32_t>(fd, r.Image.Width) && Send<int32_t>(fd, r.Image.Height) &&
+    WriteAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float));
+}
+
+bool ReceiveImageRequest(int fd, ImageRequest& r)
+{
+  uint32_t magic = 0, type = 0, count = 0;
+  if (!Receive(fd, magic) || magic != Magic || !ReceiveText(fd, r.Path) || !Receive(fd, type) ||
+    type > static_cast<uint32_t>(PixelType::Float) || !Receive(fd, count) || count > 64)
+  {
+    return false;
+  }
+  r.Type = static_cast<PixelType>(type);
+  r.Metadata.resize(count);
+  for (auto& [key, value] : r.Metadata)
+  {
+    if (!ReceiveText(fd, key) || !ReceiveText(fd, value))
+    {
+      return false;
+    }
+  }
+  int32_t width = 0, height = 0;
+  if (!Receive(fd, width) || !Receive(fd, height) || width < 1 || height < 1 ||
+    width > MaxImageSide || height > MaxImageSide ||
+    static_cast<long long>(width) * height > MaxImagePixels)
+  {
+    return false;
+  }
+  r.Image.Width = width;
+  r.Image.Height = height;
+  r.Image.Rgba.resize(static_cast<size_t>(width) * height * 4);
+  return ReadAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float));
+}
+}

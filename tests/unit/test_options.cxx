@@ -1,0 +1,112 @@
+// The option-value parsers of the command line (app/options.h).
+#include "options.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace shadelab;
+
+TEST(Options, NumbersAreFiniteAndWhole)
+{
+  EXPECT_DOUBLE_EQ(ParseNumber("1e-3"), 1e-3);
+  EXPECT_DOUBLE_EQ(ParseNumber("+2.5"), 2.5);
+  EXPECT_DOUBLE_EQ(ParseNumber("-0.25"), -0.25);
+  for (const char* bad : { "", "nan", "inf", "-inf", "1.5x", "x", "1,2", " 1", "1e999" })
+  {
+    EXPECT_THROW(ParseNumber(bad), std::invalid_argument) << bad;
+  }
+}
+
+TEST(Options, ColoursAreThreeNonNegativeNumbers)
+{
+  EXPECT_EQ(ParseRgb("0.5,1,2.5"), (Rgb{ 0.5, 1, 2.5 }));
+  for (const char* bad : { "1,2", "1,2,3,4", "1,-1,0", "a,b,c", "1,,2", "nan,0,0" })
+  {
+    EXPECT_THROW(ParseRgb(bad), std::invalid_argument) << bad;
+  }
+  EXPECT_EQ(ParseVec3("-1,0,1e5"), (Vec3{ -1, 0, 1e5 }));
+}
+
+TEST(Options, SizesAreBounded)
+{
+  const ImageSize s = ParseSize("1920x1080");
+  EXPECT_EQ(s.Width, 1920);
+  EXPECT_EQ(s.Height, 1080);
+  EXPECT_EQ(ParseSize("1X1").Width, 1);
+  EXPECT_EQ(ParseSize("8192x8192").Height, 8192);
+  for (const char* bad : { "0x10", "10x0", "-5x5", "16385x1", "16384x16384", "1920", "x",
+         "1920x", "19.5x10", "1920x1080x3", "axb" })
+  {
+    EXPECT_THROW(ParseSize(bad), std::invalid_argument) << bad;
+  }
+}
+
+TEST(Options, PointAndDirectionalLights)
+{
+  const Light p = ParseLight("point:1,2,3");
+  EXPECT_EQ(p.Kind, LightKind::Point);
+  EXPECT_EQ(p.Position, (Vec3{ 1, 2, 3 }));
+  EXPECT_EQ(p.Color, (Rgb{ 1, 1, 1 })) << "a light's colour defaults to white";
+  const Light d = ParseLight("directional:0,-1,0:0.5,0.5,1");
+  EXPECT_EQ(d.Kind, LightKind::Directional);
+  EXPECT_EQ(d.Direction, (Vec3{ 0, -1, 0 }));
+  EXPECT_EQ(d.Color, (Rgb{ 0.5, 0.5, 1 }));
+}
+
+TEST(Options, SpotLights)
+{
+  const Light s = ParseLight("spot:0,0,5:0,0,-1:30");
+  EXPECT_EQ(s.Kind, LightKind::Spot);
+  EXPECT_EQ(s.Position, (Vec3{ 0, 0, 5 }));
+  EXPECT_EQ(s.Direction, (Vec3{ 0, 0, -1 }));
+  EXPECT_DOUBLE_EQ(s.HalfAngleDeg, 30);
+  EXPECT_DOUBLE_EQ(s.Exponent, 0) << "a spot's exponent defaults to 0 (hard-edged cone)";
+  const Light e = ParseLight("spot:0,0,5:0,0,-1:45:8:1,0,0");
+  EXPECT_DOUBLE_EQ(e.Exponent, 8);
+  EXPECT_EQ(e.Color, (Rgb{ 1, 0, 0 }));
+}
+
+TEST(Options, BadLightsNameTheProblem)
+{
+  const std::pair<const char*, const char*> cases[] = {
+    { "laser:1,2,3", "unknown light kind" },
+    { "point", "point:X,Y,Z" },
+    { "point:1,2", "X,Y,Z" },
+    { "point:1,2,3:1,1", "R,G,B" },
+    { "directional:0,0,0", "zero length" },
+    { "spot:0,0,5:0,0,-1", "HALF_ANGLE" },
+    { "spot:0,0,5:0,0,-1:0", "half-angle" },
+    { "spot:0,0,5:0,0,-1:91", "half-angle" },
+    { "spot:0,0,5:0,0,-1:30:-1", "negative" },
+    { "spot:0,0,5:0,0,-1:30:1:1,1,1:extra", "spot:" },
+  };
+  for (const auto& [text, words] : cases)
+  {
+    try
+    {
+      ParseLight(text);
+      ADD_FAILURE() << text << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos)
+        << text << ": " << e.what();
+    }
+  }
+}
+
+TEST(Options, OverridesReplaceOnlyWhatTheyName)
+{
+  SceneOptions o;
+  o.MaterialName = "gold";
+  o.Ks = Rgb{ 0, 0, 0 };
+  o.Ns = 5;
+  const Material m = o.EffectiveMaterial();
+  const Material* gold = FindLectureMaterial("gold");
+  ASSERT_NE(gold, nullptr);
+  EXPECT_EQ(m.Ka, gold->Ka);
+  EXPECT_EQ(m.Kd, gold->Kd);
+  EXPECT_EQ(m.Ks, (Rgb{ 0, 0, 0 }));
+  EXPECT_DOUBLE_EQ(m.Ns, 5);
+}

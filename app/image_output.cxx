@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -151,10 +150,6 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
   for (const auto& [key, value] : metadata)
   {
     spec.attribute(key, value);
-  }
-  if (const char* level = std::getenv("SHADELAB_PNG_LEVEL"))
-  {
-    spec.attribute("png:compressionLevel", std::atoi(level));
   }
   std::string error;
   auto out = Open(path, spec, error);

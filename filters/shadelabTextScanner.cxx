@@ -2,6 +2,7 @@
 
 #include "shadelabMeshReadError.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -14,7 +15,7 @@ bool IsSpace(char c)
   return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-template <typename T>
+template<typename T>
 bool ParseWhole(std::string_view token, T& value)
 {
   // from_chars takes no '+' sign, which some writers put before exponents'
@@ -62,9 +63,9 @@ bool TextScanner::NextLine()
     const char* begin = this->Text.data() + this->NextLineStart;
     const void* newline = std::memchr(begin, '\n', this->Text.size() - this->NextLineStart);
     this->Position = this->NextLineStart;
-    this->LineEnd = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) -
-                                this->Text.data())
-                            : this->Text.size();
+    this->LineEnd = newline
+      ? static_cast<std::size_t>(static_cast<const char*>(newline) - this->Text.data())
+      : this->Text.size();
     this->NextLineStart = newline ? this->LineEnd + 1 : this->LineEnd;
     ++this->LineNumber;
     while (this->Position < this->LineEnd && IsSpace(this->Text[this->Position]))
@@ -130,6 +131,18 @@ void TextScanner::ExpectLineEnd(const char* what)
   {
     this->Fail("unexpected " + Quote(token) + " after " + what);
   }
+}
+
+void TextScanner::JumpTo(std::size_t offset)
+{
+  offset = std::min(offset, this->Text.size());
+  if (offset > this->NextLineStart)
+  {
+    this->LineNumber += static_cast<std::size_t>(
+      std::count(this->Text.begin() + this->NextLineStart, this->Text.begin() + offset, '\n'));
+  }
+  this->NextLineStart = offset;
+  this->Position = this->LineEnd;
 }
 
 void TextScanner::Fail(const std::string& message) const

@@ -52,8 +52,14 @@ public:
 
   std::size_t GetLineNumber() const { return this->LineNumber; }
 
-  /** Where the line after the current one starts (PLY's binary body follows its header). */
+  /** Where the line after the current one starts (binary data follows a header line). */
   std::size_t GetNextLineOffset() const { return this->NextLineStart; }
+
+  /**
+   * Ends the current line and goes on at `offset` (past binary data),
+   * counting the line breaks it passes.
+   */
+  void JumpTo(std::size_t offset);
 
 private:
   std::string_view Text;

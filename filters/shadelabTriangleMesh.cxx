@@ -23,8 +23,8 @@ namespace shadelab
 {
 namespace
 {
-vtkSmartPointer<vtkCellArray> MakeCells(
-  const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& ids)
+vtkSmartPointer<vtkCellArray> MakeCells(const std::vector<vtkIdType>& offsets,
+  const std::vector<vtkIdType>& ids)
 {
   vtkNew<vtkIdTypeArray> offsetArray;
   offsetArray->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
@@ -68,15 +68,16 @@ vtkSmartPointer<vtkDoubleArray> DoublePoints(vtkPolyData* polygons, vtkIdType fi
   {
     if (!std::isfinite(values[i]))
     {
-      throw MeshReadError(std::string(NonFinite(values[i])) + " coordinate in vertex " +
-        Number(i / 3, firstNumber));
+      throw MeshReadError(
+        std::string(NonFinite(values[i])) + " coordinate in vertex " + Number(i / 3, firstNumber));
     }
   }
   return xyz;
 }
 
-vtkSmartPointer<vtkFloatArray> FloatNormals(
-  vtkPolyData* polygons, vtkIdType pointCount, vtkIdType firstNumber)
+vtkSmartPointer<vtkFloatArray> FloatNormals(vtkPolyData* polygons,
+  vtkIdType pointCount,
+  vtkIdType firstNumber)
 {
   vtkDataArray* normals = polygons->GetPointData()->GetNormals();
   if (!normals)
@@ -87,8 +88,7 @@ vtkSmartPointer<vtkFloatArray> FloatNormals(
   {
     throw MeshReadError("the normals are " + std::to_string(normals->GetNumberOfTuples()) +
       " tuples of " + std::to_string(normals->GetNumberOfComponents()) +
-      " components, not one 3-vector for each of the " + std::to_string(pointCount) +
-      " vertices");
+      " components, not one 3-vector for each of the " + std::to_string(pointCount) + " vertices");
   }
   auto floats = vtkSmartPointer<vtkFloatArray>::New();
   floats->SetName("Normals");
@@ -110,8 +110,7 @@ vtkSmartPointer<vtkFloatArray> FloatNormals(
   return floats;
 }
 
-void CheckCells(
-  vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
+void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
 {
   if (!cells)
   {
@@ -123,9 +122,8 @@ void CheckCells(
     vtkIdType size;
     const vtkIdType* ids;
     cell->GetCurrentCell(size, ids);
-    const auto name = [&] {
-      return std::string(kind) + " " + Number(cell->GetCurrentCellId(), firstNumber);
-    };
+    const auto name = [&]
+    { return std::string(kind) + " " + Number(cell->GetCurrentCellId(), firstNumber); };
     if (size < 3)
     {
       throw MeshReadError(
@@ -145,8 +143,12 @@ void CheckCells(
 // Ear cutting keeps the polygon's orientation and handles concave polygons;
 // where it gives up (zero area, repeated or collinear vertices) a fan keeps
 // the face's vertices connected, with degenerate triangles as the face was.
-void AddPolygon(vtkIdType size, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
-  vtkIdList* local, vtkCellArray* triangles)
+void AddPolygon(vtkIdType size,
+  const vtkIdType* ids,
+  vtkPoints* points,
+  vtkPolygon* polygon,
+  vtkIdList* local,
+  vtkCellArray* triangles)
 {
   polygon->GetPointIds()->SetNumberOfIds(size);
   polygon->GetPoints()->SetNumberOfPoints(size);

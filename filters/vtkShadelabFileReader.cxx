@@ -89,11 +89,10 @@ void vtkShadelabFileReader::CheckReadable(const char* fileName)
   Open(fileName, size);
 }
 
-int vtkShadelabFileReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkShadelabFileReader::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
 {
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
   try
   {
@@ -101,9 +100,11 @@ int vtkShadelabFileReader::RequestData(
     {
       throw shadelab::MeshReadError("no file name given", vtkErrorCode::NoFileNameError);
     }
+    // Into a mesh of its own: the output (emptied by the executive) stays
+    // empty unless the whole file was read.
     vtkNew<vtkPolyData> triangles;
     this->ReadMesh(this->FileName, triangles);
-    output->ShallowCopy(triangles);
+    vtkPolyData::GetData(outputVector)->ShallowCopy(triangles);
     return 1;
   }
   catch (const shadelab::MeshReadError& error)

@@ -2,6 +2,7 @@
 
 #include "shadelabMeshReadError.h"
 #include "shadelabTriangleMesh.h"
+#include "vtkShadelabLegacyVTKReader.h"
 #include "vtkShadelabOBJReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYReader.h"
@@ -12,7 +13,6 @@
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 
 #include <cctype>
@@ -41,44 +41,61 @@ std::string LowerExtension(const std::string& fileName)
   return extension;
 }
 
-// Keeps the first error of a reader that this one runs, instead of letting
-// it reach the output window; the executive's "returned failure" follows it.
-struct FirstError
+// Keeps the errors of a reader that this one runs away from the output
+// window, so that its first one becomes this reader's single error; observing
+// the executive too silences its "returned failure" follow-up.
+class NestedReader
 {
-  std::string Message;
-  void Catch(vtkObject*, unsigned long, void* text)
+public:
+  explicit NestedReader(vtkAlgorithm* reader)
+    : Reader(reader)
+    , Executive(reader->GetExecutive())
+    , ReaderTag(reader->AddObserver(vtkCommand::ErrorEvent, this, &NestedReader::Catch))
+    , ExecutiveTag(this->Executive->AddObserver(vtkCommand::ErrorEvent, this, &NestedReader::Catch))
   {
-    if (this->Message.empty())
+  }
+
+  ~NestedReader()
+  {
+    this->Reader->RemoveObserver(this->ReaderTag);
+    this->Executive->RemoveObserver(this->ExecutiveTag);
+  }
+
+  /** Runs the reader; throws its first error if it failed or reported one. */
+  void Update()
+  {
+    const int ok = this->Executive->Update();
+    if (!ok || !this->First.empty())
     {
-      this->Message = vtkShadelabOutputWindow::OneLine(static_cast<const char*>(text));
+      const unsigned long code = this->Reader->GetErrorCode();
+      throw MeshReadError(this->First.empty() ? "cannot be read" : this->First,
+        code != vtkErrorCode::NoError ? code
+                                      : static_cast<unsigned long>(vtkErrorCode::FileFormatError));
     }
   }
+
+private:
+  void Catch(vtkObject*, unsigned long, void* text)
+  {
+    if (this->First.empty())
+    {
+      this->First = vtkShadelabOutputWindow::OneLine(static_cast<const char*>(text));
+    }
+  }
+
+  vtkAlgorithm* Reader;
+  vtkExecutive* Executive;
+  unsigned long ReaderTag;
+  unsigned long ExecutiveTag;
+  std::string First;
 };
 
-// Runs `reader` and throws its first error as this reader's.
-void Run(vtkAlgorithm* reader)
-{
-  FirstError error;
-  const unsigned long fromReader = reader->AddObserver(vtkCommand::ErrorEvent, &error, &FirstError::Catch);
-  const unsigned long fromExecutive =
-    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, &error, &FirstError::Catch);
-  const int ok = reader->GetExecutive()->Update();
-  reader->RemoveObserver(fromReader);
-  reader->GetExecutive()->RemoveObserver(fromExecutive);
-  if (!ok || !error.Message.empty())
-  {
-    const unsigned long code = reader->GetErrorCode();
-    throw MeshReadError(error.Message.empty() ? "cannot be read" : error.Message,
-      code != vtkErrorCode::NoError ? code : static_cast<unsigned long>(vtkErrorCode::FileFormatError));
-  }
-}
-
-template <class Reader>
+template<class Reader>
 void ReadWith(const char* fileName, vtkPolyData* triangles)
 {
   vtkNew<Reader> reader;
   reader->SetFileName(fileName);
-  Run(reader);
+  NestedReader(reader).Update();
   triangles->ShallowCopy(reader->GetOutput());
 }
 }
@@ -108,25 +125,17 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
     CheckReadable(fileName);
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(fileName);
-    Run(reader);
+    NestedReader(reader).Update();
     shadelab::MakeTriangleMesh(reader->GetOutput(), triangles);
   }
   else if (extension == ".vtk")
   {
-    CheckReadable(fileName);
-    vtkNew<vtkPolyDataReader> reader;
-    reader->SetFileName(fileName);
-    if (!reader->IsFilePolyData())
-    {
-      throw MeshReadError("not a legacy VTK file of polydata (DATASET POLYDATA)");
-    }
-    Run(reader);
-    shadelab::MakeTriangleMesh(reader->GetOutput(), triangles);
+    ReadWith<vtkShadelabLegacyVTKReader>(fileName, triangles);
   }
   else
   {
-    throw MeshReadError("unknown mesh format \"" + extension + "\" (known: " +
-        GetKnownExtensions() + ")",
+    throw MeshReadError(
+      "unknown mesh format \"" + extension + "\" (known: " + GetKnownExtensions() + ")",
       vtkErrorCode::UnrecognizedFileTypeError);
   }
 }

@@ -4,15 +4,16 @@
  *
  * The extension (case-insensitive) picks the reader: .obj
  * (vtkShadelabOBJReader), .ply (vtkShadelabPLYReader), .stl
- * (vtkShadelabSTLReader), .vtp (vtkXMLPolyDataReader) and .vtk (legacy
- * vtkPolyDataReader; a legacy file of any other dataset type is an error).
- * The output is what every vtkShadelabFileReader gives: double points,
- * triangles only, and the file's point normals as the float array "Normals".
+ * (vtkShadelabSTLReader), .vtk (vtkShadelabLegacyVTKReader: legacy files of
+ * polydata only) and .vtp (VTK's vtkXMLPolyDataReader). The output is what
+ * every vtkShadelabFileReader gives: double points, triangles only, and the
+ * file's point normals as the float array "Normals".
  *
- * Errors of the reader it runs become this reader's one error, so that the
- * program prints a single line. For .vtp and .vtk, VTK's readers are given
- * only readable files (they say little about why they fail), and their
- * output is checked and triangulated as the other formats are.
+ * The error of the reader it runs becomes this reader's one error, so that
+ * the program prints a single line. vtkXMLPolyDataReader is given only
+ * readable files (it says little about why it fails), and its output is
+ * checked and triangulated as the other formats are. Its XML parser reports
+ * malformed XML itself, so that message comes first.
  */
 #ifndef vtkShadelabMeshReader_h
 #define vtkShadelabMeshReader_h

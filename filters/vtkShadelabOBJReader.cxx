@@ -34,7 +34,10 @@ struct ObjData
 };
 
 // A 1-based or negative (relative) OBJ index as a 0-based one.
-vtkIdType Resolve(long long index, std::size_t defined, const char* kind, const char* kinds,
+vtkIdType Resolve(long long index,
+  std::size_t defined,
+  const char* kind,
+  const char* kinds,
   const TextScanner& scanner)
 {
   if (index == 0)
@@ -158,8 +161,7 @@ ObjData Parse(std::string_view text)
       const std::size_t corners = obj.VertexIds.size() - first;
       if (corners < 3)
       {
-        scanner.Fail(
-          "face has " + std::to_string(corners) + " vertices, at least 3 are needed");
+        scanner.Fail("face has " + std::to_string(corners) + " vertices, at least 3 are needed");
       }
       obj.FaceOffsets.push_back(static_cast<vtkIdType>(obj.VertexIds.size()));
     }
@@ -193,8 +195,8 @@ void SplitByNormal(ObjData& obj, shadelab::PolygonMesh& mesh)
         static_cast<vtkIdType>(pointNormal.size()));
       if (added)
       {
-        mesh.Points.insert(mesh.Points.end(), { mesh.Points[3 * v], mesh.Points[3 * v + 1],
-                                                mesh.Points[3 * v + 2] });
+        mesh.Points.insert(mesh.Points.end(),
+          { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
         pointNormal.push_back(n);
       }
       obj.VertexIds[c] = it->second;

@@ -1,16 +1,15 @@
 #include "vtkShadelabPLYReader.h"
 
 #include "shadelabMeshReadError.h"
+#include "shadelabScalarType.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 
-#include <vtkByteSwap.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,17 +22,9 @@ using shadelab::MeshReadError;
 using shadelab::Quote;
 using shadelab::TextScanner;
 
-enum class Scalar
-{
-  Int8,
-  UInt8,
-  Int16,
-  UInt16,
-  Int32,
-  UInt32,
-  Float32,
-  Float64
-};
+using Scalar = shadelab::ScalarType;
+using shadelab::IsInteger;
+using shadelab::SizeOf;
 
 struct ScalarName
 {
@@ -41,37 +32,22 @@ struct ScalarName
   Scalar Type;
 };
 
-constexpr ScalarName ScalarNames[] = { { "char", Scalar::Int8 }, { "int8", Scalar::Int8 },
-  { "uchar", Scalar::UInt8 }, { "uint8", Scalar::UInt8 }, { "short", Scalar::Int16 },
-  { "int16", Scalar::Int16 }, { "ushort", Scalar::UInt16 }, { "uint16", Scalar::UInt16 },
-  { "int", Scalar::Int32 }, { "int32", Scalar::Int32 }, { "uint", Scalar::UInt32 },
-  { "uint32", Scalar::UInt32 }, { "float", Scalar::Float32 }, { "float32", Scalar::Float32 },
-  { "double", Scalar::Float64 }, { "float64", Scalar::Float64 } };
-
-std::size_t SizeOf(Scalar type)
-{
-  switch (type)
-  {
-    case Scalar::Int8:
-    case Scalar::UInt8:
-      return 1;
-    case Scalar::Int16:
-    case Scalar::UInt16:
-      return 2;
-    case Scalar::Int32:
-    case Scalar::UInt32:
-    case Scalar::Float32:
-      return 4;
-    case Scalar::Float64:
-      break;
-  }
-  return 8;
-}
-
-bool IsInteger(Scalar type)
-{
-  return type != Scalar::Float32 && type != Scalar::Float64;
-}
+constexpr ScalarName ScalarNames[] = { { "char", Scalar::Int8 },
+  { "int8", Scalar::Int8 },
+  { "uchar", Scalar::UInt8 },
+  { "uint8", Scalar::UInt8 },
+  { "short", Scalar::Int16 },
+  { "int16", Scalar::Int16 },
+  { "ushort", Scalar::UInt16 },
+  { "uint16", Scalar::UInt16 },
+  { "int", Scalar::Int32 },
+  { "int32", Scalar::Int32 },
+  { "uint", Scalar::UInt32 },
+  { "uint32", Scalar::UInt32 },
+  { "float", Scalar::Float32 },
+  { "float32", Scalar::Float32 },
+  { "double", Scalar::Float64 },
+  { "float64", Scalar::Float64 } };
 
 // What the reader does with a property's values; X .. NZ in this order.
 enum class Use
@@ -295,8 +271,8 @@ void AssignIndexRole(Element& element)
     {
       if (!IsInteger(property.CountType) || !IsInteger(property.Type))
       {
-        throw MeshReadError("the " + element.Name + " list '" + property.Name +
-          "' does not hold integers");
+        throw MeshReadError(
+          "the " + element.Name + " list '" + property.Name + "' does not hold integers");
       }
       property.Role = Use::Indices;
       return;
@@ -337,26 +313,25 @@ void AssignRoles(Header& header)
 }
 
 // Each item needs at least its fixed bytes (binary: scalars and list counts)
-// or, in ASCII, one character and a separator per property; a count that
-// cannot fit the file is an error before anything is allocated for it.
-void CheckCounts(const Header& header, std::size_t bodySize, std::size_t fileSize)
+// or, in ASCII, a character and a separator per property. A count that the
+// whole file could not hold is refused before anything is allocated for it;
+// a file that is merely cut short is reported as truncated while reading.
+void CheckCounts(const Header& header, std::size_t fileSize)
 {
-  const bool ascii = header.Format == Encoding::Ascii;
-  std::uint64_t remaining = ascii ? bodySize + 1 : bodySize; // the last line may lack its '\n'
   for (const Element& element : header.Elements)
   {
     std::uint64_t itemBytes = 0;
     for (const Property& property : element.Properties)
     {
-      itemBytes += ascii ? 2 : SizeOf(property.IsList ? property.CountType : property.Type);
+      itemBytes += header.Format == Encoding::Ascii
+        ? 2
+        : SizeOf(property.IsList ? property.CountType : property.Type);
     }
-    if (element.Count > remaining / itemBytes)
+    if (element.Count > fileSize / itemBytes)
     {
       throw MeshReadError("header declares " + std::to_string(element.Count) + " " +
-        Plural(element.Name) + ", more than a " + std::to_string(fileSize) +
-        "-byte file can hold");
+        Plural(element.Name) + ", more than a " + std::to_string(fileSize) + "-byte file can hold");
     }
-    remaining -= element.Count * itemBytes;
   }
 }
 
@@ -365,23 +340,6 @@ void CheckCounts(const Header& header, std::size_t bodySize, std::size_t fileSiz
   throw MeshReadError("truncated: header declares " + std::to_string(element.Count) + " " +
       Plural(element.Name) + " but the file ends after " + std::to_string(items),
     vtkErrorCode::PrematureEndOfFileError);
-}
-
-// Binary PLY in either byte order, on a host of either byte order.
-template <typename T>
-double Load(const unsigned char* bytes, bool bigEndian)
-{
-  T value;
-  std::memcpy(&value, bytes, sizeof value);
-  if (bigEndian)
-  {
-    vtkByteSwap::SwapBE(&value);
-  }
-  else
-  {
-    vtkByteSwap::SwapLE(&value);
-  }
-  return static_cast<double>(value);
 }
 
 class BinarySource
@@ -405,35 +363,8 @@ public:
     {
       return false;
     }
-    const unsigned char* bytes = this->Position;
+    value = shadelab::LoadScalar(this->Position, type, this->BigEndian);
     this->Position += size;
-    switch (type)
-    {
-      case Scalar::Int8:
-        value = Load<std::int8_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::UInt8:
-        value = Load<std::uint8_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::Int16:
-        value = Load<std::int16_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::UInt16:
-        value = Load<std::uint16_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::Int32:
-        value = Load<std::int32_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::UInt32:
-        value = Load<std::uint32_t>(bytes, this->BigEndian);
-        break;
-      case Scalar::Float32:
-        value = Load<float>(bytes, this->BigEndian);
-        break;
-      case Scalar::Float64:
-        value = Load<double>(bytes, this->BigEndian);
-        break;
-    }
     return true;
   }
 
@@ -451,7 +382,8 @@ public:
   /** Skips a whole element by its sizes: in one step when it has no lists. */
   void SkipItems(const Element& element)
   {
-    const bool fixed = std::none_of(element.Properties.begin(), element.Properties.end(),
+    const bool fixed = std::none_of(element.Properties.begin(),
+      element.Properties.end(),
       [](const Property& property) { return property.IsList; });
     if (fixed)
     {
@@ -461,7 +393,7 @@ public:
         itemBytes += SizeOf(property.Type);
       }
       const std::uint64_t left = static_cast<std::uint64_t>(this->End - this->Position);
-      if (element.Count * itemBytes > left) // no overflow: CheckCounts bounded it
+      if (element.Count * itemBytes > left) // no overflow: CheckCounts bounded the product
       {
         Truncated(element, left / itemBytes);
       }
@@ -473,10 +405,9 @@ public:
     {
       for (const Property& property : element.Properties)
       {
-        const bool ok = property.IsList
-          ? this->Read(property.CountType, length) && length >= 0 &&
+        const bool ok = property.IsList ? this->Read(property.CountType, length) && length >= 0 &&
             this->Skip(property.Type, static_cast<std::uint64_t>(length))
-          : this->Skip(property.Type, 1);
+                                        : this->Skip(property.Type, 1);
         if (!ok)
         {
           Truncated(element, i);
@@ -536,7 +467,7 @@ private:
   TextScanner& Scanner;
 };
 
-template <class Source>
+template<class Source>
 void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& mesh)
 {
   if (element.Role == Kind::Other)
@@ -547,7 +478,8 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
   const bool strips = element.Role == Kind::Strips;
   std::vector<vtkIdType>& offsets = strips ? mesh.StripOffsets : mesh.FaceOffsets;
   std::vector<vtkIdType>& ids = strips ? mesh.StripIds : mesh.FaceIds;
-  const bool hasNormals = std::any_of(element.Properties.begin(), element.Properties.end(),
+  const bool hasNormals = std::any_of(element.Properties.begin(),
+    element.Properties.end(),
     [](const Property& property) { return property.Role == Use::NX; });
   if (element.Role == Kind::Vertex)
   {
@@ -558,7 +490,8 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
   {
     offsets.reserve(offsets.size() + element.Count);
   }
-  const auto endStrip = [&] {
+  const auto endStrip = [&]
+  {
     if (static_cast<vtkIdType>(ids.size()) > offsets.back())
     {
       offsets.push_back(static_cast<vtkIdType>(ids.size()));
@@ -593,8 +526,7 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
       }
       if (value < 0)
       {
-        throw MeshReadError(
-          element.Name + " " + std::to_string(i) + " has a negative list length");
+        throw MeshReadError(element.Name + " " + std::to_string(i) + " has a negative list length");
       }
       const auto length = static_cast<std::uint64_t>(value);
       if (property.Role != Use::Indices)
@@ -648,8 +580,7 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   TextScanner scanner(bytes);
   Header header = ReadHeader(bytes, scanner);
   AssignRoles(header);
-  const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
-  CheckCounts(header, body.size(), bytes.size());
+  CheckCounts(header, bytes.size());
 
   shadelab::PolygonMesh mesh;
   if (header.Format == Encoding::Ascii)
@@ -662,6 +593,7 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   }
   else
   {
+    const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
     BinarySource source(body, header.Format == Encoding::BigEndian);
     for (const Element& element : header.Elements)
     {

@@ -39,8 +39,8 @@ public:
 
   void AddCorner(const double xyz[3])
   {
-    // Adding +0.0 turns -0.0 into +0.0, which compares equal but hashes apart.
-    const Key key{ xyz[0] + 0.0, xyz[1] + 0.0, xyz[2] + 0.0 };
+    // -0 == +0, and std::hash<double> must (and does) give them one hash.
+    const Key key{ xyz[0], xyz[1], xyz[2] };
     const auto [it, added] =
       this->Index.try_emplace(key, static_cast<vtkIdType>(this->Mesh.Points.size() / 3));
     if (added)
@@ -122,7 +122,8 @@ void ReadBinary(std::string_view bytes, Welder& welder)
     for (int corner = 0; corner < 3; ++corner)
     {
       float coordinates[3];
-      std::memcpy(coordinates, triangle + 12 * (corner + 1), sizeof coordinates); // after the normal
+      std::memcpy(
+        coordinates, triangle + 12 * (corner + 1), sizeof coordinates); // after the normal
       vtkByteSwap::SwapLERange(coordinates, 3);
       const double xyz[3] = { coordinates[0], coordinates[1], coordinates[2] };
       const std::string problem = NonFinite(xyz, t);
@@ -137,7 +138,8 @@ void ReadBinary(std::string_view bytes, Welder& welder)
 }
 
 // Moves to the next line and checks that it starts with `words`.
-void ExpectLine(TextScanner& scanner, std::initializer_list<std::string_view> words,
+void ExpectLine(TextScanner& scanner,
+  std::initializer_list<std::string_view> words,
   std::uint64_t triangle)
 {
   std::string expected;
@@ -217,8 +219,8 @@ void ReadAscii(std::string_view text, Welder& welder)
   }
   if (inSolid)
   {
-    throw MeshReadError("truncated: the file ends before 'endsolid'",
-      vtkErrorCode::PrematureEndOfFileError);
+    throw MeshReadError(
+      "truncated: the file ends before 'endsolid'", vtkErrorCode::PrematureEndOfFileError);
   }
 }
 }
@@ -246,7 +248,7 @@ void vtkShadelabSTLReader::ReadMesh(const char* fileName, vtkPolyData* triangles
     const std::uint64_t count = DeclaredTriangles(bytes);
     throw MeshReadError("binary STL header declares " + std::to_string(count) +
       " triangles, which take " + std::to_string(HeaderBytes + TriangleBytes * count) +
-      " bytes, but the file has " + std::to_string(bytes.size()));
+      " bytes, but the file has " + std::to_string(bytes.size()) + " bytes");
   }
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles);
 }

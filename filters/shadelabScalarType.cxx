@@ -1,0 +1,84 @@
+#include "shadelabScalarType.h"
+
+#include <vtkByteSwap.h>
+
+#include <cstdint>
+#include <cstring>
+
+namespace shadelab
+{
+namespace
+{
+template<typename T>
+double Load(const unsigned char* bytes, bool bigEndian)
+{
+  T value;
+  std::memcpy(&value, bytes, sizeof value);
+  // vtkByteSwap swaps only where the host's order differs.
+  if (bigEndian)
+  {
+    vtkByteSwap::SwapBE(&value);
+  }
+  else
+  {
+    vtkByteSwap::SwapLE(&value);
+  }
+  return static_cast<double>(value);
+}
+}
+
+std::size_t SizeOf(ScalarType type)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+    case ScalarType::UInt8:
+      return 1;
+    case ScalarType::Int16:
+    case ScalarType::UInt16:
+      return 2;
+    case ScalarType::Int32:
+    case ScalarType::UInt32:
+    case ScalarType::Float32:
+      return 4;
+    case ScalarType::Int64:
+    case ScalarType::UInt64:
+    case ScalarType::Float64:
+      break;
+  }
+  return 8;
+}
+
+bool IsInteger(ScalarType type)
+{
+  return type != ScalarType::Float32 && type != ScalarType::Float64;
+}
+
+double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+      return Load<std::int8_t>(bytes, bigEndian);
+    case ScalarType::UInt8:
+      return Load<std::uint8_t>(bytes, bigEndian);
+    case ScalarType::Int16:
+      return Load<std::int16_t>(bytes, bigEndian);
+    case ScalarType::UInt16:
+      return Load<std::uint16_t>(bytes, bigEndian);
+    case ScalarType::Int32:
+      return Load<std::int32_t>(bytes, bigEndian);
+    case ScalarType::UInt32:
+      return Load<std::uint32_t>(bytes, bigEndian);
+    case ScalarType::Int64:
+      return Load<std::int64_t>(bytes, bigEndian);
+    case ScalarType::UInt64:
+      return Load<std::uint64_t>(bytes, bigEndian);
+    case ScalarType::Float32:
+      return Load<float>(bytes, bigEndian);
+    case ScalarType::Float64:
+      break;
+  }
+  return Load<double>(bytes, bigEndian);
+}
+}

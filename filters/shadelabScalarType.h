@@ -1,0 +1,36 @@
+/**
+ * @brief   the scalar types that binary mesh files store
+ *
+ * Binary PLY and legacy VTK files declare each value's type by name and
+ * store it in a stated byte order; both readers decode through this.
+ */
+#ifndef shadelabScalarType_h
+#define shadelabScalarType_h
+
+#include <cstddef>
+
+namespace shadelab
+{
+enum class ScalarType
+{
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Int32,
+  UInt32,
+  Int64,
+  UInt64,
+  Float32,
+  Float64
+};
+
+std::size_t SizeOf(ScalarType type);
+
+bool IsInteger(ScalarType type);
+
+/** The SizeOf(type) bytes at `bytes`, in the given byte order, as a double. */
+double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian);
+}
+
+#endif

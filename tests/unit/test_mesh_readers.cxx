@@ -1,0 +1,1062 @@
+// The mesh readers: every shared mesh, small hand-made files of each format
+// and form, and bad input of every kind (one-line error, no partial mesh).
+#include "vtkShadelabMeshReader.h"
+#include "vtkShadelabOutputWindow.h"
+#include "vtkShadelabPLYReader.h"
+
+#include <vtkByteSwap.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkLogger.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+const fs::path SharedMeshes = fs::path(SHADELAB_SHARED_DIR) / "data" / "meshes";
+
+struct ReadResult
+{
+  bool Ok = false;
+  vtkSmartPointer<vtkPolyData> Mesh;
+  std::string Error;
+  unsigned long ErrorCode = vtkErrorCode::NoError;
+  std::vector<std::string> Warnings;
+};
+
+vtkShadelabOutputWindow* Window()
+{
+  static vtkShadelabOutputWindow* window = []
+  {
+    // VTK 9.1 also logs each error, several lines long, to stderr; the
+    // captured one line is what the tests look at.
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    return vtkShadelabOutputWindow::Install();
+  }();
+  return window;
+}
+
+ReadResult ReadWith(vtkShadelabFileReader* reader, const fs::path& path)
+{
+  Window()->Clear();
+  reader->SetFileName(path.c_str());
+  ReadResult result;
+  result.Ok = reader->GetExecutive()->Update() != 0;
+  result.Mesh = reader->GetOutput();
+  result.Error = Window()->GetFirstError();
+  result.ErrorCode = reader->GetErrorCode();
+  result.Warnings = Window()->GetWarnings();
+  return result;
+}
+
+ReadResult Read(const fs::path& path)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  return ReadWith(reader, path);
+}
+
+std::vector<std::array<vtkIdType, 3>> Triangles(vtkPolyData* mesh)
+{
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cell->GetCurrentCell(size, ids);
+    EXPECT_EQ(size, 3);
+    triangles.push_back({ ids[0], ids[1], ids[2] });
+  }
+  return triangles;
+}
+
+// The un-normalised normal: its length is twice the triangle's area.
+std::array<double, 3> AreaNormal(vtkPolyData* mesh, const std::array<vtkIdType, 3>& triangle)
+{
+  double a[3], b[3], c[3], ab[3], ac[3];
+  mesh->GetPoint(triangle[0], a);
+  mesh->GetPoint(triangle[1], b);
+  mesh->GetPoint(triangle[2], c);
+  for (int k = 0; k < 3; ++k)
+  {
+    ab[k] = b[k] - a[k];
+    ac[k] = c[k] - a[k];
+  }
+  std::array<double, 3> n;
+  vtkMath::Cross(ab, ac, n.data());
+  return n;
+}
+
+// What every successful read must give: triangles only, double points, all
+// finite, nothing but the normals as point data, no verts/lines/strips.
+void ExpectTriangleMesh(vtkPolyData* mesh)
+{
+  ASSERT_NE(mesh->GetPoints(), nullptr);
+  EXPECT_EQ(mesh->GetPoints()->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(mesh->GetNumberOfVerts() + mesh->GetNumberOfLines() + mesh->GetNumberOfStrips(), 0);
+  EXPECT_GT(mesh->GetNumberOfPolys(), 0);
+  EXPECT_EQ(mesh->GetPolys()->IsHomogeneous(), 3);
+  double p[3];
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    mesh->GetPoint(i, p);
+    ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) << i;
+  }
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  EXPECT_LE(mesh->GetPointData()->GetNumberOfArrays(), normals ? 1 : 0);
+  if (normals)
+  {
+    EXPECT_TRUE(vtkFloatArray::SafeDownCast(normals));
+    EXPECT_STREQ(normals->GetName(), "Normals");
+    EXPECT_EQ(normals->GetNumberOfComponents(), 3);
+    EXPECT_EQ(normals->GetNumberOfTuples(), mesh->GetNumberOfPoints());
+  }
+}
+
+// A file's lines that start with `keyword`, counted by their number of tokens.
+std::vector<std::size_t> StatementSizes(const fs::path& path, const std::string& keyword)
+{
+  std::ifstream in(path);
+  std::vector<std::size_t> sizes;
+  std::string line, word;
+  while (std::getline(in, line))
+  {
+    std::istringstream tokens(line);
+    if (tokens >> word && word == keyword)
+    {
+      std::size_t count = 0;
+      while (tokens >> word)
+      {
+        ++count;
+      }
+      sizes.push_back(count);
+    }
+  }
+  return sizes;
+}
+
+// Appends `value` in the given byte order (host-independent).
+template<typename T>
+void Put(std::string& bytes, T value, bool bigEndian = false)
+{
+  if (bigEndian)
+  {
+    vtkByteSwap::SwapBE(&value);
+  }
+  else
+  {
+    vtkByteSwap::SwapLE(&value);
+  }
+  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+class MeshReaders : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    Window();
+    std::string pattern = (fs::temp_directory_path() / "shadelab-readers-XXXXXX").string();
+    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+    this->Dir = pattern;
+  }
+  void TearDown() override { fs::remove_all(this->Dir); }
+
+  fs::path Write(const std::string& name, const std::string& bytes) const
+  {
+    const fs::path path = this->Dir / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  }
+
+  // Reads `bytes` as file `name` and checks that it fails the way bad input
+  // must: request failed, an error code, an empty output, and one line that
+  // contains every key word.
+  void ExpectError(const std::string& name,
+    const std::string& bytes,
+    std::initializer_list<const char*> keyWords)
+  {
+    this->ExpectError(this->Write(name, bytes), keyWords);
+  }
+
+  void ExpectError(const fs::path& path, std::initializer_list<const char*> keyWords)
+  {
+    SCOPED_TRACE(path.filename().string());
+    const ReadResult result = Read(path);
+    EXPECT_FALSE(result.Ok);
+    EXPECT_NE(result.ErrorCode, vtkErrorCode::NoError);
+    EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 0);
+    EXPECT_EQ(result.Mesh->GetNumberOfCells(), 0);
+    ASSERT_FALSE(result.Error.empty());
+    EXPECT_EQ(result.Error.find('\n'), std::string::npos);
+    for (const char* word : keyWords)
+    {
+      EXPECT_NE(result.Error.find(word), std::string::npos)
+        << "'" << word << "' not in: " << result.Error;
+    }
+  }
+
+  fs::path Dir;
+};
+
+// ---------------------------------------------------------------------------
+// The shared meshes
+
+TEST_F(MeshReaders, EverySharedMeshLoadsWithTheReadmesTriangleCount)
+{
+  // data/README.md; suzanne's 500 faces are 468 quads and 32 triangles.
+  const std::vector<std::pair<std::string, vtkIdType>> expected = { { "cow.obj", 5804 },
+    { "fandisk.obj", 12946 },
+    { "spot.obj", 5856 },
+    { "stanford-bunny.obj", 69451 },
+    { "stanford-bunny.ply", 69451 },
+    { "suzanne.obj", 2 * 468 + 32 },
+    { "teapot.obj", 6320 },
+    { "teapot.stl", 6320 } };
+  std::set<std::string> covered;
+  for (const auto& [name, triangles] : expected)
+  {
+    SCOPED_TRACE(name);
+    const ReadResult result = Read(SharedMeshes / name);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Mesh->GetNumberOfPolys(), triangles);
+    ExpectTriangleMesh(result.Mesh);
+    covered.insert(name);
+  }
+  for (const auto& entry : fs::directory_iterator(SharedMeshes))
+  {
+    EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
+      << entry.path() << " is not in this test's table";
+  }
+}
+
+TEST_F(MeshReaders, SuzannesQuadsBecomeTwoTrianglesAndItsNormalsAreKept)
+{
+  const fs::path path = SharedMeshes / "suzanne.obj";
+  std::size_t quads = 0, triangles = 0;
+  for (const std::size_t corners : StatementSizes(path, "f"))
+  {
+    quads += corners == 4;
+    triangles += corners == 3;
+  }
+  EXPECT_EQ(quads, 468u);
+  EXPECT_EQ(quads + triangles, 500u);
+
+  const ReadResult result = Read(path);
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), static_cast<vtkIdType>(2 * quads + triangles));
+  vtkDataArray* normals = result.Mesh->GetPointData()->GetNormals();
+  ASSERT_NE(normals, nullptr);
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    EXPECT_NEAR(vtkMath::Norm(normals->GetTuple3(i)), 1.0, 1e-3) << i;
+  }
+}
+
+TEST_F(MeshReaders, TheBunnyObjHasNoNormals)
+{
+  const fs::path path = SharedMeshes / "stanford-bunny.obj";
+  EXPECT_TRUE(StatementSizes(path, "vn").empty());
+  const ReadResult result = Read(path);
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
+}
+
+TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
+{
+  const ReadResult obj = Read(SharedMeshes / "stanford-bunny.obj");
+  const ReadResult ply = Read(SharedMeshes / "stanford-bunny.ply");
+  ASSERT_TRUE(obj.Ok && ply.Ok) << obj.Error << ply.Error;
+  EXPECT_EQ(obj.Mesh->GetNumberOfPolys(), ply.Mesh->GetNumberOfPolys());
+  EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), ply.Mesh->GetNumberOfPoints());
+  double a[6], b[6];
+  obj.Mesh->GetBounds(a);
+  ply.Mesh->GetBounds(b);
+  for (int k = 0; k < 6; ++k)
+  {
+    // The PLY stores floats; the OBJ's decimals round to the same floats.
+    EXPECT_NEAR(a[k], b[k], 1e-6 * std::abs(a[k]) + 1e-9) << k;
+  }
+}
+
+TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
+{
+  // teapot.obj repeats positions along the seams of its Bezier patches
+  // (3644 vertices at 3241 places); the STL has no indices, so welding can
+  // only give the distinct places, each as the float the STL stores.
+  const ReadResult obj = Read(SharedMeshes / "teapot.obj");
+  const ReadResult stl = Read(SharedMeshes / "teapot.stl");
+  ASSERT_TRUE(obj.Ok && stl.Ok) << obj.Error << stl.Error;
+  std::set<std::array<float, 3>> places;
+  double p[3];
+  for (vtkIdType i = 0; i < obj.Mesh->GetNumberOfPoints(); ++i)
+  {
+    obj.Mesh->GetPoint(i, p);
+    places.insert({ static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]) });
+  }
+  EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), 3644);
+  EXPECT_EQ(stl.Mesh->GetNumberOfPoints(), static_cast<vtkIdType>(places.size()));
+  EXPECT_EQ(stl.Mesh->GetNumberOfPolys(), obj.Mesh->GetNumberOfPolys());
+}
+
+TEST_F(MeshReaders, TheFormatReadersWorkAloneAndPrintTheirFileName)
+{
+  vtkNew<vtkShadelabPLYReader> reader;
+  const ReadResult result = ReadWith(reader, SharedMeshes / "stanford-bunny.ply");
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 69451);
+  std::ostringstream printed;
+  reader->Print(printed);
+  EXPECT_NE(printed.str().find("FileName: " + (SharedMeshes / "stanford-bunny.ply").string()),
+    std::string::npos);
+}
+
+// ---------------------------------------------------------------------------
+// Hand-made PLY: the unit square as two triangles, a quad and a strip
+
+// A PLY body in any of the three encodings, from the same calls.
+class PlyBody
+{
+public:
+  explicit PlyBody(const std::string& format)
+    : Ascii(format == "ascii")
+    , BigEndian(format == "binary_big_endian")
+  {
+  }
+
+  template<typename T>
+  PlyBody& Add(T value)
+  {
+    if (this->Ascii)
+    {
+      std::ostringstream text;
+      text << +value << ' '; // + prints chars as numbers
+      this->Bytes += text.str();
+    }
+    else
+    {
+      Put(this->Bytes, value, this->BigEndian);
+    }
+    return *this;
+  }
+
+  PlyBody& End()
+  {
+    if (this->Ascii)
+    {
+      this->Bytes += '\n';
+    }
+    return *this;
+  }
+
+  std::string Bytes;
+
+private:
+  bool Ascii;
+  bool BigEndian;
+};
+
+enum class SquareForm
+{
+  Triangles,
+  Quad,
+  Strip
+};
+
+// Vertices (0,0,0) (1,0,0) (1,1,0) (0,1,0) with a colour, a skipped list
+// property and normals (0,0,1); an "edge" element to skip before the faces.
+std::string SquarePly(const std::string& format, SquareForm form)
+{
+  const char* faces = form == SquareForm::Triangles ? "element face 2\n"
+                                                      "property list uchar int vertex_indices\n"
+    : form == SquareForm::Quad                      ? "element face 1\n"
+                                                      "property list uint8 uint32 vertex_index\n"
+                                                    : "element tristrips 1\n"
+                                                      "property list int int vertex_indices\n";
+  std::string header = "ply\nformat " + format +
+    " 1.0\n"
+    "comment the unit square\n"
+    "element vertex 4\n"
+    "property float x\nproperty double y\nproperty short z\n"
+    "property uchar red\n"
+    "property list uchar float extra\n"
+    "property float32 nx\nproperty float32 ny\nproperty float32 nz\n"
+    "element edge 1\n"
+    "property list uint16 int16 vertex_pair\nproperty int8 crease\n" +
+    faces + "end_header\n";
+  PlyBody body(format);
+  const float corners[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  for (const auto& corner : corners)
+  {
+    body.Add(corner[0]).Add(static_cast<double>(corner[1])).Add(std::int16_t{ 0 });
+    body.Add(std::uint8_t{ 200 }).Add(std::uint8_t{ 2 }).Add(0.5f).Add(0.25f);
+    body.Add(0.0f).Add(0.0f).Add(1.0f).End();
+  }
+  body.Add(std::uint16_t{ 2 }).Add(std::int16_t{ 0 }).Add(std::int16_t{ 1 });
+  body.Add(std::int8_t{ -1 }).End();
+  switch (form)
+  {
+    case SquareForm::Triangles:
+      body.Add(std::uint8_t{ 3 }).Add(0).Add(1).Add(2).End();
+      body.Add(std::uint8_t{ 3 }).Add(0).Add(2).Add(3).End();
+      break;
+    case SquareForm::Quad:
+      body.Add(std::uint8_t{ 4 }).Add(0u).Add(1u).Add(2u).Add(3u).End();
+      break;
+    case SquareForm::Strip: // 0 1 3 2: triangles (0 1 3) and (1 3 2), the second turned
+      body.Add(5).Add(0).Add(1).Add(3).Add(2).Add(-1).End();
+      break;
+  }
+  return header + body.Bytes;
+}
+
+// Two triangles covering the unit square, both facing +z.
+void ExpectUnitSquare(const ReadResult& result)
+{
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 4);
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 2u);
+  double area = 0;
+  for (const auto& triangle : triangles)
+  {
+    const auto n = AreaNormal(result.Mesh, triangle);
+    EXPECT_GT(n[2], 0.0);
+    EXPECT_EQ(n[0], 0.0);
+    EXPECT_EQ(n[1], 0.0);
+    area += n[2] / 2;
+  }
+  EXPECT_DOUBLE_EQ(area, 1.0);
+}
+
+TEST_F(MeshReaders, PlyInEveryEncodingAndFormGivesTheSameSquare)
+{
+  for (const char* format : { "ascii", "binary_little_endian", "binary_big_endian" })
+  {
+    for (const SquareForm form : { SquareForm::Triangles, SquareForm::Quad, SquareForm::Strip })
+    {
+      SCOPED_TRACE(std::string(format) + " form " + std::to_string(static_cast<int>(form)));
+      const ReadResult result = Read(this->Write("square.PLY", SquarePly(format, form)));
+      ExpectUnitSquare(result);
+      vtkDataArray* normals = result.Mesh->GetPointData()->GetNormals();
+      ASSERT_NE(normals, nullptr);
+      EXPECT_EQ(normals->GetTuple3(2)[2], 1.0);
+    }
+  }
+}
+
+TEST_F(MeshReaders, PlyWithoutAllThreeNormalComponentsHasNoNormals)
+{
+  const ReadResult result = Read(this->Write("square.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty float nx\nproperty float ny\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 2\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
+}
+
+TEST_F(MeshReaders, PlyStripsSeparatedByMinusOneAndJoinTrianglesDropped)
+{
+  // Two squares as two strips: separated by -1 in the first list, joined in
+  // the second by repeated vertices, which make 4 zero-area triangles
+  // (2 3 3, 3 3 1, 3 1 1, 1 1 4) that are no part of the surface.
+  const ReadResult result = Read(this->Write("strips.ply",
+    "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+    "property float z\nelement tristrips 2\nproperty list int int vertex_indices\n"
+    "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 0 0\n2 1 0\n"
+    "9 0 1 2 3 -1 1 4 3 5\n"
+    "10 0 1 2 3 3 1 1 4 3 5\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 8u);
+  for (const auto& triangle : triangles)
+  {
+    EXPECT_GT(AreaNormal(result.Mesh, triangle)[2], 0.0);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Hand-made OBJ
+
+TEST_F(MeshReaders, ObjNegativeIndicesCountBackFromTheLastVertex)
+{
+  const ReadResult result = Read(
+    this->Write("relative.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\nv 0 1 0\nf -4 -2 -1\n"));
+  ExpectUnitSquare(result);
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 2u);
+  EXPECT_EQ(triangles[0], (std::array<vtkIdType, 3>{ 0, 1, 2 }));
+  EXPECT_EQ(triangles[1], (std::array<vtkIdType, 3>{ 0, 2, 3 }));
+}
+
+TEST_F(MeshReaders, ObjQuadBecomesTwoTriangles)
+{
+  ExpectUnitSquare(
+    Read(this->Write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")));
+}
+
+TEST_F(MeshReaders, ObjConcavePolygonIsTriangulatedInsideItsOutline)
+{
+  // An L of area 3, starting at a vertex that does not see the whole
+  // polygon: a fan from it would fold a triangle over (wrong area, flipped).
+  const ReadResult result = Read(this->Write(
+    "concave.obj", "v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 1 2 3 4 5 6\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 4u);
+  double area = 0;
+  for (const auto& triangle : triangles)
+  {
+    const auto n = AreaNormal(result.Mesh, triangle);
+    EXPECT_GT(n[2], 0.0);
+    area += n[2] / 2;
+  }
+  EXPECT_DOUBLE_EQ(area, 3.0);
+}
+
+TEST_F(MeshReaders, ObjVertexUsedWithTwoNormalsIsSplit)
+{
+  const ReadResult result = Read(this->Write("split.obj",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+    "vn 0 0 1\nvn 0 -1 0\n"
+    "f 1//1 2//1 3//1\n"
+    "f 1/7/2 4/7/2 2/7/2\n")); // the vt index is ignored
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  // Vertices 1 and 2 each get a second point for normal 2.
+  ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 6);
+  vtkDataArray* normals = result.Mesh->GetPointData()->GetNormals();
+  ASSERT_NE(normals, nullptr);
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 2u);
+  EXPECT_EQ(triangles[0], (std::array<vtkIdType, 3>{ 0, 1, 2 }));
+  EXPECT_EQ(triangles[1], (std::array<vtkIdType, 3>{ 4, 3, 5 }));
+  for (vtkIdType point : { 0, 1, 2 })
+  {
+    EXPECT_EQ(normals->GetTuple3(point)[2], 1.0) << point;
+  }
+  for (vtkIdType point : { 3, 4, 5 })
+  {
+    EXPECT_EQ(normals->GetTuple3(point)[1], -1.0) << point;
+  }
+  double p[3];
+  result.Mesh->GetPoint(4, p);
+  EXPECT_EQ(p[0] + p[1] + p[2], 0.0); // the copy of vertex 1
+  result.Mesh->GetPoint(5, p);
+  EXPECT_EQ(p[0], 1.0); // the copy of vertex 2
+}
+
+TEST_F(MeshReaders, ObjIgnoresWhatItDoesNotRender)
+{
+  const ReadResult result = Read(this->Write("noise.obj",
+    "# a comment\r\nmtllib square.mtl\r\no square\r\ng group\r\ns 1\r\nusemtl red\r\n"
+    "v 0 0 0 1\r\nv +1 0 0 0.5 0.5 0.5\r\nv 1 1 0 # corner\r\nv 0 1 0\r\n"
+    "vt 0 0\r\nvt 1 0\r\nvt 1 1\r\nvp 0.5\r\ncstype bezier\r\nl 1 2\r\np 3\r\n"
+    "\r\n   \r\nf 1/1 2/2 3/3 # first\r\nf 1/1 3/3 4/1\r\n"));
+  ExpectUnitSquare(result);
+}
+
+TEST_F(MeshReaders, ObjMixingFacesWithAndWithoutNormalsDropsThemWithAWarning)
+{
+  const ReadResult result = Read(this->Write(
+    "mixed.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 4\n"));
+  ExpectUnitSquare(result);
+  EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
+  ASSERT_EQ(result.Warnings.size(), 1u);
+  EXPECT_NE(result.Warnings[0].find("normals are ignored"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------
+// Hand-made STL
+
+std::string BinaryStl(const std::string& header,
+  std::uint32_t declared,
+  const std::vector<std::array<float, 9>>& triangles)
+{
+  std::string bytes = header;
+  bytes.resize(80, ' ');
+  Put(bytes, declared);
+  for (const auto& triangle : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      Put(bytes, 0.0f); // the facet normal, ignored
+    }
+    for (const float value : triangle)
+    {
+      Put(bytes, value);
+    }
+    Put(bytes, std::uint16_t{ 0 });
+  }
+  return bytes;
+}
+
+const std::vector<std::array<float, 9>> SquareTriangles = {
+  { 0, 0, 0, 1, 0, 0, 1, 1, 0 },
+  { -0.0f, 0, 0, 1, 1, 0, 0, 1, 0 } // -0 welds with +0
+};
+
+TEST_F(MeshReaders, AsciiStlIsWelded)
+{
+  ExpectUnitSquare(Read(this->Write("square.stl",
+    "solid square\n"
+    "  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n"
+    "      vertex 1 1 0\n    endloop\n  endfacet\n"
+    "  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 1 0\n"
+    "      vertex 0 1 0\n    endloop\n  endfacet\n"
+    "endsolid square\n")));
+}
+
+TEST_F(MeshReaders, BinaryStlWhoseHeaderStartsWithSolidIsReadAsBinary)
+{
+  ExpectUnitSquare(Read(this->Write("square.stl", BinaryStl("solid square", 2, SquareTriangles))));
+}
+
+// ---------------------------------------------------------------------------
+// .vtp and .vtk through VTK's readers
+
+// A quad and a 4-point strip over two unit squares, float points and
+// normals, and what a reader must skip: a vertex and a line cell, other
+// point and cell attributes (one with component names, written as METADATA)
+// and field data.
+vtkSmartPointer<vtkPolyData> QuadAndStrip()
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  for (const double x : { 0.0, 1.0, 2.0 })
+  {
+    points->InsertNextPoint(x, 0, 0);
+    points->InsertNextPoint(x, 1, 0);
+  }
+  vtkNew<vtkCellArray> verts;
+  verts->InsertNextCell({ 0 });
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell({ 0, 5 });
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell({ 0, 2, 3, 1 });
+  vtkNew<vtkCellArray> strips;
+  strips->InsertNextCell({ 2, 4, 3, 5 });
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetVerts(verts);
+  mesh->SetLines(lines);
+  mesh->SetPolys(polys);
+  mesh->SetStrips(strips);
+
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("N");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> vectors;
+  vectors->SetName("velocity");
+  vectors->SetNumberOfComponents(3);
+  vectors->SetComponentName(0, "u");
+  vtkNew<vtkIntArray> scalars;
+  scalars->SetName("label");
+  for (vtkIdType i = 0; i < 6; ++i)
+  {
+    normals->InsertNextTuple3(0, 0, 1);
+    vectors->InsertNextTuple3(i, -i, 0.5);
+    scalars->InsertNextValue(static_cast<int>(i));
+  }
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->SetVectors(vectors);
+  mesh->GetPointData()->SetScalars(scalars);
+  vtkNew<vtkFloatArray> cellNormals;
+  cellNormals->SetName("faces");
+  cellNormals->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfCells(); ++i)
+  {
+    cellNormals->InsertNextTuple3(0, 0, 1);
+  }
+  mesh->GetCellData()->SetNormals(cellNormals);
+  vtkNew<vtkIntArray> field;
+  field->SetName("version");
+  field->InsertNextValue(3);
+  mesh->GetFieldData()->AddArray(field);
+  return mesh;
+}
+
+void ExpectQuadAndStrip(const ReadResult& result)
+{
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  const auto triangles = Triangles(result.Mesh);
+  ASSERT_EQ(triangles.size(), 4u);
+  for (const auto& triangle : triangles)
+  {
+    EXPECT_GT(AreaNormal(result.Mesh, triangle)[2], 0.0);
+  }
+  ASSERT_NE(result.Mesh->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(result.Mesh->GetPointData()->GetNormals()->GetTuple3(5)[2], 1.0);
+}
+
+TEST_F(MeshReaders, VtpIsTriangulatedLikeTheRest)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(QuadAndStrip());
+  writer->SetFileName((this->Dir / "mesh.vtp").c_str());
+  ASSERT_TRUE(writer->Write());
+  ExpectQuadAndStrip(Read(this->Dir / "mesh.vtp"));
+}
+
+TEST_F(MeshReaders, LegacyVtkInEveryEncodingAndCellLayout)
+{
+  vtkNew<vtkPolyDataWriter> writer;
+  writer->SetInputData(QuadAndStrip());
+  for (const int type : { VTK_ASCII, VTK_BINARY })
+  {
+    // 4.2: cells as counts and ids; 5.1 (VTK 9's default): offsets and connectivity.
+    for (const auto version : { vtkDataWriter::VTK_LEGACY_READER_VERSION_4_2,
+           vtkDataWriter::VTK_LEGACY_READER_VERSION_5_1 })
+    {
+      SCOPED_TRACE(std::to_string(type) + " " + std::to_string(version));
+      writer->SetFileType(type);
+      writer->SetFileVersion(version);
+      writer->SetFileName((this->Dir / "mesh.VTK").c_str());
+      ASSERT_TRUE(writer->Write());
+      ExpectQuadAndStrip(Read(this->Dir / "mesh.VTK"));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Bad input
+
+TEST_F(MeshReaders, FilesThatCannotBeOpened)
+{
+  this->ExpectError(this->Dir / "missing.obj", { "cannot open: No such file or directory" });
+  fs::create_directory(this->Dir / "folder.ply");
+  this->ExpectError(this->Dir / "folder.ply", { "cannot open: Is a directory" });
+  this->ExpectError(this->Dir / "missing.vtp", { "cannot open: No such file or directory" });
+  EXPECT_EQ(Read(this->Dir / "missing.stl").ErrorCode, vtkErrorCode::FileNotFoundError);
+
+  vtkNew<vtkShadelabMeshReader> reader;
+  Window()->Clear();
+  EXPECT_EQ(reader->GetExecutive()->Update(), 0);
+  EXPECT_NE(Window()->GetFirstError().find("no file name"), std::string::npos);
+}
+
+TEST_F(MeshReaders, UnknownExtensions)
+{
+  this->ExpectError(
+    "points.xyz", "0 0 0\n", { "unknown mesh format \".xyz\" (known: .obj .ply .stl .vtp .vtk)" });
+  this->ExpectError("mesh", "v 0 0 0\n", { "unknown mesh format \"\"" });
+  EXPECT_EQ(Read(this->Dir / "points.xyz").ErrorCode, vtkErrorCode::UnrecognizedFileTypeError);
+}
+
+TEST_F(MeshReaders, AFailedReadLeavesNoMeshFromBefore)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  ASSERT_TRUE(ReadWith(reader, SharedMeshes / "cow.obj").Ok);
+  const ReadResult result = ReadWith(reader, this->Write("bad.obj", "v 0 0 0\nf 1 2 3\n"));
+  EXPECT_FALSE(result.Ok);
+  EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 0);
+  EXPECT_EQ(result.Mesh->GetNumberOfCells(), 0);
+}
+
+TEST_F(MeshReaders, BadObj)
+{
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\n";
+  this->ExpectError("range.obj",
+    square + "\n# c\nf 1 2 99\n",
+    { "line 6: face refers to vertex 99, but only 3 vertices are defined" });
+  this->ExpectError("zero.obj", square + "f 0 1 2\n", { "line 4", "vertex 0" });
+  this->ExpectError("relative.obj", square + "f -1 -2 -4\n", { "line 4", "vertex -4", "only 3" });
+  this->ExpectError("normal.obj",
+    square + "vn 0 0 1\nf 1//1 2//1 3//2\n",
+    { "line 5", "normal 2", "only 1 normals" });
+  this->ExpectError("two.obj", square + "f 1 2\n", { "line 4", "2 vertices", "at least 3" });
+  this->ExpectError(
+    "corner.obj", square + "f 1 2 3x\n", { "line 4", "malformed face vertex '3x'" });
+  this->ExpectError("slashes.obj", square + "f 1/1/1/1 2 3\n", { "malformed face vertex" });
+  this->ExpectError("trailing.obj", square + "f 1/ 2 3\n", { "malformed face vertex" });
+  this->ExpectError("number.obj", "v 0 0 0\nv 1 0,5 0\n", { "line 2", "malformed", "'0,5'" });
+  this->ExpectError("short.obj", "v 0 0\n", { "line 1", "missing vertex coordinate" });
+  this->ExpectError("extra.obj", "v 0 0 0 zero\n", { "line 1", "malformed number 'zero'" });
+  this->ExpectError("nan.obj", square + "v nan 0 0\nf 1 2 4\n", { "NaN coordinate in vertex 4" });
+  this->ExpectError(
+    "inf.obj", "v 0 0 0\nv 0 -inf 0\nv 1 1 0\nf 1 2 3\n", { "infinite coordinate in vertex 2" });
+  this->ExpectError("normalnan.obj", square + "vn 0 nan 1\nf 1//1 2//1 3//1\n", { "NaN normal" });
+  this->ExpectError("empty.obj", "", { "no triangles" });
+  this->ExpectError("lines.obj", square + "l 1 2 3\np 1\n", { "no triangles" });
+  this->ExpectError("binary.obj",
+    std::string("\x7f"
+                "ELF\0\0\x01",
+      7),
+    { "no triangles" });
+}
+
+// The square's header and body for the bad-PLY cases below.
+const std::string AsciiPlyHeader = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                   "property float y\nproperty float z\nelement face 2\n"
+                                   "property list uchar int vertex_indices\nend_header\n";
+const std::string AsciiPlyVertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+
+std::string BinaryPly(std::uint32_t vertices, std::uint32_t faces, const std::string& body)
+{
+  return "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(vertices) +
+    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+    std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n" + body;
+}
+
+std::string BinarySquareBody(float nan = 0.0f)
+{
+  std::string body;
+  for (const float value :
+    { 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, nan, 0.0f, 0.0f, 1.0f, 0.0f })
+  {
+    Put(body, value);
+  }
+  return body;
+}
+
+std::string BinaryTriangle(int a, int b, int c)
+{
+  std::string bytes;
+  Put(bytes, std::uint8_t{ 3 });
+  for (const int index : { a, b, c })
+  {
+    Put(bytes, index);
+  }
+  return bytes;
+}
+
+TEST_F(MeshReaders, BadPly)
+{
+  this->ExpectError("range.ply",
+    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 2 7\n",
+    { "face 1 refers to vertex 7, but only 4 vertices are defined" });
+  this->ExpectError("negative.ply",
+    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 -2 3\n",
+    { "face 1 refers to vertex -2" });
+  this->ExpectError(
+    "two.ply", AsciiPlyHeader + AsciiPlyVertices + "2 0 1\n3 0 2 3\n", { "face 0 has 2 vertices" });
+  this->ExpectError("number.ply",
+    AsciiPlyHeader + "0 0 0\n1 0 0\n1 1 zero\n",
+    { "line 12", "malformed number 'zero'" });
+  this->ExpectError("few.ply", AsciiPlyHeader + "0 0 0\n1 0\n", { "line 11", "missing number" });
+  this->ExpectError(
+    "many.ply", AsciiPlyHeader + "0 0 0 0\n", { "line 10", "unexpected '0' after the values" });
+  this->ExpectError("cut.ply",
+    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n",
+    { "truncated: header declares 2 faces but the file ends after 1" });
+  this->ExpectError("nan.ply",
+    AsciiPlyHeader + "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n3 0 2 3\n",
+    { "NaN coordinate in vertex 2" });
+  this->ExpectError("normal.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 inf 1\n3 0 1 2\n",
+    { "infinite normal in vertex 2" });
+  this->ExpectError("count.ply",
+    "ply\nformat ascii 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\n"
+    "property float z\nend_header\n0 0 0\n",
+    { "header declares 4294967295 vertices, more than a", "-byte file can hold" });
+
+  // Binary: the square with 4 vertices, then faces.
+  const std::string faces = BinaryTriangle(0, 1, 2) + BinaryTriangle(0, 2, 3);
+  ASSERT_TRUE(Read(this->Write("good.ply", BinaryPly(4, 2, BinarySquareBody() + faces))).Ok);
+  this->ExpectError("cut.ply",
+    BinaryPly(4, 2, BinarySquareBody() + faces.substr(0, 20)),
+    { "truncated: header declares 2 faces but the file ends after 1" });
+  this->ExpectError("cutvertices.ply",
+    BinaryPly(4, 0, BinarySquareBody().substr(0, 40)),
+    { "truncated: header declares 4 vertices but the file ends after 3" });
+  this->ExpectError("nan.ply",
+    BinaryPly(4, 2, BinarySquareBody(std::numeric_limits<float>::quiet_NaN()) + faces),
+    { "NaN coordinate in vertex 2" });
+  this->ExpectError("range.ply",
+    BinaryPly(4, 2, BinarySquareBody() + BinaryTriangle(0, 1, 2) + BinaryTriangle(0, 2, 4)),
+    { "face 1 refers to vertex 4, but only 4 vertices are defined" });
+  // A list length that runs past the end allocates nothing for itself.
+  std::string lying = BinarySquareBody() + faces;
+  lying[lying.size() - 13] = static_cast<char>(255);
+  this->ExpectError("list.ply", BinaryPly(4, 2, lying), { "truncated", "2 faces", "after 1" });
+  // 2^32 - 1 faces in a file of a few hundred bytes: refused from the header.
+  const fs::path huge =
+    this->Write("huge.ply", BinaryPly(4, 4294967295u, BinarySquareBody() + faces));
+  this->ExpectError(huge,
+    { ("header declares 4294967295 faces, more than a " + std::to_string(fs::file_size(huge)) +
+      "-byte file can hold")
+        .c_str() });
+}
+
+TEST_F(MeshReaders, BadPlyHeaders)
+{
+  const std::string element = "element vertex 1\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n0 0 0\n";
+  this->ExpectError("magic.ply", "pyl\nformat ascii 1.0\n" + element, { "not a PLY file" });
+  this->ExpectError(
+    "format.ply", "ply\nformat text 1.0\n" + element, { "line 2", "unknown PLY format 'text'" });
+  this->ExpectError("version.ply", "ply\nformat ascii 2.0\n" + element, { "version '2.0'" });
+  this->ExpectError("noformat.ply", "ply\n" + element, { "end_header before any format" });
+  this->ExpectError("type.ply",
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
+    { "line 4", "unknown property type 'real'" });
+  this->ExpectError("keyword.ply",
+    "ply\nformat ascii 1.0\nelemnt vertex 1\nend_header\n",
+    { "line 3", "unknown header line 'elemnt'" });
+  this->ExpectError(
+    "end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", { "no end_header" });
+  this->ExpectError("xyz.ply",
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 "
+    "0\n",
+    { "lacks x, y or z" });
+  this->ExpectError("nofaces.ply",
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int corners\nend_header\n0 0 0\n3 0 0 "
+    "0\n",
+    { "face element has no vertex_indices list" });
+  this->ExpectError("floats.ply",
+    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n"
+    "0 0 0\n3 0 0 0\n",
+    { "does not hold integers" });
+  this->ExpectError("novertex.ply", "ply\nformat ascii 1.0\nend_header\n", { "no vertex element" });
+  this->ExpectError("points.ply", "ply\nformat ascii 1.0\n" + element, { "no triangles" });
+}
+
+TEST_F(MeshReaders, BadStl)
+{
+  // 2^32 - 1 triangles declared in a 200-byte file: refused from the size.
+  std::string lying = BinaryStl("binary", 4294967295u, SquareTriangles);
+  lying.resize(200, '\0');
+  this->ExpectError(
+    "lying.stl", lying, { "header declares 4294967295 triangles", "but the file has 200 bytes" });
+  this->ExpectError(
+    "short.stl", BinaryStl("solid but binary", 3, SquareTriangles), { "declares 3 triangles" });
+  this->ExpectError("tiny.stl", "abc", { "not an STL file" });
+  this->ExpectError("nan.stl",
+    BinaryStl("x",
+      2,
+      { SquareTriangles[0], { 0, 0, 0, 1, 1, 0, 0, std::numeric_limits<float>::infinity(), 0 } }),
+    { "infinite coordinate in triangle 1" });
+
+  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                            "vertex 1 1 0\nendloop\nendfacet\n";
+  this->ExpectError("noend.stl", "solid s\n" + facet, { "truncated", "endsolid" });
+  this->ExpectError("cut.stl", "solid s\n" + facet.substr(0, 43), { "truncated", "triangle 0" });
+  this->ExpectError("loop.stl",
+    "solid s\nfacet normal 0 0 1\nvertex 0 0 0\n",
+    { "line 3", "expected 'outer loop', found 'vertex'" });
+  this->ExpectError("nan.stl",
+    "solid s\n" + facet + facet.substr(0, 50) + "nan 0 0\n",
+    { "line 12", "NaN coordinate in triangle 1" });
+  this->ExpectError("number.stl",
+    "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 O\n",
+    { "line 4", "malformed vertex coordinate 'O'" });
+  this->ExpectError("empty.stl", "solid s\nendsolid s\n", { "no triangles" });
+}
+
+TEST_F(MeshReaders, BadLegacyVtk)
+{
+  const std::string header = "# vtk DataFile Version 3.0\nsquare\nASCII\nDATASET POLYDATA\n";
+  const std::string points = "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n";
+  ASSERT_TRUE(
+    Read(this->Write("good.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")).Ok);
+  // Each of these crashed, over-read or half-read VTK 9.1's vtkPolyDataReader.
+  this->ExpectError("cut.vtk",
+    header + points + "POLYGONS 2 8\n3 0 1 2\n",
+    { "truncated: POLYGONS declares 8 values but the file ends after 4" });
+  this->ExpectError("cell.vtk",
+    header + points + "POLYGONS 2 8\n3 0 1 2\n9 0 2 3\n",
+    { "POLYGONS cell 1 does not fit the section's 8 values" });
+  this->ExpectError("size.vtk",
+    header + points + "POLYGONS 2 99999999999\n3 0 1 2\n",
+    { "POLYGONS declares 99999999999 values, more than a", "-byte file can hold" });
+  this->ExpectError("normals.vtk",
+    header + points +
+      "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\nPOINT_DATA 4\nNORMALS n float\n0 0 1 0 0 1\n",
+    { "truncated: NORMALS declares 4 normals but the file ends after 2" });
+  this->ExpectError("count.vtk",
+    header + "POINTS 99999999999 float\n0 0 0\n",
+    { "POINTS declares 99999999999 points, more than a" });
+  this->ExpectError("binary.vtk",
+    "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 4 float\n" +
+      std::string(4, '\0'),
+    { "truncated: POINTS declares 4 points but the file ends after 0" });
+  this->ExpectError("offsets.vtk",
+    "# vtk DataFile Version 5.1\nsquare\nASCII\nDATASET POLYDATA\n" + points +
+      "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 7\nCONNECTIVITY vtktypeint64\n0 1 2 0 2 3\n",
+    { "POLYGONS offsets do not run from 0 up to its 6 connectivity entries" });
+  this->ExpectError("index.vtk",
+    header + points + "POLYGONS 2 8\n3 0 1 2\n3 0 2 4\n",
+    { "face 1 refers to vertex 4, but only 4 vertices are defined" });
+  this->ExpectError("value.vtk",
+    header + "POINTS 4 float\n0 0 0 1 0 0 1 one 0 0 1 0\n",
+    { "line 6", "malformed value 'one' in POINTS" });
+  this->ExpectError("data.vtk",
+    header + points + "POINT_DATA 3\n",
+    { "POINT_DATA declares 3 values for 4 points" });
+  this->ExpectError(
+    "keyword.vtk", header + points + "POLYGON 2 8\n", { "line 7", "unexpected 'polygon'" });
+  this->ExpectError("string.vtk",
+    header + points + "FIELD f 1\nnames 1 1 string\nx\n",
+    { "unsupported data type 'string'" });
+  this->ExpectError("grid.vtk",
+    "# vtk DataFile Version 3.0\ngrid\nASCII\nDATASET STRUCTURED_POINTS\n"
+    "DIMENSIONS 2 2 1\nORIGIN 0 0 0\nSPACING 1 1 1\n",
+    { "STRUCTURED_POINTS", "not POLYDATA" });
+  this->ExpectError("magic.vtk", "garbage", { "not a legacy VTK file" });
+  this->ExpectError("lines.vtk", header + points + "LINES 1 3\n2 0 1\n", { "no triangles" });
+}
+
+TEST_F(MeshReaders, BadVtp)
+{
+  this->ExpectError("garbage.vtp", "this is not XML", { "Error parsing XML" });
+
+  vtkNew<vtkPolyData> lines;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  lines->SetPoints(points);
+  vtkNew<vtkCellArray> cells;
+  cells->InsertNextCell({ 0, 1 });
+  lines->SetLines(cells);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(lines);
+  writer->SetFileName((this->Dir / "nan.vtp").c_str());
+  ASSERT_TRUE(writer->Write());
+  this->ExpectError(this->Dir / "nan.vtp", { "NaN coordinate in vertex 1" });
+
+  points->SetPoint(1, 1, 0, 0);
+  writer->SetFileName((this->Dir / "lines.vtp").c_str());
+  ASSERT_TRUE(writer->Write());
+  this->ExpectError(this->Dir / "lines.vtp", { "no triangles" });
+}
+}

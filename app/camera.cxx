@@ -61,8 +61,7 @@ std::string ApplyCamera(
     position[1] = focal[1];
     position[2] = focal[2] + distance;
   }
-  double direction[3] = { focal[0] - position[0], focal[1] - position[1],
-    focal[2] - position[2] };
+  double direction[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
   if (vtkMath::Normalize(direction) == 0)
   {
     return "the camera position is the focal point";

@@ -61,9 +61,9 @@ std::unique_ptr<OIIO::ImageOutput> Open(
   if (!out)
   {
     const std::string ext = std::filesystem::path(path).extension().string();
-    error = ext.empty() ? "no file extension to choose an image format by"
-                        : "no image format for \"" + ext + "\" (OpenImageIO: " +
-        OneLine(OIIO::geterror()) + ")";
+    error = ext.empty()
+      ? "no file extension to choose an image format by"
+      : "no image format for \"" + ext + "\" (OpenImageIO: " + OneLine(OIIO::geterror()) + ")";
     return nullptr;
   }
   const std::string temporary = TemporaryName(path);
@@ -94,41 +94,38 @@ std::unique_ptr<OIIO::ImageOutput> Open(
   return out;
 }
 
-template <typename T>
-std::vector<T> Quantise(const FloatImage& image, double scale)
+// The picture as top-down RGB of type T, each value through convert.
+template <typename T, typename Convert>
+std::vector<T> ToTopDownRgb(const FloatImage& image, Convert convert)
 {
   std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * 3);
   for (int y = 0; y < image.Height; ++y)
   {
-    const float* src = image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
+    const float* src =
+      image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
     T* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
     for (int x = 0; x < image.Width; ++x)
     {
       for (int c = 0; c < 3; ++c)
       {
-        const double v = src[4 * x + c];
-        // NaN compares false and lands on 0.
-        const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
-        dst[3 * x + c] = static_cast<T>(std::floor(scale * clamped + 0.5));
+        dst[3 * x + c] = convert(src[4 * x + c]);
       }
     }
   }
   return out;
 }
 
-std::vector<float> FlipToRgb(const FloatImage& image)
+// round(scale*clamp(I, 0, 1)), the contract's rule for integer files.
+template <typename T>
+std::vector<T> Quantise(const FloatImage& image, double scale)
 {
-  std::vector<float> out(static_cast<size_t>(image.Width) * image.Height * 3);
-  for (int y = 0; y < image.Height; ++y)
-  {
-    const float* src = image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
-    float* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
-    for (int x = 0; x < image.Width; ++x)
+  return ToTopDownRgb<T>(image,
+    [scale](double v)
     {
-      std::copy(src + 4 * x, src + 4 * x + 3, dst + 3 * x);
-    }
-  }
-  return out;
+      // NaN compares false and lands on 0.
+      const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
+      return static_cast<T>(std::floor(scale * clamped + 0.5));
+    });
 }
 }
 
@@ -165,7 +162,8 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
       break;
     case PixelType::Half:
     case PixelType::Float:
-      written = out->write_image(OIIO::TypeDesc::FLOAT, FlipToRgb(image).data());
+      written = out->write_image(
+        OIIO::TypeDesc::FLOAT, ToTopDownRgb<float>(image, [](float v) { return v; }).data());
       break;
     default:
       written = out->write_image(OIIO::TypeDesc::UINT8, Quantise<uint8_t>(image, 255).data());

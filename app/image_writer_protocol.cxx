@@ -14,12 +14,13 @@ namespace
 constexpr uint32_t Magic = 0x53484c31; // "SHL1"
 constexpr uint64_t MaxText = 1 << 24;
 
-bool WriteAll(int fd, const void* data, size_t size)
+// Moves size bytes through read or write, across partial transfers and EINTR.
+template <typename Call, typename Byte>
+bool Transfer(Call call, int fd, Byte* p, size_t size)
 {
-  const char* p = static_cast<const char*>(data);
   while (size > 0)
   {
-    const ssize_t n = write(fd, p, size);
+    const ssize_t n = call(fd, p, size);
     if (n < 0 && errno == EINTR)
     {
       continue;
@@ -34,24 +35,14 @@ bool WriteAll(int fd, const void* data, size_t size)
   return true;
 }
 
+bool WriteAll(int fd, const void* data, size_t size)
+{
+  return Transfer(::write, fd, static_cast<const char*>(data), size);
+}
+
 bool ReadAll(int fd, void* data, size_t size)
 {
-  char* p = static_cast<char*>(data);
-  while (size > 0)
-  {
-    const ssize_t n = read(fd, p, size);
-    if (n < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (n <= 0)
-    {
-      return false;
-    }
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
+  return Transfer(::read, fd, static_cast<char*>(data), size);
 }
 
 template <typename T>

@@ -58,8 +58,8 @@ Vec3 ParseDirection(const std::string& text)
 // Registers an option whose text goes through parse() into target; a
 // parse failure becomes CLI11's validation error, naming the option.
 template <typename T, typename Parse>
-CLI::Option* AddParsed(CLI::App& command, const std::string& name, T& target, Parse parse,
-  const std::string& help)
+CLI::Option* AddParsed(
+  CLI::App& command, const std::string& name, T& target, Parse parse, const std::string& help)
 {
   return command.add_option_function<std::string>(
     name,
@@ -130,9 +130,8 @@ ImageSize ParseSize(const std::string& text)
   if (width < 1 || height < 1 || width > MaxImageSide || height > MaxImageSide ||
     static_cast<long long>(width) * height > MaxImagePixels)
   {
-    throw std::invalid_argument("'" + text + "' is outside 1x1 to " +
-      std::to_string(MaxImageSide) + " a side and " + std::to_string(MaxImagePixels) +
-      " pixels in all");
+    throw std::invalid_argument("'" + text + "' is outside 1x1 to " + std::to_string(MaxImageSide) +
+      " a side and " + std::to_string(MaxImagePixels) + " pixels in all");
   }
   return { width, height };
 }
@@ -147,8 +146,8 @@ Light ParseLight(const std::string& text)
   {
     if (parts.size() < 2 || parts.size() > 3)
     {
-      throw std::invalid_argument(
-        "'" + text + "' is not " + kind + (kind == "point" ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
+      throw std::invalid_argument("'" + text + "' is not " + kind +
+        (kind == "point" ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
     }
     light.Kind = kind == "point" ? LightKind::Point : LightKind::Directional;
     if (light.Kind == LightKind::Point)
@@ -265,8 +264,7 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   AddParsed(command, "--kd", o.Kd, ParseRgb, "Diffuse coefficients")->option_text("R,G,B");
   AddParsed(command, "--ks", o.Ks, ParseRgb, "Specular coefficients")->option_text("R,G,B");
   AddParsed(
-    command, "--ns", o.Ns,
-    [](const std::string& t) { return NonNegative(ParseNumber(t), t); },
+    command, "--ns", o.Ns, [](const std::string& t) { return NonNegative(ParseNumber(t), t); },
     "Specular exponent")
     ->option_text("X");
   AddParsed(command, "--ambient", o.Ambient, ParseRgb, "Ambient light Ia (default 0.2,0.2,0.2)")
@@ -299,11 +297,11 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
     ->option_text("WxH");
   AddParsed(command, "--camera-position", o.CameraPosition, ParseVec3, "Camera position")
     ->option_text("X,Y,Z");
-  AddParsed(command, "--camera-focal-point", o.CameraFocalPoint, ParseVec3,
-    "Point the camera looks at")
+  AddParsed(
+    command, "--camera-focal-point", o.CameraFocalPoint, ParseVec3, "Point the camera looks at")
     ->option_text("X,Y,Z");
-  AddParsed(command, "--camera-view-up", o.CameraViewUp, ParseDirection,
-    "Up direction (default 0,1,0)")
+  AddParsed(
+    command, "--camera-view-up", o.CameraViewUp, ParseDirection, "Up direction (default 0,1,0)")
     ->option_text("X,Y,Z");
   AddParsed(
     command, "--view-angle", o.ViewAngle,
@@ -338,8 +336,8 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   const std::map<std::string, NormalsMode> modes{ { "auto", NormalsMode::Auto },
     { "file", NormalsMode::File }, { "compute", NormalsMode::Compute } };
   command
-    .add_option("--normals", o.Normals,
-      "auto: the file's normals if it has them, else computed (default)")
+    .add_option(
+      "--normals", o.Normals, "auto: the file's normals if it has them, else computed (default)")
     ->transform(CLI::CheckedTransformer(modes))
     ->option_text("auto|file|compute");
   // uniform and area are VTK's filters until the OpenMesh normals filter

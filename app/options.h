@@ -18,9 +18,9 @@ namespace shadelab
 {
 enum class NormalsMode
 {
-  Auto,    // the file's normals when it has them, else computed
-  File,    // the file's normals; an error when it has none
-  Compute  // always computed
+  Auto,   // the file's normals when it has them, else computed
+  File,   // the file's normals; an error when it has none
+  Compute // always computed
 };
 
 enum class PixelType

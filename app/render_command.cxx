@@ -96,8 +96,7 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
 
   const auto metadata =
     DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera());
-  if (const std::string error = writer.Write(o.Output, image, o.Pixels, metadata);
-      !error.empty())
+  if (const std::string error = writer.Write(o.Output, image, o.Pixels, metadata); !error.empty())
   {
     return ReportError(o.Output, error);
   }

@@ -46,9 +46,9 @@ void vtkShadelabOSMesaRenderWindow::Initialize()
   {
     return;
   }
-  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-    OSMESA_STENCIL_BITS, 8, OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-    OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 2, 0 };
+  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS,
+    8, OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+    OSMESA_CONTEXT_MINOR_VERSION, 2, 0 };
   this->Context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!this->Context)
   {

@@ -20,8 +20,8 @@ namespace shadelab
 class MeshReadError : public std::runtime_error
 {
 public:
-  explicit MeshReadError(const std::string& message,
-    unsigned long code = vtkErrorCode::FileFormatError)
+  explicit MeshReadError(
+    const std::string& message, unsigned long code = vtkErrorCode::FileFormatError)
     : std::runtime_error(message)
     , Code(code)
   {

@@ -9,7 +9,7 @@ namespace shadelab
 {
 namespace
 {
-template<typename T>
+template <typename T>
 double Load(const unsigned char* bytes, bool bigEndian)
 {
   T value;

@@ -15,7 +15,7 @@ bool IsSpace(char c)
   return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-template<typename T>
+template <typename T>
 bool ParseWhole(std::string_view token, T& value)
 {
   // from_chars takes no '+' sign, which some writers put before exponents'

@@ -23,8 +23,8 @@ namespace shadelab
 {
 namespace
 {
-vtkSmartPointer<vtkCellArray> MakeCells(const std::vector<vtkIdType>& offsets,
-  const std::vector<vtkIdType>& ids)
+vtkSmartPointer<vtkCellArray> MakeCells(
+  const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& ids)
 {
   vtkNew<vtkIdTypeArray> offsetArray;
   offsetArray->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
@@ -75,9 +75,8 @@ vtkSmartPointer<vtkDoubleArray> DoublePoints(vtkPolyData* polygons, vtkIdType fi
   return xyz;
 }
 
-vtkSmartPointer<vtkFloatArray> FloatNormals(vtkPolyData* polygons,
-  vtkIdType pointCount,
-  vtkIdType firstNumber)
+vtkSmartPointer<vtkFloatArray> FloatNormals(
+  vtkPolyData* polygons, vtkIdType pointCount, vtkIdType firstNumber)
 {
   vtkDataArray* normals = polygons->GetPointData()->GetNormals();
   if (!normals)
@@ -143,12 +142,8 @@ void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtk
 // Ear cutting keeps the polygon's orientation and handles concave polygons;
 // where it gives up (zero area, repeated or collinear vertices) a fan keeps
 // the face's vertices connected, with degenerate triangles as the face was.
-void AddPolygon(vtkIdType size,
-  const vtkIdType* ids,
-  vtkPoints* points,
-  vtkPolygon* polygon,
-  vtkIdList* local,
-  vtkCellArray* triangles)
+void AddPolygon(vtkIdType size, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
+  vtkIdList* local, vtkCellArray* triangles)
 {
   polygon->GetPointIds()->SetNumberOfIds(size);
   polygon->GetPoints()->SetNumberOfPoints(size);

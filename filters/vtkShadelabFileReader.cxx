@@ -89,9 +89,8 @@ void vtkShadelabFileReader::CheckReadable(const char* fileName)
   Open(fileName, size);
 }
 
-int vtkShadelabFileReader::RequestData(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outputVector)
+int vtkShadelabFileReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   this->SetErrorCode(vtkErrorCode::NoError);
   try

@@ -33,8 +33,7 @@ protected:
   vtkShadelabFileReader();
   ~vtkShadelabFileReader() override;
 
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   /** Reads `fileName` into `triangles`, or throws shadelab::MeshReadError. */

@@ -35,28 +35,17 @@ struct TypeName
 // vtkDataWriter's type names, lower-cased as vtkDataReader compares them.
 // vtkIdType is written as a 32-bit int; long is the writer's 64-bit long.
 constexpr TypeName TypeNames[] = { { "char", ScalarType::Int8 },
-  { "signed_char", ScalarType::Int8 },
-  { "unsigned_char", ScalarType::UInt8 },
-  { "short", ScalarType::Int16 },
-  { "unsigned_short", ScalarType::UInt16 },
-  { "int", ScalarType::Int32 },
-  { "unsigned_int", ScalarType::UInt32 },
-  { "long", ScalarType::Int64 },
-  { "unsigned_long", ScalarType::UInt64 },
-  { "long_long", ScalarType::Int64 },
-  { "unsigned_long_long", ScalarType::UInt64 },
-  { "vtkidtype", ScalarType::Int32 },
-  { "float", ScalarType::Float32 },
-  { "double", ScalarType::Float64 },
-  { "vtktypeint8", ScalarType::Int8 },
-  { "vtktypeuint8", ScalarType::UInt8 },
-  { "vtktypeint16", ScalarType::Int16 },
-  { "vtktypeuint16", ScalarType::UInt16 },
-  { "vtktypeint32", ScalarType::Int32 },
-  { "vtktypeuint32", ScalarType::UInt32 },
-  { "vtktypeint64", ScalarType::Int64 },
-  { "vtktypeuint64", ScalarType::UInt64 },
-  { "vtktypefloat32", ScalarType::Float32 },
+  { "signed_char", ScalarType::Int8 }, { "unsigned_char", ScalarType::UInt8 },
+  { "short", ScalarType::Int16 }, { "unsigned_short", ScalarType::UInt16 },
+  { "int", ScalarType::Int32 }, { "unsigned_int", ScalarType::UInt32 },
+  { "long", ScalarType::Int64 }, { "unsigned_long", ScalarType::UInt64 },
+  { "long_long", ScalarType::Int64 }, { "unsigned_long_long", ScalarType::UInt64 },
+  { "vtkidtype", ScalarType::Int32 }, { "float", ScalarType::Float32 },
+  { "double", ScalarType::Float64 }, { "vtktypeint8", ScalarType::Int8 },
+  { "vtktypeuint8", ScalarType::UInt8 }, { "vtktypeint16", ScalarType::Int16 },
+  { "vtktypeuint16", ScalarType::UInt16 }, { "vtktypeint32", ScalarType::Int32 },
+  { "vtktypeuint32", ScalarType::UInt32 }, { "vtktypeint64", ScalarType::Int64 },
+  { "vtktypeuint64", ScalarType::UInt64 }, { "vtktypefloat32", ScalarType::Float32 },
   { "vtktypefloat64", ScalarType::Float64 } };
 
 // vtkDataReader compares keywords and type names in any case; messages
@@ -139,28 +128,18 @@ private:
       token.empty() ? "missing data type" : "unsupported data type " + Quote(token));
   }
 
-  void CheckFits(const std::string& section,
-    std::uint64_t count,
-    const char* noun,
-    std::uint64_t valuesEach,
-    ScalarType type) const;
-  template<class Store>
-  void ReadValues(const std::string& section,
-    std::uint64_t count,
-    const char* noun,
-    std::uint64_t valuesEach,
-    ScalarType type,
-    Store&& store);
-  void Skip(const std::string& section,
-    std::uint64_t count,
-    std::uint64_t valuesEach,
-    ScalarType type)
+  void CheckFits(const std::string& section, std::uint64_t count, const char* noun,
+    std::uint64_t valuesEach, ScalarType type) const;
+  template <class Store>
+  void ReadValues(const std::string& section, std::uint64_t count, const char* noun,
+    std::uint64_t valuesEach, ScalarType type, Store&& store);
+  void Skip(
+    const std::string& section, std::uint64_t count, std::uint64_t valuesEach, ScalarType type)
   {
     this->ReadValues(section, count, "values", valuesEach, type, [](std::uint64_t, double) {});
   }
-  void ReadCells(const std::string& section,
-    std::vector<vtkIdType>& offsets,
-    std::vector<vtkIdType>& ids);
+  void ReadCells(
+    const std::string& section, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids);
   std::string ReadAttributes(std::uint64_t count, shadelab::PolygonMesh* mesh);
   void SkipField();
   void SkipMetadata();
@@ -175,11 +154,8 @@ private:
 // A count that the whole file could not hold is refused before anything is
 // read or allocated: a binary value takes its size, an ASCII one a digit and
 // a separator.
-void LegacyParser::CheckFits(const std::string& section,
-  std::uint64_t count,
-  const char* noun,
-  std::uint64_t valuesEach,
-  ScalarType type) const
+void LegacyParser::CheckFits(const std::string& section, std::uint64_t count, const char* noun,
+  std::uint64_t valuesEach, ScalarType type) const
 {
   const std::uint64_t itemBytes = valuesEach * (this->Binary ? shadelab::SizeOf(type) : 2);
   if (itemBytes > 0 && count > this->Bytes.size() / itemBytes)
@@ -191,13 +167,9 @@ void LegacyParser::CheckFits(const std::string& section,
 
 // Reads count * valuesEach values of `type` and hands each to store(index,
 // value); binary data starts on the line after its section's.
-template<class Store>
-void LegacyParser::ReadValues(const std::string& section,
-  std::uint64_t count,
-  const char* noun,
-  std::uint64_t valuesEach,
-  ScalarType type,
-  Store&& store)
+template <class Store>
+void LegacyParser::ReadValues(const std::string& section, std::uint64_t count, const char* noun,
+  std::uint64_t valuesEach, ScalarType type, Store&& store)
 {
   this->Scanner.ExpectLineEnd(("the " + section + " line").c_str());
   this->CheckFits(section, count, noun, valuesEach, type);
@@ -246,9 +218,8 @@ void LegacyParser::ReadValues(const std::string& section,
 // Before version 5: "SECTION cells size", then size ints, each cell its
 // vertex count and its vertices. Since: "SECTION offsetCount idCount", then
 // OFFSETS and CONNECTIVITY arrays.
-void LegacyParser::ReadCells(const std::string& section,
-  std::vector<vtkIdType>& offsets,
-  std::vector<vtkIdType>& ids)
+void LegacyParser::ReadCells(
+  const std::string& section, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids)
 {
   const std::uint64_t first = this->Count("cell count");
   const std::uint64_t second = this->Count("size");
@@ -353,11 +324,7 @@ std::string LegacyParser::ReadAttributes(std::uint64_t count, shadelab::PolygonM
       this->Name("NORMALS");
       const ScalarType type = this->Type();
       mesh->Normals.reserve(3 * count); // count is the point count, checked against the file
-      this->ReadValues("NORMALS",
-        count,
-        "normals",
-        3,
-        type,
+      this->ReadValues("NORMALS", count, "normals", 3, type,
         [mesh](std::uint64_t, double value)
         { mesh->Normals.push_back(static_cast<float>(value)); });
     }
@@ -488,11 +455,7 @@ shadelab::PolygonMesh LegacyParser::Parse()
       const ScalarType type = this->Type();
       this->CheckFits("POINTS", this->PointCount, "points", 3, type);
       mesh.Points.reserve(3 * this->PointCount);
-      this->ReadValues("POINTS",
-        this->PointCount,
-        "points",
-        3,
-        type,
+      this->ReadValues("POINTS", this->PointCount, "points", 3, type,
         [&mesh](std::uint64_t, double value) { mesh.Points.push_back(value); });
       hasPoints = true;
     }

@@ -90,7 +90,7 @@ private:
   std::string First;
 };
 
-template<class Reader>
+template <class Reader>
 void ReadWith(const char* fileName, vtkPolyData* triangles)
 {
   vtkNew<Reader> reader;

@@ -34,10 +34,7 @@ struct ObjData
 };
 
 // A 1-based or negative (relative) OBJ index as a 0-based one.
-vtkIdType Resolve(long long index,
-  std::size_t defined,
-  const char* kind,
-  const char* kinds,
+vtkIdType Resolve(long long index, std::size_t defined, const char* kind, const char* kinds,
   const TextScanner& scanner)
 {
   if (index == 0)

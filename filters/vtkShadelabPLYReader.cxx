@@ -32,22 +32,12 @@ struct ScalarName
   Scalar Type;
 };
 
-constexpr ScalarName ScalarNames[] = { { "char", Scalar::Int8 },
-  { "int8", Scalar::Int8 },
-  { "uchar", Scalar::UInt8 },
-  { "uint8", Scalar::UInt8 },
-  { "short", Scalar::Int16 },
-  { "int16", Scalar::Int16 },
-  { "ushort", Scalar::UInt16 },
-  { "uint16", Scalar::UInt16 },
-  { "int", Scalar::Int32 },
-  { "int32", Scalar::Int32 },
-  { "uint", Scalar::UInt32 },
-  { "uint32", Scalar::UInt32 },
-  { "float", Scalar::Float32 },
-  { "float32", Scalar::Float32 },
-  { "double", Scalar::Float64 },
-  { "float64", Scalar::Float64 } };
+constexpr ScalarName ScalarNames[] = { { "char", Scalar::Int8 }, { "int8", Scalar::Int8 },
+  { "uchar", Scalar::UInt8 }, { "uint8", Scalar::UInt8 }, { "short", Scalar::Int16 },
+  { "int16", Scalar::Int16 }, { "ushort", Scalar::UInt16 }, { "uint16", Scalar::UInt16 },
+  { "int", Scalar::Int32 }, { "int32", Scalar::Int32 }, { "uint", Scalar::UInt32 },
+  { "uint32", Scalar::UInt32 }, { "float", Scalar::Float32 }, { "float32", Scalar::Float32 },
+  { "double", Scalar::Float64 }, { "float64", Scalar::Float64 } };
 
 // What the reader does with a property's values; X .. NZ in this order.
 enum class Use
@@ -382,8 +372,7 @@ public:
   /** Skips a whole element by its sizes: in one step when it has no lists. */
   void SkipItems(const Element& element)
   {
-    const bool fixed = std::none_of(element.Properties.begin(),
-      element.Properties.end(),
+    const bool fixed = std::none_of(element.Properties.begin(), element.Properties.end(),
       [](const Property& property) { return property.IsList; });
     if (fixed)
     {
@@ -467,7 +456,7 @@ private:
   TextScanner& Scanner;
 };
 
-template<class Source>
+template <class Source>
 void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& mesh)
 {
   if (element.Role == Kind::Other)
@@ -478,8 +467,7 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
   const bool strips = element.Role == Kind::Strips;
   std::vector<vtkIdType>& offsets = strips ? mesh.StripOffsets : mesh.FaceOffsets;
   std::vector<vtkIdType>& ids = strips ? mesh.StripIds : mesh.FaceIds;
-  const bool hasNormals = std::any_of(element.Properties.begin(),
-    element.Properties.end(),
+  const bool hasNormals = std::any_of(element.Properties.begin(), element.Properties.end(),
     [](const Property& property) { return property.Role == Use::NX; });
   if (element.Role == Kind::Vertex)
   {

@@ -138,9 +138,8 @@ void ReadBinary(std::string_view bytes, Welder& welder)
 }
 
 // Moves to the next line and checks that it starts with `words`.
-void ExpectLine(TextScanner& scanner,
-  std::initializer_list<std::string_view> words,
-  std::uint64_t triangle)
+void ExpectLine(
+  TextScanner& scanner, std::initializer_list<std::string_view> words, std::uint64_t triangle)
 {
   std::string expected;
   for (const std::string_view word : words)

@@ -103,6 +103,16 @@ Image ReadImage(const std::filesystem::path& path)
   return image;
 }
 
+size_t CountCovered(const Image& image)
+{
+  size_t covered = 0;
+  for (size_t i = 0; i < image.Pixels.size(); i += image.Channels)
+  {
+    covered += image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
+  }
+  return covered;
+}
+
 std::filesystem::path SharedMesh(const std::string& name)
 {
   return std::filesystem::path(SHADELAB_SHARED_DIR) / "data" / "meshes" / name;

@@ -46,6 +46,9 @@ struct Image
 /** Reads an image through OpenImageIO; Width 0 when it cannot. */
 Image ReadImage(const std::filesystem::path& path);
 
+/** Pixels that are not black: the mesh's coverage on the default background. */
+size_t CountCovered(const Image& image);
+
 /** The shared meshes (../shared/data/meshes). */
 std::filesystem::path SharedMesh(const std::string& name);
 

@@ -36,7 +36,8 @@ std::vector<std::string> WithMesh(const TempDir& dir, const std::string& name,
   return args;
 }
 
-const std::string Tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+const std::string Tetrahedron =
+  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
 std::string BinaryPlyHeader(const std::string& counts)
 {
@@ -46,51 +47,174 @@ std::string BinaryPlyHeader(const std::string& counts)
 }
 
 const BadCase Cases[] = {
-  { "MissingFile", [](const TempDir& d) { return std::vector<std::string>{ (d / "nope.obj").string(), "-o", "OUT" }; }, 1, { "nope.obj", "No such file" } },
-  { "UnknownMeshFormat", [](const TempDir& d) { return WithMesh(d, "mesh.xyz", "1 2 3\n"); }, 1, { "mesh.xyz", ".xyz" } },
-  { "EmptyObj", [](const TempDir& d) { return WithMesh(d, "empty.obj", ""); }, 1, { "empty.obj", "triangles" } },
-  { "ObjOnlyVertices", [](const TempDir& d) { return WithMesh(d, "points.obj", "v 0 0 0\nv 1 0 0\n"); }, 1, { "points.obj", "triangles" } },
-  { "ObjNaNCoordinate", [](const TempDir& d) { return WithMesh(d, "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"); }, 1, { "nan.obj" } },
-  { "ObjIndexOutOfRange", [](const TempDir& d) { return WithMesh(d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"); }, 1, { "range.obj", "9" } },
-  { "ObjZeroIndex", [](const TempDir& d) { return WithMesh(d, "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); }, 1, { "zero.obj" } },
-  { "ObjMalformedNumber", [](const TempDir& d) { return WithMesh(d, "garbage.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"); }, 1, { "garbage.obj", "line 2" } },
-  { "PlyTruncated", [](const TempDir& d) {
+  { "MissingFile",
+    [](const TempDir& d) {
+      return std::vector<std::string>{ (d / "nope.obj").string(), "-o", "OUT" };
+    },
+    1, { "nope.obj", "No such file" } },
+  { "UnknownMeshFormat", [](const TempDir& d) { return WithMesh(d, "mesh.xyz", "1 2 3\n"); }, 1,
+    { "mesh.xyz", ".xyz" } },
+  { "EmptyObj", [](const TempDir& d) { return WithMesh(d, "empty.obj", ""); }, 1,
+    { "empty.obj", "triangles" } },
+  { "ObjOnlyVertices",
+    [](const TempDir& d) { return WithMesh(d, "points.obj", "v 0 0 0\nv 1 0 0\n"); }, 1,
+    { "points.obj", "triangles" } },
+  { "ObjNaNCoordinate",
+    [](const TempDir& d)
+    { return WithMesh(d, "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"); },
+    1, { "nan.obj" } },
+  { "ObjIndexOutOfRange",
+    [](const TempDir& d)
+    { return WithMesh(d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"); },
+    1, { "range.obj", "9" } },
+  { "ObjZeroIndex",
+    [](const TempDir& d)
+    { return WithMesh(d, "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); },
+    1, { "zero.obj" } },
+  { "ObjMalformedNumber",
+    [](const TempDir& d)
+    { return WithMesh(d, "garbage.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"); },
+    1, { "garbage.obj", "line 2" } },
+  { "PlyTruncated",
+    [](const TempDir& d)
+    {
       std::string ply = BinaryPlyHeader("element vertex 3\n");
       const float v[6] = { 0, 0, 0, 1, 0, 0 }; // two of three vertices
-      return WithMesh(d, "short.ply", ply + Binary(v, sizeof v)); }, 1, { "short.ply" } },
-  { "PlyLyingHeader", [](const TempDir& d) {
-      return WithMesh(d, "liar.ply", BinaryPlyHeader("element vertex 4000000000\n")); }, 1, { "liar.ply", "4000000000" } },
-  { "StlTruncated", [](const TempDir& d) {
+      return WithMesh(d, "short.ply", ply + Binary(v, sizeof v));
+    },
+    1, { "short.ply" } },
+  { "PlyLyingHeader",
+    [](const TempDir& d)
+    { return WithMesh(d, "liar.ply", BinaryPlyHeader("element vertex 4000000000\n")); },
+    1, { "liar.ply", "4000000000" } },
+  { "StlTruncated",
+    [](const TempDir& d)
+    {
       std::string stl(80, ' ');
       const uint32_t count = 1000000;
       stl += Binary(&count, 4) + std::string(100, '\0');
-      return WithMesh(d, "short.stl", stl); }, 1, { "short.stl" } },
-  { "UnknownImageFormat", [](const TempDir& d) {
+      return WithMesh(d, "short.stl", stl);
+    },
+    1, { "short.stl" } },
+  { "UnknownImageFormat",
+    [](const TempDir& d)
+    {
       WriteText(d / "t.obj", Tetrahedron);
-      return std::vector<std::string>{ (d / "t.obj").string(), "-o", (d / "out.notaformat").string() }; }, 1, { "out.notaformat", "format" } },
-  { "UnwritableFolder", [](const TempDir& d) {
+      return std::vector<std::string>{ (d / "t.obj").string(), "-o",
+        (d / "out.notaformat").string() };
+    },
+    1, { "out.notaformat", "format" } },
+  { "UnwritableFolder",
+    [](const TempDir& d)
+    {
       WriteText(d / "t.obj", Tetrahedron);
-      return std::vector<std::string>{ (d / "t.obj").string(), "-o", (d / "no" / "such" / "dir.png").string() }; }, 1, { "dir.png", "cannot write" } },
-  { "FloatIntoJpeg", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--pixel-type", "float" }); }, 1, { "OUT", "float" } },
-  { "CameraAtFocalPoint", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--camera-position", "1,1,1", "--camera-focal-point", "1,1,1" }); }, 1, { "camera", "focal point" } },
-  { "ViewUpAlongViewDirection", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--camera-position", "0,5,0", "--camera-focal-point", "0,0,0", "--camera-view-up", "0,1,0" }); }, 1, { "view-up", "parallel" } },
-  { "FileNormalsMissing", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--normals", "file" }); }, 1, { "t.obj", "normals" } },
-  { "SizeZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "0x10" }); }, 2, { "--size", "0x10" } },
-  { "SizeHuge", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "100000x100000" }); }, 2, { "--size" } },
-  { "SizeGarbage", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--size", "big" }); }, 2, { "--size", "big" } },
-  { "ColourTwoNumbers", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ka", "1,2" }); }, 2, { "--ka", "1,2" } },
-  { "ColourNegative", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--kd", "1,-2,0" }); }, 2, { "--kd", "negative" } },
-  { "ColourNaN", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ambient", "nan,0,0" }); }, 2, { "--ambient", "nan" } },
-  { "UnknownLightKind", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "laser:1,2,3" }); }, 2, { "--light", "laser" } },
-  { "SpotWithoutAngle", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1" }); }, 2, { "--light", "spot" } },
-  { "SpotAngleTooWide", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1:120" }); }, 2, { "--light", "120" } },
-  { "DirectionZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--light", "directional:0,0,0" }); }, 2, { "--light", "zero" } },
-  { "ViewAngleOutOfRange", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" }); }, 2, { "--view-angle", "200" } },
-  { "ParallelScaleZero", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--parallel-scale", "0" }); }, 2, { "--parallel-scale" } },
-  { "UnknownMaterial", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--material", "unobtainium" }); }, 2, { "--material", "unobtainium" } },
-  { "UnknownShading", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--shading", "wobbly" }); }, 2, { "--shading", "wobbly" } },
-  { "NegativeShininess", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--ns", "-1" }); }, 2, { "--ns" } },
-  { "UnknownOption", [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--frobnicate" }); }, 2, { "--frobnicate" } },
+      return std::vector<std::string>{ (d / "t.obj").string(), "-o",
+        (d / "no" / "such" / "dir.png").string() };
+    },
+    1, { "dir.png", "cannot write" } },
+  { "FloatIntoJpeg",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--pixel-type", "float" });
+    },
+    1, { "OUT", "float" } },
+  { "CameraAtFocalPoint",
+    [](const TempDir& d)
+    {
+      return WithMesh(
+        d, "t.obj", Tetrahedron, { "--camera-position", "1,1,1", "--camera-focal-point", "1,1,1" });
+    },
+    1, { "camera", "focal point" } },
+  { "ViewUpAlongViewDirection",
+    [](const TempDir& d)
+    {
+      return WithMesh(d, "t.obj", Tetrahedron,
+        { "--camera-position", "0,5,0", "--camera-focal-point", "0,0,0", "--camera-view-up",
+          "0,1,0" });
+    },
+    1, { "view-up", "parallel" } },
+  { "FileNormalsMissing",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--normals", "file" });
+    },
+    1, { "t.obj", "normals" } },
+  { "SizeZero",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--size", "0x10" });
+    },
+    2, { "--size", "0x10" } },
+  { "SizeHuge",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--size", "100000x100000" });
+    },
+    2, { "--size" } },
+  { "SizeGarbage",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--size", "big" });
+    },
+    2, { "--size", "big" } },
+  { "ColourTwoNumbers",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--ka", "1,2" });
+    },
+    2, { "--ka", "1,2" } },
+  { "ColourNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--kd", "1,-2,0" });
+    },
+    2, { "--kd", "negative" } },
+  { "ColourNaN",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--ambient", "nan,0,0" });
+    },
+    2, { "--ambient", "nan" } },
+  { "UnknownLightKind",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--light", "laser:1,2,3" });
+    },
+    2, { "--light", "laser" } },
+  { "SpotWithoutAngle",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1" });
+    },
+    2, { "--light", "spot" } },
+  { "SpotAngleTooWide",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--light", "spot:0,0,5:0,0,-1:120" });
+    },
+    2, { "--light", "120" } },
+  { "DirectionZero",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--light", "directional:0,0,0" });
+    },
+    2, { "--light", "zero" } },
+  { "ViewAngleOutOfRange",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" });
+    },
+    2, { "--view-angle", "200" } },
+  { "ParallelScaleZero",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--parallel-scale", "0" });
+    },
+    2, { "--parallel-scale" } },
+  { "UnknownMaterial",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--material", "unobtainium" });
+    },
+    2, { "--material", "unobtainium" } },
+  { "UnknownShading",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shading", "wobbly" });
+    },
+    2, { "--shading", "wobbly" } },
+  { "NegativeShininess",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--ns", "-1" });
+    },
+    2, { "--ns" } },
+  { "UnknownOption",
+    [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--frobnicate" }); }, 2,
+    { "--frobnicate" } },
 };
 
 class BadInput : public testing::TestWithParam<BadCase>

@@ -16,16 +16,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-size_t CountCovered(const Image& image)
-{
-  size_t n = 0;
-  for (size_t i = 0; i < image.Pixels.size(); i += image.Channels)
-  {
-    n += image.Pixels[i] > 0;
-  }
-  return n;
-}
-
 void WriteSphere(const std::filesystem::path& path)
 {
   vtkNew<vtkSphereSource> sphere; // unit radius, centred at the origin
@@ -60,10 +50,10 @@ TEST(Camera, OrthographicRectangleCoversExactlyThePredictedPixels)
   // x from 0.2 to 1.5, y from -0.5 to 0.3; at 50 pixels per unit that is
   // columns [110, 175) and rows [35, 75).
   WriteText(dir / "rect.obj", "v 0.2 -0.5 0\nv 1.5 -0.5 0\nv 1.5 0.3 0\nv 0.2 0.3 0\nf 1 2 3 4\n");
-  const RunResult r = RunShadelab({ "render", (dir / "rect.obj").string(), "-o",
-    (dir / "rect.png").string(), "--size", "200x100", "--shading", "none", "--kd", "1,1,1",
-    "--orthographic", "--parallel-scale", "1", "--camera-position", "0,0,5",
-    "--camera-focal-point", "0,0,0", "--camera-view-up", "0,1,0" });
+  const RunResult r = RunShadelab(
+    { "render", (dir / "rect.obj").string(), "-o", (dir / "rect.png").string(), "--size", "200x100",
+      "--shading", "none", "--kd", "1,1,1", "--orthographic", "--parallel-scale", "1",
+      "--camera-position", "0,0,5", "--camera-focal-point", "0,0,0", "--camera-view-up", "0,1,0" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const Image image = ReadImage(dir / "rect.png");
   ASSERT_EQ(image.Width, 200);
@@ -125,9 +115,9 @@ TEST(Camera, FittedOrthographicCameraHoldsTheSphereInATallPicture)
 {
   TempDir dir;
   WriteSphere(dir / "sphere.vtp");
-  const RunResult r = RunShadelab({ "render", (dir / "sphere.vtp").string(), "-o",
-    (dir / "tall.png").string(), "--size", "200x400", "--shading", "none", "--kd", "1,1,1",
-    "--orthographic" });
+  const RunResult r =
+    RunShadelab({ "render", (dir / "sphere.vtp").string(), "-o", (dir / "tall.png").string(),
+      "--size", "200x400", "--shading", "none", "--kd", "1,1,1", "--orthographic" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   // Parallel scale sqrt(3)/0.5: 400 pixels span 2*sqrt(3)/0.5 world units.
   const double pixelsPerUnit = 400 / (2 * std::sqrt(3.0) / 0.5);

@@ -16,17 +16,6 @@ std::string Bytes(const std::filesystem::path& path)
   return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
 }
 
-// Pixels that differ from the (black) background: the mesh's coverage.
-size_t CoveredPixels(const Image& image)
-{
-  size_t covered = 0;
-  for (size_t i = 0; i < image.Pixels.size(); i += image.Channels)
-  {
-    covered += image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
-  }
-  return covered;
-}
-
 struct MeshAndShading
 {
   const char* Mesh;
@@ -51,14 +40,15 @@ TEST_P(EveryMeshEveryShading, RendersAPicture)
   ASSERT_EQ(image.Height, 120);
   // The fitted camera puts the whole mesh in view: it covers a good part of
   // the picture but not all of it (the bounding sphere fits inside).
-  const size_t covered = CoveredPixels(image);
+  const size_t covered = CountCovered(image);
   EXPECT_GT(covered, 160u * 120u / 50) << "the mesh is (nearly) invisible";
   EXPECT_LT(covered, 160u * 120u * 9 / 10) << "the mesh fills the frame: camera not fitted";
   EXPECT_EQ(dir.Files().size(), 1u) << "a temporary file was left behind";
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryMeshEveryShading,
-  testing::ValuesIn([]
+  testing::ValuesIn(
+    []
     {
       std::vector<MeshAndShading> cases;
       for (const char* mesh : { "cow.obj", "fandisk.obj", "spot.obj", "stanford-bunny.obj",
@@ -141,9 +131,9 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
 TEST(Render, LitFloatPictureExceedsOneWhereTheLightIsStrong)
 {
   TempDir dir;
-  const RunResult r = RunShadelab({ "render", SharedMesh("cow.obj").string(), "-o",
-    (dir / "bright.exr").string(), "--size", "96x96", "--shading", "phong", "--ambient", "4,4,4",
-    "--ka", "1,1,1" });
+  const RunResult r =
+    RunShadelab({ "render", SharedMesh("cow.obj").string(), "-o", (dir / "bright.exr").string(),
+      "--size", "96x96", "--shading", "phong", "--ambient", "4,4,4", "--ka", "1,1,1" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const Image exr = ReadImage(dir / "bright.exr");
   float peak = 0;

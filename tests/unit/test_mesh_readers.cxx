@@ -168,7 +168,7 @@ std::vector<std::size_t> StatementSizes(const fs::path& path, const std::string&
 }
 
 // Appends `value` in the given byte order (host-independent).
-template<typename T>
+template <typename T>
 void Put(std::string& bytes, T value, bool bigEndian = false)
 {
   if (bigEndian)
@@ -204,9 +204,8 @@ protected:
   // Reads `bytes` as file `name` and checks that it fails the way bad input
   // must: request failed, an error code, an empty output, and one line that
   // contains every key word.
-  void ExpectError(const std::string& name,
-    const std::string& bytes,
-    std::initializer_list<const char*> keyWords)
+  void ExpectError(
+    const std::string& name, const std::string& bytes, std::initializer_list<const char*> keyWords)
   {
     this->ExpectError(this->Write(name, bytes), keyWords);
   }
@@ -238,12 +237,8 @@ TEST_F(MeshReaders, EverySharedMeshLoadsWithTheReadmesTriangleCount)
 {
   // data/README.md; suzanne's 500 faces are 468 quads and 32 triangles.
   const std::vector<std::pair<std::string, vtkIdType>> expected = { { "cow.obj", 5804 },
-    { "fandisk.obj", 12946 },
-    { "spot.obj", 5856 },
-    { "stanford-bunny.obj", 69451 },
-    { "stanford-bunny.ply", 69451 },
-    { "suzanne.obj", 2 * 468 + 32 },
-    { "teapot.obj", 6320 },
+    { "fandisk.obj", 12946 }, { "spot.obj", 5856 }, { "stanford-bunny.obj", 69451 },
+    { "stanford-bunny.ply", 69451 }, { "suzanne.obj", 2 * 468 + 32 }, { "teapot.obj", 6320 },
     { "teapot.stl", 6320 } };
   std::set<std::string> covered;
   for (const auto& [name, triangles] : expected)
@@ -356,7 +351,7 @@ public:
   {
   }
 
-  template<typename T>
+  template <typename T>
   PlyBody& Add(T value)
   {
     if (this->Ascii)
@@ -603,8 +598,7 @@ TEST_F(MeshReaders, ObjMixingFacesWithAndWithoutNormalsDropsThemWithAWarning)
 // ---------------------------------------------------------------------------
 // Hand-made STL
 
-std::string BinaryStl(const std::string& header,
-  std::uint32_t declared,
+std::string BinaryStl(const std::string& header, std::uint32_t declared,
   const std::vector<std::array<float, 9>>& triangles)
 {
   std::string bytes = header;
@@ -626,8 +620,7 @@ std::string BinaryStl(const std::string& header,
 }
 
 const std::vector<std::array<float, 9>> SquareTriangles = {
-  { 0, 0, 0, 1, 0, 0, 1, 1, 0 },
-  { -0.0f, 0, 0, 1, 1, 0, 0, 1, 0 } // -0 welds with +0
+  { 0, 0, 0, 1, 0, 0, 1, 1, 0 }, { -0.0f, 0, 0, 1, 1, 0, 0, 1, 0 } // -0 welds with +0
 };
 
 TEST_F(MeshReaders, AsciiStlIsWelded)
@@ -791,13 +784,11 @@ TEST_F(MeshReaders, AFailedReadLeavesNoMeshFromBefore)
 TEST_F(MeshReaders, BadObj)
 {
   const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\n";
-  this->ExpectError("range.obj",
-    square + "\n# c\nf 1 2 99\n",
+  this->ExpectError("range.obj", square + "\n# c\nf 1 2 99\n",
     { "line 6: face refers to vertex 99, but only 3 vertices are defined" });
   this->ExpectError("zero.obj", square + "f 0 1 2\n", { "line 4", "vertex 0" });
   this->ExpectError("relative.obj", square + "f -1 -2 -4\n", { "line 4", "vertex -4", "only 3" });
-  this->ExpectError("normal.obj",
-    square + "vn 0 0 1\nf 1//1 2//1 3//2\n",
+  this->ExpectError("normal.obj", square + "vn 0 0 1\nf 1//1 2//1 3//2\n",
     { "line 5", "normal 2", "only 1 normals" });
   this->ExpectError("two.obj", square + "f 1 2\n", { "line 4", "2 vertices", "at least 3" });
   this->ExpectError(
@@ -857,25 +848,20 @@ std::string BinaryTriangle(int a, int b, int c)
 
 TEST_F(MeshReaders, BadPly)
 {
-  this->ExpectError("range.ply",
-    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 2 7\n",
+  this->ExpectError("range.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 2 7\n",
     { "face 1 refers to vertex 7, but only 4 vertices are defined" });
-  this->ExpectError("negative.ply",
-    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 -2 3\n",
+  this->ExpectError("negative.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 -2 3\n",
     { "face 1 refers to vertex -2" });
   this->ExpectError(
     "two.ply", AsciiPlyHeader + AsciiPlyVertices + "2 0 1\n3 0 2 3\n", { "face 0 has 2 vertices" });
-  this->ExpectError("number.ply",
-    AsciiPlyHeader + "0 0 0\n1 0 0\n1 1 zero\n",
+  this->ExpectError("number.ply", AsciiPlyHeader + "0 0 0\n1 0 0\n1 1 zero\n",
     { "line 12", "malformed number 'zero'" });
   this->ExpectError("few.ply", AsciiPlyHeader + "0 0 0\n1 0\n", { "line 11", "missing number" });
   this->ExpectError(
     "many.ply", AsciiPlyHeader + "0 0 0 0\n", { "line 10", "unexpected '0' after the values" });
-  this->ExpectError("cut.ply",
-    AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n",
+  this->ExpectError("cut.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n",
     { "truncated: header declares 2 faces but the file ends after 1" });
-  this->ExpectError("nan.ply",
-    AsciiPlyHeader + "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n3 0 2 3\n",
+  this->ExpectError("nan.ply", AsciiPlyHeader + "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n3 0 2 3\n",
     { "NaN coordinate in vertex 2" });
   this->ExpectError("normal.ply",
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
@@ -891,11 +877,9 @@ TEST_F(MeshReaders, BadPly)
   // Binary: the square with 4 vertices, then faces.
   const std::string faces = BinaryTriangle(0, 1, 2) + BinaryTriangle(0, 2, 3);
   ASSERT_TRUE(Read(this->Write("good.ply", BinaryPly(4, 2, BinarySquareBody() + faces))).Ok);
-  this->ExpectError("cut.ply",
-    BinaryPly(4, 2, BinarySquareBody() + faces.substr(0, 20)),
+  this->ExpectError("cut.ply", BinaryPly(4, 2, BinarySquareBody() + faces.substr(0, 20)),
     { "truncated: header declares 2 faces but the file ends after 1" });
-  this->ExpectError("cutvertices.ply",
-    BinaryPly(4, 0, BinarySquareBody().substr(0, 40)),
+  this->ExpectError("cutvertices.ply", BinaryPly(4, 0, BinarySquareBody().substr(0, 40)),
     { "truncated: header declares 4 vertices but the file ends after 3" });
   this->ExpectError("nan.ply",
     BinaryPly(4, 2, BinarySquareBody(std::numeric_limits<float>::quiet_NaN()) + faces),
@@ -928,8 +912,7 @@ TEST_F(MeshReaders, BadPlyHeaders)
   this->ExpectError("type.ply",
     "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
     { "line 4", "unknown property type 'real'" });
-  this->ExpectError("keyword.ply",
-    "ply\nformat ascii 1.0\nelemnt vertex 1\nend_header\n",
+  this->ExpectError("keyword.ply", "ply\nformat ascii 1.0\nelemnt vertex 1\nend_header\n",
     { "line 3", "unknown header line 'elemnt'" });
   this->ExpectError(
     "end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", { "no end_header" });
@@ -962,8 +945,7 @@ TEST_F(MeshReaders, BadStl)
     "short.stl", BinaryStl("solid but binary", 3, SquareTriangles), { "declares 3 triangles" });
   this->ExpectError("tiny.stl", "abc", { "not an STL file" });
   this->ExpectError("nan.stl",
-    BinaryStl("x",
-      2,
+    BinaryStl("x", 2,
       { SquareTriangles[0], { 0, 0, 0, 1, 1, 0, 0, std::numeric_limits<float>::infinity(), 0 } }),
     { "infinite coordinate in triangle 1" });
 
@@ -971,14 +953,11 @@ TEST_F(MeshReaders, BadStl)
                             "vertex 1 1 0\nendloop\nendfacet\n";
   this->ExpectError("noend.stl", "solid s\n" + facet, { "truncated", "endsolid" });
   this->ExpectError("cut.stl", "solid s\n" + facet.substr(0, 43), { "truncated", "triangle 0" });
-  this->ExpectError("loop.stl",
-    "solid s\nfacet normal 0 0 1\nvertex 0 0 0\n",
+  this->ExpectError("loop.stl", "solid s\nfacet normal 0 0 1\nvertex 0 0 0\n",
     { "line 3", "expected 'outer loop', found 'vertex'" });
-  this->ExpectError("nan.stl",
-    "solid s\n" + facet + facet.substr(0, 50) + "nan 0 0\n",
+  this->ExpectError("nan.stl", "solid s\n" + facet + facet.substr(0, 50) + "nan 0 0\n",
     { "line 12", "NaN coordinate in triangle 1" });
-  this->ExpectError("number.stl",
-    "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 O\n",
+  this->ExpectError("number.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 O\n",
     { "line 4", "malformed vertex coordinate 'O'" });
   this->ExpectError("empty.stl", "solid s\nendsolid s\n", { "no triangles" });
 }
@@ -990,21 +969,17 @@ TEST_F(MeshReaders, BadLegacyVtk)
   ASSERT_TRUE(
     Read(this->Write("good.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")).Ok);
   // Each of these crashed, over-read or half-read VTK 9.1's vtkPolyDataReader.
-  this->ExpectError("cut.vtk",
-    header + points + "POLYGONS 2 8\n3 0 1 2\n",
+  this->ExpectError("cut.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n",
     { "truncated: POLYGONS declares 8 values but the file ends after 4" });
-  this->ExpectError("cell.vtk",
-    header + points + "POLYGONS 2 8\n3 0 1 2\n9 0 2 3\n",
+  this->ExpectError("cell.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n9 0 2 3\n",
     { "POLYGONS cell 1 does not fit the section's 8 values" });
-  this->ExpectError("size.vtk",
-    header + points + "POLYGONS 2 99999999999\n3 0 1 2\n",
+  this->ExpectError("size.vtk", header + points + "POLYGONS 2 99999999999\n3 0 1 2\n",
     { "POLYGONS declares 99999999999 values, more than a", "-byte file can hold" });
   this->ExpectError("normals.vtk",
     header + points +
       "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\nPOINT_DATA 4\nNORMALS n float\n0 0 1 0 0 1\n",
     { "truncated: NORMALS declares 4 normals but the file ends after 2" });
-  this->ExpectError("count.vtk",
-    header + "POINTS 99999999999 float\n0 0 0\n",
+  this->ExpectError("count.vtk", header + "POINTS 99999999999 float\n0 0 0\n",
     { "POINTS declares 99999999999 points, more than a" });
   this->ExpectError("binary.vtk",
     "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 4 float\n" +
@@ -1014,19 +989,15 @@ TEST_F(MeshReaders, BadLegacyVtk)
     "# vtk DataFile Version 5.1\nsquare\nASCII\nDATASET POLYDATA\n" + points +
       "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 7\nCONNECTIVITY vtktypeint64\n0 1 2 0 2 3\n",
     { "POLYGONS offsets do not run from 0 up to its 6 connectivity entries" });
-  this->ExpectError("index.vtk",
-    header + points + "POLYGONS 2 8\n3 0 1 2\n3 0 2 4\n",
+  this->ExpectError("index.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n3 0 2 4\n",
     { "face 1 refers to vertex 4, but only 4 vertices are defined" });
-  this->ExpectError("value.vtk",
-    header + "POINTS 4 float\n0 0 0 1 0 0 1 one 0 0 1 0\n",
+  this->ExpectError("value.vtk", header + "POINTS 4 float\n0 0 0 1 0 0 1 one 0 0 1 0\n",
     { "line 6", "malformed value 'one' in POINTS" });
-  this->ExpectError("data.vtk",
-    header + points + "POINT_DATA 3\n",
+  this->ExpectError("data.vtk", header + points + "POINT_DATA 3\n",
     { "POINT_DATA declares 3 values for 4 points" });
   this->ExpectError(
     "keyword.vtk", header + points + "POLYGON 2 8\n", { "line 7", "unexpected 'polygon'" });
-  this->ExpectError("string.vtk",
-    header + points + "FIELD f 1\nnames 1 1 string\nx\n",
+  this->ExpectError("string.vtk", header + points + "FIELD f 1\nnames 1 1 string\nx\n",
     { "unsupported data type 'string'" });
   this->ExpectError("grid.vtk",
     "# vtk DataFile Version 3.0\ngrid\nASCII\nDATASET STRUCTURED_POINTS\n"

@@ -35,8 +35,8 @@ TEST(Options, SizesAreBounded)
   EXPECT_EQ(s.Height, 1080);
   EXPECT_EQ(ParseSize("1X1").Width, 1);
   EXPECT_EQ(ParseSize("8192x8192").Height, 8192);
-  for (const char* bad : { "0x10", "10x0", "-5x5", "16385x1", "16384x16384", "1920", "x",
-         "1920x", "19.5x10", "1920x1080x3", "axb" })
+  for (const char* bad : { "0x10", "10x0", "-5x5", "16385x1", "16384x16384", "1920", "x", "1920x",
+         "19.5x10", "1920x1080x3", "axb" })
   {
     EXPECT_THROW(ParseSize(bad), std::invalid_argument) << bad;
   }
@@ -90,8 +90,7 @@ TEST(Options, BadLightsNameTheProblem)
     }
     catch (const std::invalid_argument& e)
     {
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos)
-        << text << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << text << ": " << e.what();
     }
   }
 }

@@ -1,0 +1,18 @@
+// LeakSanitizer's settings for the sanitizer build (SHADELAB_SANITIZE).
+// LeakSanitizer calls these hooks itself, so no environment is needed.
+
+// Only leaks that live in other projects' code, each with its reason.
+extern "C" const char* __lsan_default_suppressions()
+{
+  return
+    // Mesa 22.3's OSMesa: OSMesaMakeCurrent allocates a framebuffer wrapper
+    // for each buffer it is given and keeps it in a table that
+    // OSMesaDestroyContext does not empty; OSMesa has no call to free it.
+    "leak:libOSMesa.so\n";
+}
+
+// The list of suppressions used would break the one-line error contract.
+extern "C" const char* __lsan_default_options()
+{
+  return "print_suppressions=0";
+}

@@ -14,7 +14,8 @@ const char* const CameraHelp =
   "point defaults to the centre of the mesh's bounding box; the position to the focal point "
   "plus +Z times the distance at which the mesh's bounding sphere (half the box diagonal, "
   "grown to enclose the mesh around a given focal point) fills the narrower of the two view "
-  "angles; the view-up to +Y (+Z when the camera looks along Y). Orthographic: "
+  "angles; the view-up to +Y, or, for a camera looking straight along Y, to -Z looking "
+  "down and +Z looking up. Orthographic: "
   "--parallel-scale is half the view height in world units, fitted to the same sphere when "
   "not given. The near and far planes always enclose the mesh.";
 

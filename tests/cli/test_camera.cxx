@@ -124,3 +124,29 @@ TEST(Camera, FittedOrthographicCameraHoldsTheSphereInATallPicture)
   const double measured = std::sqrt(CountCovered(ReadImage(dir / "tall.png")) / Pi);
   EXPECT_NEAR(measured, pixelsPerUnit, 0.25);
 }
+
+// Looking straight down, the default view-up (+Y) is along the view
+// direction; the documented fallback is -Z at the top of the picture. A
+// rectangle on the far side (z < 0) must then appear in the top half.
+TEST(Camera, ViewFromAboveFallsBackToMinusZUp)
+{
+  TempDir dir;
+  WriteText(dir / "far.obj", "v -0.5 0 -1\nv 0.5 0 -1\nv 0.5 0 -0.2\nv -0.5 0 -0.2\nf 1 2 3 4\n");
+  const RunResult r =
+    RunShadelab({ "render", (dir / "far.obj").string(), "-o", (dir / "above.png").string(),
+      "--size", "100x100", "--shading", "none", "--kd", "1,1,1", "--orthographic",
+      "--parallel-scale", "1", "--camera-position", "0,5,0", "--camera-focal-point", "0,0,0" });
+  ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  const Image image = ReadImage(dir / "above.png");
+  size_t top = 0, bottom = 0;
+  for (int y = 0; y < 100; ++y)
+  {
+    for (int x = 0; x < 100; ++x)
+    {
+      (y < 50 ? top : bottom) += image.Pixels[(static_cast<size_t>(y) * 100 + x) * 3] > 0;
+    }
+  }
+  // z from -1 to -0.2 at 50 pixels per unit, -Z up: rows [0, 40), 50 columns.
+  EXPECT_EQ(top, 40u * 50u);
+  EXPECT_EQ(bottom, 0u);
+}

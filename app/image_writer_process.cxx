@@ -3,6 +3,7 @@
 #include "image_writer_protocol.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -73,7 +74,13 @@ ImageWriterProcess::ImageWriterProcess()
 
 ImageWriterProcess::~ImageWriterProcess()
 {
-  Close(this->ToChild); // end of input: the writer leaves without writing
+  // No picture came (an error came first): the writer, still binding
+  // OpenImageIO, has nothing to do and is stopped rather than waited for.
+  if (this->Child > 0)
+  {
+    kill(this->Child, SIGKILL);
+  }
+  Close(this->ToChild);
   this->Wait();
   Close(this->FromChild);
 }

@@ -25,7 +25,7 @@ class ImageWriterProcess
 public:
   /** Starts the writer process. */
   ImageWriterProcess();
-  /** Ends the writer; if no picture was sent it exits without writing. */
+  /** Stops the writer if no picture was handed over; it has written nothing. */
   ~ImageWriterProcess();
 
   /**

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -18,9 +19,14 @@ std::string Bytes(const std::filesystem::path& path)
 
 struct MeshAndShading
 {
-  const char* Mesh;
-  const char* Shading;
+  std::string Mesh;
+  std::string Shading;
 };
+
+void PrintTo(const MeshAndShading& c, std::ostream* os)
+{
+  *os << c.Mesh << " " << c.Shading;
+}
 
 class EveryMeshEveryShading : public testing::TestWithParam<MeshAndShading>
 {
@@ -46,24 +52,40 @@ TEST_P(EveryMeshEveryShading, RendersAPicture)
   EXPECT_EQ(dir.Files().size(), 1u) << "a temporary file was left behind";
 }
 
-INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryMeshEveryShading,
-  testing::ValuesIn(
-    []
+// Every mesh file in the shared folder, so that a mesh added there is tested
+// too; at least the eight that the folder's README lists.
+static std::vector<MeshAndShading> EveryCase()
+{
+  std::vector<std::string> meshes;
+  for (const auto& entry : std::filesystem::directory_iterator(SharedMesh("")))
+  {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".vtp" || ext == ".vtk")
     {
-      std::vector<MeshAndShading> cases;
-      for (const char* mesh : { "cow.obj", "fandisk.obj", "spot.obj", "stanford-bunny.obj",
-             "stanford-bunny.ply", "suzanne.obj", "teapot.obj", "teapot.stl" })
-      {
-        for (const char* shading : { "none", "flat", "gouraud", "phong" })
-        {
-          cases.push_back({ mesh, shading });
-        }
-      }
-      return cases;
-    }()),
+      meshes.push_back(entry.path().filename().string());
+    }
+  }
+  std::sort(meshes.begin(), meshes.end());
+  std::vector<MeshAndShading> cases;
+  for (const std::string& mesh : meshes)
+  {
+    for (const char* shading : { "none", "flat", "gouraud", "phong" })
+    {
+      cases.push_back({ mesh, shading });
+    }
+  }
+  return cases;
+}
+
+TEST(SharedMeshes, AllEightAreThere)
+{
+  EXPECT_GE(EveryCase().size(), 8u * 4u);
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryMeshEveryShading, testing::ValuesIn(EveryCase()),
   [](const testing::TestParamInfo<MeshAndShading>& info)
   {
-    std::string name = std::string(info.param.Mesh) + "_" + info.param.Shading;
+    std::string name = info.param.Mesh + "_" + info.param.Shading;
     for (char& c : name)
     {
       c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';

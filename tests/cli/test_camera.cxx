@@ -109,6 +109,21 @@ TEST(Camera, FittedCameraFramesTheBoundingSphere)
   EXPECT_NEAR(measured, PredictedRadius(distance, 30, 300), 0.25);
 }
 
+// A tall perspective picture: the horizontal half-angle, atan(tan(15 deg) *
+// width/height), is the narrower one, and the bounding sphere is fitted to it.
+TEST(Camera, FittedCameraUsesTheNarrowerAngleInATallPicture)
+{
+  TempDir dir;
+  WriteSphere(dir / "sphere.vtp");
+  const RunResult r = RunShadelab({ "render", (dir / "sphere.vtp").string(), "-o",
+    (dir / "tall.png").string(), "--size", "300x600", "--shading", "none", "--kd", "1,1,1" });
+  ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  const double narrowHalfAngle = std::atan(std::tan(15 * Pi / 180) * 0.5);
+  const double distance = std::sqrt(3.0) / std::sin(narrowHalfAngle);
+  const double measured = std::sqrt(CountCovered(ReadImage(dir / "tall.png")) / Pi);
+  EXPECT_NEAR(measured, PredictedRadius(distance, 30, 600), 0.25);
+}
+
 // A tall picture: the horizontal angle is the narrower one and holds the
 // sphere, and the orthographic fit makes the parallel scale radius/aspect.
 TEST(Camera, FittedOrthographicCameraHoldsTheSphereInATallPicture)

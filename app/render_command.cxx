@@ -86,10 +86,10 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
     return ReportError("render", error);
   }
   timer.Lap("context");
-  if (const std::string error = BuildScene(o.Scene, loaded.Mesh, renderer.GetRenderer());
-      !error.empty())
+  const BuiltScene scene = BuildScene(o.Scene, loaded.Mesh, renderer.GetRenderer());
+  if (!scene.Error.empty())
   {
-    return ReportError("camera", error);
+    return ReportError("camera", scene.Error);
   }
   const FloatImage image = renderer.Render();
   timer.Lap("frame");

@@ -5,18 +5,27 @@
 
 #include "options.h"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 
+class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
+class vtkShadelabShading;
 
 namespace shadelab
 {
-/**
- * Fills renderer with mesh as options describe. Returns an error text for an
- * impossible scene, else an empty string.
- */
-std::string BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer);
+/** What a built scene is made of; the shading must live as long as the actor draws. */
+struct BuiltScene
+{
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkShadelabShading> Shading;
+  std::string Error; // an impossible scene (camera), else empty
+};
+
+/** Fills renderer with mesh as options describe, lit by the lecture's shaders. */
+BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer);
 
 /** The lights the scene uses: the given ones, or the lecture's default. */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);

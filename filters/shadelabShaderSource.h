@@ -1,0 +1,49 @@
+// The lecture's equation and shading rules as GLSL, generated for what a
+// scene needs and nothing more (DESIGN.md, "The shading rules"): the number
+// and kinds of lights compiled in, no specular code when ks is zero, lighting
+// in the vertex stage for flat and Gouraud and in the fragment stage for
+// Phong. The code goes into VTK 9.1's polydata shaders as replacements of
+// their tags; each GLSL function mirrors the function of the same name in
+// shadelabShadingOracle.cxx.
+#ifndef shadelabShaderSource_h
+#define shadelabShaderSource_h
+
+#include "shadelabIllumination.h"
+
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+/** What decides the shader code (uniform values do not). */
+struct ShaderFeatures
+{
+  Shading Rule = Shading::Phong;
+  Reflection Model = Reflection::BlinnPhong;
+  std::vector<LightKind> Lights;
+  bool Specular = true; // false when ks is zero: no specular code at all
+
+  bool operator==(const ShaderFeatures& other) const;
+};
+
+/** One replacement: in the vertex or fragment shader, Tag becomes Code. */
+struct ShaderReplacement
+{
+  bool Vertex = false;
+  std::string Tag;
+  std::string Code;
+};
+
+/** Replacements applied before VTK's own substitutions (replaceFirst). */
+std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& features);
+
+/**
+ * The vertex attribute with each triangle's face normal that flat shading
+ * reads (set on an exploded mesh, see vtkShadelabFlatTriangles), and the
+ * shaders' uniforms (set by vtkShadelabShading).
+ */
+extern const char* const FaceNormalArrayName;
+extern const char* const FaceNormalAttributeName;
+}
+
+#endif

@@ -1,0 +1,195 @@
+#include "vtkShadelabShading.h"
+
+#include "vtkShadelabFlatTriangles.h"
+
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkLight.h>
+#include <vtkMatrix3x3.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLShaderProperty.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+
+#include <array>
+
+vtkStandardNewMacro(vtkShadelabShading);
+
+using namespace shadelab;
+
+vtkShadelabShading::vtkShadelabShading()
+  : Observer(vtkSmartPointer<vtkCallbackCommand>::New())
+{
+  this->Observer->SetClientData(this);
+  this->Observer->SetCallback(
+    [](vtkObject*, unsigned long, void* self, void* program) {
+      static_cast<vtkShadelabShading*>(self)->SetUniforms(static_cast<vtkShaderProgram*>(program));
+    });
+}
+
+vtkShadelabShading::~vtkShadelabShading()
+{
+  if (this->Actor && this->Actor->GetMapper())
+  {
+    this->Actor->GetMapper()->RemoveObserver(this->Observer);
+  }
+}
+
+void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const Material& material,
+  const Rgb& ambient, const std::vector<Light>& lights)
+{
+  this->Features.Rule = rule;
+  this->Features.Model = model;
+  this->Features.Lights.clear();
+  for (const Light& light : lights)
+  {
+    this->Features.Lights.push_back(light.Kind);
+  }
+  this->Features.Specular = material.Ks[0] != 0 || material.Ks[1] != 0 || material.Ks[2] != 0;
+  this->Surface = material;
+  this->Ambient = ambient;
+  this->Lights = lights;
+  this->Modified();
+}
+
+vtkSmartPointer<vtkPolyData> vtkShadelabShading::PrepareMesh(vtkPolyData* mesh) const
+{
+  if (this->Features.Rule == Shading::Flat)
+  {
+    auto explode = vtkSmartPointer<vtkShadelabFlatTriangles>::New();
+    explode->SetInputData(mesh);
+    explode->Update();
+    return explode->GetOutput();
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(mesh);
+  if (this->Features.Rule == Shading::None)
+  {
+    copy->GetPointData()->SetNormals(nullptr);
+  }
+  return copy;
+}
+
+void vtkShadelabShading::Attach(vtkActor* actor, vtkRenderer* renderer)
+{
+  if (this->Actor && this->Actor->GetMapper())
+  {
+    this->Actor->GetMapper()->RemoveObserver(this->Observer);
+  }
+  this->Actor = actor;
+  this->Renderer = renderer;
+
+  auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty());
+  shaders->ClearAllShaderReplacements();
+  for (const ShaderReplacement& r : GenerateShaderReplacements(this->Features))
+  {
+    if (r.Vertex)
+    {
+      shaders->AddVertexShaderReplacement(r.Tag, true, r.Code, false);
+    }
+    else
+    {
+      shaders->AddFragmentShaderReplacement(r.Tag, true, r.Code, false);
+    }
+  }
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->RemoveAllVertexAttributeMappings();
+  if (this->Features.Rule == Shading::Flat)
+  {
+    mapper->MapDataArrayToVertexAttribute(
+      FaceNormalAttributeName, FaceNormalArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  }
+  mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
+  actor->GetProperty()->LightingOn();
+
+  auto dark = vtkSmartPointer<vtkLight>::New();
+  dark->SetIntensity(0);
+  dark->SwitchOn();
+  renderer->AutomaticLightCreationOff();
+  renderer->RemoveAllLights();
+  renderer->AddLight(dark);
+}
+
+void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
+{
+  // World to view coordinates, in double.
+  vtkMatrix4x4* view = this->Renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  double rotation[3][3];
+  Vec3 translation;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      rotation[i][j] = view->GetElement(i, j);
+    }
+    translation[i] = view->GetElement(i, 3);
+  }
+  auto toFloat = [](const std::array<double, 3>& v) -> std::array<float, 3> {
+    return { static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]) };
+  };
+  program->SetUniform3f("shadelabKa", toFloat(this->Surface.Ka).data());
+  program->SetUniform3f("shadelabKd", toFloat(this->Surface.Kd).data());
+  program->SetUniform3f("shadelabKs", toFloat(this->Surface.Ks).data());
+  program->SetUniformf("shadelabNs", static_cast<float>(this->Surface.Ns));
+  program->SetUniform3f("shadelabIa", toFloat(this->Ambient).data());
+  program->SetUniformi(
+    "shadelabOrthographic", this->Renderer->GetActiveCamera()->GetParallelProjection() ? 1 : 0);
+
+  const int n = static_cast<int>(this->Lights.size());
+  if (n > 0)
+  {
+    std::vector<std::array<float, 3>> colors, positions, directions;
+    std::vector<float> cutoffs, exponents;
+    for (const Light& light : this->Lights)
+    {
+      const FrameLight f = ToFrame(light, rotation, translation);
+      colors.push_back(toFloat(f.Color));
+      positions.push_back(toFloat(f.Position));
+      directions.push_back(toFloat(f.Direction));
+      cutoffs.push_back(static_cast<float>(f.CosCutoff));
+      exponents.push_back(static_cast<float>(f.Exponent));
+    }
+    using Triple = const float(*)[3];
+    program->SetUniform3fv("shadelabLightColor", n, reinterpret_cast<Triple>(colors.data()));
+    program->SetUniform3fv("shadelabLightPosition", n, reinterpret_cast<Triple>(positions.data()));
+    program->SetUniform3fv(
+      "shadelabLightDirection", n, reinterpret_cast<Triple>(directions.data()));
+    program->SetUniform1fv("shadelabLightCosCutoff", n, cutoffs.data());
+    program->SetUniform1fv("shadelabLightExponent", n, exponents.data());
+  }
+
+  if (this->Features.Rule == Shading::Flat)
+  {
+    // Model to view for normals: the inverse transpose of the 3x3 part of
+    // view x actor.
+    auto modelView = vtkSmartPointer<vtkMatrix4x4>::New();
+    vtkMatrix4x4::Multiply4x4(view, this->Actor->GetMatrix(), modelView);
+    auto normalMatrix = vtkSmartPointer<vtkMatrix3x3>::New();
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        normalMatrix->SetElement(i, j, modelView->GetElement(i, j));
+      }
+    }
+    normalMatrix->Invert();
+    normalMatrix->Transpose();
+    program->SetUniformMatrix("shadelabNormalMatrix", normalMatrix);
+  }
+}
+
+void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Rule: " << ToString(this->Features.Rule) << "\n";
+  os << indent << "Model: " << ToString(this->Features.Model) << "\n";
+  os << indent << "Lights: " << this->Lights.size() << "\n";
+  os << indent << "Specular: " << this->Features.Specular << "\n";
+}

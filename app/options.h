@@ -69,6 +69,7 @@ struct RenderOptions
   SceneOptions Scene;
   std::string Output;
   PixelType Pixels = PixelType::Auto;
+  std::string DumpShaders; // a folder, or empty
   bool Verbose = false;
 };
 

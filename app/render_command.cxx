@@ -7,7 +7,9 @@
 #include "mesh_input.h"
 #include "metadata.h"
 #include "scene.h"
+#include "shader_dump.h"
 
+#include <vtkActor.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
@@ -15,6 +17,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <memory>
 
 namespace shadelab
 {
@@ -33,6 +36,10 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
       "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)")
     ->transform(CLI::CheckedTransformer(types))
     ->option_text("auto|uint8|uint16|half|float");
+  render
+    ->add_option("--dump-shaders", o.DumpShaders,
+      "Write the final GLSL of each shader program into DIR (RULE-REFLECTION.vert/.frag)")
+    ->option_text("DIR");
   render->add_flag("-v,--verbose", o.Verbose, "Print each phase's time and VTK's messages");
   render->footer(CameraHelp);
   return render;
@@ -71,6 +78,13 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
   {
     return ReportError(o.Output, error);
   }
+  if (!o.DumpShaders.empty())
+  {
+    if (const std::string error = ShaderDump::PrepareFolder(o.DumpShaders); !error.empty())
+    {
+      return ReportError(o.DumpShaders, error);
+    }
+  }
   ImageWriterProcess writer;
   const LoadedMesh loaded = LoadMesh(o.Scene);
   if (!loaded.Mesh)
@@ -91,8 +105,18 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
   {
     return ReportError("camera", scene.Error);
   }
+  std::unique_ptr<ShaderDump> dump;
+  if (!o.DumpShaders.empty())
+  {
+    dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), o.DumpShaders,
+      std::string(ToString(o.Scene.ShadingRule)) + "-" + ToString(o.Scene.ReflectionModel));
+  }
   const FloatImage image = renderer.Render();
   timer.Lap("frame");
+  if (dump && !dump->GetError().empty())
+  {
+    return ReportError(o.DumpShaders, dump->GetError());
+  }
 
   const auto metadata =
     DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera());

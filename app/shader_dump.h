@@ -1,0 +1,43 @@
+// --dump-shaders DIR: the final vertex and fragment GLSL of each shader
+// program a render uses, written as DIR/NAME.vert and DIR/NAME.frag, so a
+// learner can read exactly what runs (the lecture's hands-on asks for that).
+#ifndef shadelab_shader_dump_h
+#define shadelab_shader_dump_h
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkCallbackCommand;
+class vtkMapper;
+
+namespace shadelab
+{
+class ShaderDump
+{
+public:
+  /** Writes the programs that mapper draws with into folder, named name. */
+  ShaderDump(vtkMapper* mapper, const std::string& folder, const std::string& name);
+  ~ShaderDump();
+
+  /** Creates folder if needed; an error text or "". */
+  static std::string PrepareFolder(const std::string& folder);
+
+  /** The first write error, or "". */
+  const std::string& GetError() const { return this->Error; }
+
+private:
+  ShaderDump(const ShaderDump&) = delete;
+  void operator=(const ShaderDump&) = delete;
+
+  void Write(const std::string& extension, const std::string& source);
+
+  vtkMapper* Mapper;
+  std::string Base;
+  std::string Error;
+  bool Written = false;
+  vtkSmartPointer<vtkCallbackCommand> Observer;
+};
+}
+
+#endif

@@ -1,0 +1,96 @@
+// "Model only what a scene requires": the GLSL that --dump-shaders writes is
+// the code that ran, generated for the scene (issue 3, part 4).
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+using namespace shadelab_test;
+
+namespace
+{
+std::string Text(const std::filesystem::path& path)
+{
+  std::ifstream in(path);
+  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+}
+
+bool Contains(const std::string& text, const std::string& part)
+{
+  return text.find(part) != std::string::npos;
+}
+
+struct Dumped
+{
+  std::string Vertex, Fragment;
+};
+
+Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::string> extra)
+{
+  std::vector<std::string> args = { "render", SharedMesh("cow.obj").string(), "-o",
+    (dir / "cow.png").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() };
+  args.insert(args.end(), extra.begin(), extra.end());
+  const RunResult r = RunShadelab(args);
+  EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+  return { Text(dir / "glsl" / (name + ".vert")), Text(dir / "glsl" / (name + ".frag")) };
+}
+}
+
+TEST(GeneratedShaders, PhongLightsPerFragmentWithTheLightsOfTheScene)
+{
+  TempDir dir;
+  const Dumped d = Render(dir, "phong-blinn",
+    { "--shading", "phong", "--light", "point:1,1,1", "--light", "directional:0,-1,0" });
+  EXPECT_TRUE(Contains(d.Fragment, "vec3 shadelabIlluminate(vec3 P, vec3 N)"));
+  EXPECT_TRUE(Contains(d.Fragment, "uniform vec3 shadelabLightColor[2];"));
+  EXPECT_TRUE(Contains(d.Fragment, "// light 0: point"));
+  EXPECT_TRUE(Contains(d.Fragment, "// light 1: directional"));
+  EXPECT_FALSE(Contains(d.Fragment, "// light 2"));
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabLightCosCutoff")) << "spot code without a spot";
+  EXPECT_TRUE(Contains(d.Fragment, "vec3 H = sum / len;")) << "Blinn-Phong's halfway vector";
+  EXPECT_FALSE(Contains(d.Vertex, "shadelabIlluminate")) << "phong lights per fragment only";
+}
+
+TEST(GeneratedShaders, PhongReflectionUsesTheReflectedVector)
+{
+  TempDir dir;
+  const Dumped d = Render(dir, "phong-phong", { "--reflection", "phong" });
+  EXPECT_TRUE(Contains(d.Fragment, "vec3 R = (2.0 * dot(N, L)) * N - L;"));
+  EXPECT_FALSE(Contains(d.Fragment, "vec3 H ="));
+}
+
+TEST(GeneratedShaders, GouraudAndFlatLightInTheVertexStageOnly)
+{
+  for (const char* rule : { "gouraud", "flat" })
+  {
+    TempDir dir;
+    const Dumped d = Render(dir, std::string(rule) + "-blinn", { "--shading", rule });
+    EXPECT_TRUE(Contains(d.Vertex, "shadelabFront = shadelabIlluminate(")) << rule;
+    EXPECT_TRUE(Contains(d.Vertex, "shadelabBack = shadelabIlluminate(")) << rule;
+    EXPECT_FALSE(Contains(d.Fragment, "shadelabIlluminate")) << rule;
+    EXPECT_TRUE(Contains(d.Fragment, "gl_FrontFacing ? shadelabFront : shadelabBack")) << rule;
+    // Flat passes the provoking vertex's colour uninterpolated.
+    EXPECT_EQ(Contains(d.Vertex, "flat out vec3 shadelabFront;"), std::string(rule) == "flat");
+    // Flat reads the face normal; VTK's point normals are not uploaded.
+    EXPECT_EQ(Contains(d.Vertex, "in vec3 normalMC;"), std::string(rule) == "gouraud") << rule;
+  }
+}
+
+TEST(GeneratedShaders, NoSpecularCodeWhenKsIsZero)
+{
+  TempDir dir;
+  const Dumped d = Render(dir, "phong-blinn", { "--ks", "0,0,0" });
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabKs"));
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabSpecularFalloff"));
+}
+
+TEST(GeneratedShaders, NoneDrawsOneColourWithoutNormals)
+{
+  TempDir dir;
+  const Dumped d = Render(dir, "none-blinn", { "--shading", "none" });
+  EXPECT_TRUE(Contains(d.Fragment, "fragOutput0 = vec4(shadelabKd, 1.0);"));
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabIlluminate"));
+  EXPECT_FALSE(Contains(d.Vertex, "normalMC"));
+}

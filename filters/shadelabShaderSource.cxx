@@ -72,7 +72,7 @@ std::string IlluminateSource(const ShaderFeatures& f)
          "{\n"
          "  if (d < 0.01)\n"
          "  {\n"
-         "    return exp(-ns * d * (1.0 + d * (0.5 + d / 3.0)));\n"
+         "    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));\n"
          "  }\n"
          "  return pow(1.0 - d, ns);\n"
          "}\n"

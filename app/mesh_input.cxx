@@ -19,6 +19,7 @@ std::string FirstVtkError(const char* fallback)
   auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   return window && !window->GetFirstError().empty() ? window->GetFirstError() : fallback;
 }
+}
 
 // Until the OpenMesh filter (issue 4): VTK's unweighted average
 // (vtkPolyDataNormals, no splitting, no reorientation, so vertices stay as
@@ -44,7 +45,6 @@ vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string
     return nullptr;
   }
   return filter->GetOutput();
-}
 }
 
 LoadedMesh LoadMesh(const SceneOptions& options)

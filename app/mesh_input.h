@@ -21,6 +21,9 @@ struct LoadedMesh
 };
 
 LoadedMesh LoadMesh(const SceneOptions& options);
+
+/** mesh with vertex normals computed with weighting (uniform or area); null on failure. */
+vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting);
 }
 
 #endif

@@ -10,7 +10,7 @@ const char* const FaceNormalAttributeName = "shadelabFaceNormalMC";
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
-    this->Specular == o.Specular;
+    this->Specular == o.Specular && this->AllFeatures == o.AllFeatures;
 }
 
 namespace
@@ -27,9 +27,109 @@ bool Has(const ShaderFeatures& f, LightKind kind)
   return false;
 }
 
+// The all-features baseline: the same equation for any lights, chosen at
+// run time (kinds 0 point, 1 directional, 2 spot; reflection 0 Blinn, 1 Phong).
+std::string AllFeaturesIlluminateSource()
+{
+  const std::string n = std::to_string(AllFeaturesMaxLights);
+  return "uniform vec3 shadelabKa;\n"
+         "uniform vec3 shadelabKd;\n"
+         "uniform vec3 shadelabKs;\n"
+         "uniform float shadelabNs;\n"
+         "uniform vec3 shadelabIa;\n"
+         "uniform int shadelabOrthographic;\n"
+         "uniform int shadelabReflection;\n"
+         "uniform int shadelabLightCount;\n"
+         "uniform int shadelabLightKind[" +
+    n +
+    "];\n"
+    "uniform vec3 shadelabLightColor[" +
+    n +
+    "];\n"
+    "uniform vec3 shadelabLightPosition[" +
+    n +
+    "];\n"
+    "uniform vec3 shadelabLightDirection[" +
+    n +
+    "];\n"
+    "uniform float shadelabLightCosCutoff[" +
+    n +
+    "];\n"
+    "uniform float shadelabLightExponent[" +
+    n +
+    "];\n"
+    "const float shadelabTinyLength = 1e-20;\n"
+    "float shadelabSpecularFalloff(float d, float ns)\n"
+    "{\n"
+    "  if (d < 0.01)\n"
+    "  {\n"
+    "    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));\n"
+    "  }\n"
+    "  return pow(1.0 - d, ns);\n"
+    "}\n"
+    "vec3 shadelabIlluminate(vec3 P, vec3 N)\n"
+    "{\n"
+    "  vec3 I = shadelabKa * shadelabIa;\n"
+    "  vec3 V = vec3(0.0, 0.0, 1.0);\n"
+    "  if (shadelabOrthographic == 0)\n"
+    "  {\n"
+    "    float len = length(P);\n"
+    "    V = len > shadelabTinyLength ? -P / len : vec3(0.0);\n"
+    "  }\n"
+    "  for (int i = 0; i < shadelabLightCount; ++i)\n"
+    "  {\n"
+    "    vec3 Il = shadelabLightColor[i];\n"
+    "    vec3 L = -shadelabLightDirection[i];\n"
+    "    bool lit = true;\n"
+    "    if (shadelabLightKind[i] != 1)\n"
+    "    {\n"
+    "      vec3 toLight = shadelabLightPosition[i] - P;\n"
+    "      float distance = length(toLight);\n"
+    "      lit = distance > shadelabTinyLength;\n"
+    "      L = toLight / max(distance, shadelabTinyLength);\n"
+    "      if (shadelabLightKind[i] == 2)\n"
+    "      {\n"
+    "        float cosAngle = dot(-L, shadelabLightDirection[i]);\n"
+    "        float e = shadelabLightExponent[i];\n"
+    "        lit = lit && cosAngle >= shadelabLightCosCutoff[i];\n"
+    "        Il *= e == 0.0 ? 1.0 : (cosAngle > 0.0 ? pow(cosAngle, e) : 0.0);\n"
+    "      }\n"
+    "    }\n"
+    "    float NdotL = dot(N, L);\n"
+    "    if (lit && NdotL > 0.0)\n"
+    "    {\n"
+    "      vec3 term = NdotL * shadelabKd;\n"
+    "      float d = -1.0;\n"
+    "      if (shadelabReflection == 0)\n"
+    "      {\n"
+    "        vec3 sum = L + V;\n"
+    "        float len = length(sum);\n"
+    "        vec3 H = sum / max(len, shadelabTinyLength);\n"
+    "        d = len > shadelabTinyLength && dot(N, H) > 0.0 ? 0.5 * dot(N - H, N - H) : -1.0;\n"
+    "      }\n"
+    "      else\n"
+    "      {\n"
+    "        vec3 R = (2.0 * NdotL) * N - L;\n"
+    "        d = dot(V, R) > 0.0 ? 0.5 * dot(V - R, V - R) : -1.0;\n"
+    "      }\n"
+    "      if (d >= 0.0)\n"
+    "      {\n"
+    "        term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs;\n"
+    "      }\n"
+    "      I += Il * term;\n"
+    "    }\n"
+    "  }\n"
+    "  return I;\n"
+    "}\n";
+}
+
 // Uniforms, constants and functions of the stage that lights.
 std::string IlluminateSource(const ShaderFeatures& f)
 {
+  if (f.AllFeatures)
+  {
+    return AllFeaturesIlluminateSource();
+  }
   const size_t n = f.Lights.size();
   const bool positions = Has(f, LightKind::Point) || Has(f, LightKind::Spot);
   const bool directions = Has(f, LightKind::Directional) || Has(f, LightKind::Spot);

@@ -22,6 +22,10 @@ struct ShaderFeatures
   Reflection Model = Reflection::BlinnPhong;
   std::vector<LightKind> Lights;
   bool Specular = true; // false when ks is zero: no specular code at all
+  // The baseline that per-scene generation is measured against: one program
+  // with every light kind, specular, and both reflection models, chosen by
+  // uniforms at run time, for up to AllFeaturesMaxLights lights.
+  bool AllFeatures = false;
 
   bool operator==(const ShaderFeatures& other) const;
 };
@@ -42,6 +46,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
  * reads (set on an exploded mesh, see vtkShadelabFlatTriangles), and the
  * shaders' uniforms (set by vtkShadelabShading).
  */
+constexpr int AllFeaturesMaxLights = 8;
 extern const char* const FaceNormalArrayName;
 extern const char* const FaceNormalAttributeName;
 }

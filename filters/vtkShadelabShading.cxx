@@ -18,6 +18,7 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 
+#include <algorithm>
 #include <array>
 
 vtkStandardNewMacro(vtkShadelabShading);
@@ -56,6 +57,12 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   this->Surface = material;
   this->Ambient = ambient;
   this->Lights = lights;
+  this->Modified();
+}
+
+void vtkShadelabShading::SetAllFeatures(bool all)
+{
+  this->Features.AllFeatures = all;
   this->Modified();
 }
 
@@ -163,6 +170,19 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
       "shadelabLightDirection", n, reinterpret_cast<Triple>(directions.data()));
     program->SetUniform1fv("shadelabLightCosCutoff", n, cutoffs.data());
     program->SetUniform1fv("shadelabLightExponent", n, exponents.data());
+  }
+  if (this->Features.AllFeatures)
+  {
+    std::vector<int> kinds;
+    for (const Light& light : this->Lights)
+    {
+      kinds.push_back(light.Kind == LightKind::Point ? 0
+          : light.Kind == LightKind::Directional     ? 1
+                                                     : 2);
+    }
+    program->SetUniformi("shadelabLightCount", std::min(n, AllFeaturesMaxLights));
+    program->SetUniform1iv("shadelabLightKind", static_cast<int>(kinds.size()), kinds.data());
+    program->SetUniformi("shadelabReflection", this->Features.Model == Reflection::Phong ? 1 : 0);
   }
 
   if (this->Features.Rule == Shading::Flat)

@@ -42,6 +42,9 @@ public:
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 
+  /** Use the all-features baseline program instead (for measurements). */
+  void SetAllFeatures(bool all);
+
   /**
    * The mesh as the rule reads it: flat gets its triangles exploded with face
    * normals (vtkShadelabFlatTriangles), none and flat lose the point normals

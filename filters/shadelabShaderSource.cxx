@@ -59,6 +59,7 @@ std::string AllFeaturesIlluminateSource()
     n +
     "];\n"
     "const float shadelabTinyLength = 1e-20;\n"
+    "const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle\n"
     "float shadelabSpecularFalloff(float d, float ns)\n"
     "{\n"
     "  if (d < 0.01)\n"
@@ -96,7 +97,7 @@ std::string AllFeaturesIlluminateSource()
     "      }\n"
     "    }\n"
     "    float NdotL = dot(N, L);\n"
-    "    if (lit && NdotL > 0.0)\n"
+    "    if (lit && NdotL > shadelabGrazingLimit)\n"
     "    {\n"
     "      vec3 term = NdotL * shadelabKd;\n"
     "      float d = -1.0;\n"
@@ -163,7 +164,8 @@ std::string IlluminateSource(const ShaderFeatures& f)
          "uniform float shadelabLightExponent["
       << n << "];\n";
   }
-  s << "const float shadelabTinyLength = 1e-20;\n";
+  s << "const float shadelabTinyLength = 1e-20;\n"
+       "const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle\n";
 
   if (f.Specular)
   {
@@ -252,7 +254,7 @@ std::string IlluminateSource(const ShaderFeatures& f)
       }
     }
     s << "  NdotL = dot(N, L);\n"
-      << "  if (" << (guard.empty() ? "" : guard + " && ") << "NdotL > 0.0)\n"
+      << "  if (" << (guard.empty() ? "" : guard + " && ") << "NdotL > shadelabGrazingLimit)\n"
       << "  {\n"
       << "    vec3 term = NdotL * shadelabKd;\n";
     if (f.Specular)
@@ -341,6 +343,8 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
       r.push_back({ false, "//VTK::Light::Impl",
         // ShadeFragment: renormalise, fall back to the geometric normal
         // (turned towards the viewer) when too short, flip for back faces.
+        // The fallback comes from derivatives of float view-space positions,
+        // so its direction is good to about ulp(camera distance)/pixel size.
         "  vec3 shadelabN;\n"
         "  float shadelabLength = length(normalVCVSOutput);\n"
         "  if (shadelabLength > 1e-6 && !isinf(shadelabLength))\n"

@@ -44,6 +44,12 @@ Vec3 cross(const Vec3& a, const Vec3& b)
 constexpr double TinyLength = 1e-20;
 // An interpolated normal shorter than this falls back to the geometric one.
 constexpr double ShortNormal = 1e-6;
+// The lecture lights a point when N.L > 0. Where N.L is exactly 0 (a light
+// in the surface's plane, or at one of a triangle's vertices), float
+// rounding in view coordinates gives N.L about +-1e-6 and would switch the
+// specular term on and off at random; lighting only N.L > 1e-5 keeps the
+// case rule deterministic at a cost of at most kd*1e-5 of diffuse light.
+constexpr double GrazingLimit = 1e-5;
 
 bool Usable(double len, double shortest)
 {
@@ -153,7 +159,7 @@ Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N)
       continue;
     }
     const double NdotL = dot(N, L);
-    if (!(NdotL > 0))
+    if (!(NdotL > GrazingLimit))
     {
       continue; // no diffuse and, by the lecture's cases, no specular
     }

@@ -52,7 +52,9 @@ double SpecularFalloff(double d, double ns);
 /**
  * I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l] at point P with unit normal N.
  * S_l = 0 when N.L <= 0 or the specular base is <= 0; a light at P itself
- * (L undefined) and L = -V (H undefined) add nothing undefined.
+ * (L undefined) and L = -V (H undefined) add nothing undefined. "N.L <= 0"
+ * is taken as N.L <= 1e-5, so that float rounding cannot decide the case
+ * where N.L is exactly 0 (see GrazingLimit).
  */
 Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -194,5 +195,31 @@ TEST(Render, HelpDocumentsTheCameraConventions)
          "bounding sphere", "--orthographic", "--light" })
   {
     EXPECT_NE(r.Stdout.find(expected), std::string::npos) << expected;
+  }
+}
+
+// The teapot has degenerate (zero-area) triangles at its poles, and a
+// zero-area triangle and a zero normal here: no rule may turn them into NaN
+// or Inf anywhere in the float picture (issue 3, numerical safety).
+TEST(Render, DegenerateTrianglesGiveNoNaN)
+{
+  TempDir dir;
+  WriteText(dir / "odd.obj",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nvn 0 0 1\nvn 0 0 0\n"
+    "f 1//1 2//1 3//2\nf 2//1 4//1 5//1\n");
+  for (const std::string& mesh : { SharedMesh("teapot.obj").string(), (dir / "odd.obj").string() })
+  {
+    for (const char* shading : { "none", "flat", "gouraud", "phong" })
+    {
+      const RunResult r = RunShadelab({ "render", mesh, "-o", (dir / "odd.exr").string(), "--size",
+        "96x96", "--shading", shading, "--light", "point:0,0,0.5" });
+      ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+      const Image image = ReadImage(dir / "odd.exr");
+      ASSERT_GT(image.Width, 0);
+      for (float v : image.Pixels)
+      {
+        ASSERT_TRUE(std::isfinite(v)) << mesh << " " << shading;
+      }
+    }
   }
 }

@@ -27,6 +27,21 @@ bool Has(const ShaderFeatures& f, LightKind kind)
   return false;
 }
 
+// Shared by the per-scene and the all-features code: the constants of the
+// oracle's guards, and its SpecularFalloff.
+const char* const GuardSource =
+  "const float shadelabTinyLength = 1e-20;\n"
+  "const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle\n";
+const char* const SpecularFalloffSource =
+  "float shadelabSpecularFalloff(float d, float ns)\n"
+  "{\n"
+  "  if (d < 0.01)\n"
+  "  {\n"
+  "    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));\n"
+  "  }\n"
+  "  return pow(1.0 - d, ns);\n"
+  "}\n";
+
 // The all-features baseline: the same equation for any lights, chosen at
 // run time (kinds 0 point, 1 directional, 2 spot; reflection 0 Blinn, 1 Phong).
 std::string AllFeaturesIlluminateSource()
@@ -56,18 +71,7 @@ std::string AllFeaturesIlluminateSource()
     n +
     "];\n"
     "uniform float shadelabLightExponent[" +
-    n +
-    "];\n"
-    "const float shadelabTinyLength = 1e-20;\n"
-    "const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle\n"
-    "float shadelabSpecularFalloff(float d, float ns)\n"
-    "{\n"
-    "  if (d < 0.01)\n"
-    "  {\n"
-    "    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));\n"
-    "  }\n"
-    "  return pow(1.0 - d, ns);\n"
-    "}\n"
+    n + "];\n" + GuardSource + SpecularFalloffSource +
     "vec3 shadelabIlluminate(vec3 P, vec3 N)\n"
     "{\n"
     "  vec3 I = shadelabKa * shadelabIa;\n"
@@ -164,21 +168,12 @@ std::string IlluminateSource(const ShaderFeatures& f)
          "uniform float shadelabLightExponent["
       << n << "];\n";
   }
-  s << "const float shadelabTinyLength = 1e-20;\n"
-       "const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle\n";
+  s << GuardSource;
 
   if (f.Specular)
   {
-    s << "\n"
-         "float shadelabSpecularFalloff(float d, float ns)\n"
-         "{\n"
-         "  if (d < 0.01)\n"
-         "  {\n"
-         "    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));\n"
-         "  }\n"
-         "  return pow(1.0 - d, ns);\n"
-         "}\n"
-         "\n"
+    s << SpecularFalloffSource
+      << "\n"
          "// d = 1 - cos of the specular angle, or -1 when there is no specular term.\n"
          "float shadelabSpecularD(vec3 N, vec3 L, vec3 V)\n"
          "{\n";

@@ -2,6 +2,7 @@
 // meshes, through VTK. Each command lives in its own file.
 #include "errors.h"
 #include "metadata.h"
+#include "normals_command.h"
 #include "render_command.h"
 #include "shadelabVersion.h"
 #include "vtkShadelabOutputWindow.h"
@@ -33,6 +34,8 @@ int main(int argc, char** argv)
 
   shadelab::RenderOptions render;
   CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
+  shadelab::NormalsOptions normals;
+  CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
 
   try
   {
@@ -66,6 +69,10 @@ int main(int argc, char** argv)
       vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
     }
     return shadelab::RunRender(render, commandLine);
+  }
+  if (normalsCommand->parsed())
+  {
+    return shadelab::RunNormals(normals);
   }
   return shadelab::ExitUsage;
 }

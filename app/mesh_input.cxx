@@ -1,5 +1,6 @@
 #include "mesh_input.h"
 
+#include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 
@@ -7,8 +8,6 @@
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataNormals.h>
-#include <vtkTriangleMeshPointNormals.h>
 
 namespace shadelab
 {
@@ -21,30 +20,16 @@ std::string FirstVtkError(const char* fallback)
 }
 }
 
-// Until the OpenMesh filter (issue 4): VTK's unweighted average
-// (vtkPolyDataNormals, no splitting, no reorientation, so vertices stay as
-// they are) or its area-weighted one.
 vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting)
 {
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
-  if (weighting == "area")
-  {
-    filter = vtkSmartPointer<vtkTriangleMeshPointNormals>::New();
-  }
-  else
-  {
-    auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
-    normals->SplittingOff();
-    normals->ConsistencyOff();
-    normals->ComputeCellNormalsOff();
-    filter = normals;
-  }
-  filter->SetInputData(mesh);
-  if (!filter->GetExecutive()->Update())
+  auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+  normals->SetInputData(mesh);
+  normals->SetWeightingByName(weighting.c_str());
+  if (!normals->GetExecutive()->Update())
   {
     return nullptr;
   }
-  return filter->GetOutput();
+  return normals->GetOutput();
 }
 
 LoadedMesh LoadMesh(const SceneOptions& options)
@@ -52,6 +37,9 @@ LoadedMesh LoadMesh(const SceneOptions& options)
   LoadedMesh result;
   auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
   reader->SetFileName(options.Mesh.c_str());
+  // Computed normals are smooth across an OBJ's vn seams only if the
+  // vertices are not split by the file's normals in the first place.
+  reader->SetReadNormals(options.Normals != NormalsMode::Compute);
   if (!reader->GetExecutive()->Update())
   {
     result.Error = FirstVtkError("cannot be read");

@@ -22,7 +22,7 @@ struct LoadedMesh
 
 LoadedMesh LoadMesh(const SceneOptions& options);
 
-/** mesh with vertex normals computed with weighting (uniform or area); null on failure. */
+/** mesh with vertex normals computed by vtkShadelabMeshNormals; null on failure. */
 vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting);
 }
 

@@ -340,12 +340,10 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
       "--normals", o.Normals, "auto: the file's normals if it has them, else computed (default)")
     ->transform(CLI::CheckedTransformer(modes))
     ->option_text("auto|file|compute");
-  // uniform and area are VTK's filters until the OpenMesh normals filter
-  // (issue 4) brings angle, max and loop.
   command
     .add_option("--weighting", o.Weighting,
-      "Vertex-normal weighting when normals are computed (default uniform)")
-    ->check(CLI::IsMember({ "uniform", "area" }))
-    ->option_text("uniform|area");
+      "Vertex-normal weighting when normals are computed (default angle)")
+    ->check(CLI::IsMember({ "uniform", "area", "angle", "max", "loop" }))
+    ->option_text("uniform|area|angle|max|loop");
 }
 }

@@ -58,7 +58,7 @@ struct SceneOptions
   std::optional<double> ParallelScale;
   Rgb Background{ 0, 0, 0 };
   NormalsMode Normals = NormalsMode::Auto;
-  std::string Weighting = "uniform";
+  std::string Weighting = "angle";
 
   /** The material after the --ka/--kd/--ks/--ns overrides. */
   Material EffectiveMaterial() const;

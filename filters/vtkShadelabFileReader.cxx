@@ -5,6 +5,7 @@
 #include <vtkErrorCode.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <sys/stat.h>
@@ -103,6 +104,10 @@ int vtkShadelabFileReader::RequestData(
     // empty unless the whole file was read.
     vtkNew<vtkPolyData> triangles;
     this->ReadMesh(this->FileName, triangles);
+    if (!this->ReadNormals)
+    {
+      triangles->GetPointData()->SetNormals(nullptr);
+    }
     vtkPolyData::GetData(outputVector)->ShallowCopy(triangles);
     return 1;
   }
@@ -123,4 +128,5 @@ void vtkShadelabFileReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ReadNormals: " << (this->ReadNormals ? "On" : "Off") << "\n";
 }

@@ -29,6 +29,15 @@ public:
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
 
+  /**
+   * Whether the file's normals are read (default on). Off, the output has no
+   * point normals, and an OBJ's vertices are not split by their vn (so
+   * normals computed afterwards are smooth across the file's normal seams).
+   */
+  vtkSetMacro(ReadNormals, bool);
+  vtkGetMacro(ReadNormals, bool);
+  vtkBooleanMacro(ReadNormals, bool);
+
 protected:
   vtkShadelabFileReader();
   ~vtkShadelabFileReader() override;
@@ -46,6 +55,7 @@ protected:
   static void CheckReadable(const char* fileName);
 
   char* FileName = nullptr;
+  bool ReadNormals = true;
 
 private:
   vtkShadelabFileReader(const vtkShadelabFileReader&) = delete;

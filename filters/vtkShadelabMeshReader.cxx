@@ -91,10 +91,11 @@ private:
 };
 
 template <class Reader>
-void ReadWith(const char* fileName, vtkPolyData* triangles)
+void ReadWith(const char* fileName, bool readNormals, vtkPolyData* triangles)
 {
   vtkNew<Reader> reader;
   reader->SetFileName(fileName);
+  reader->SetReadNormals(readNormals);
   NestedReader(reader).Update();
   triangles->ShallowCopy(reader->GetOutput());
 }
@@ -110,15 +111,15 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   const std::string extension = LowerExtension(fileName);
   if (extension == ".obj")
   {
-    ReadWith<vtkShadelabOBJReader>(fileName, triangles);
+    ReadWith<vtkShadelabOBJReader>(fileName, this->ReadNormals, triangles);
   }
   else if (extension == ".ply")
   {
-    ReadWith<vtkShadelabPLYReader>(fileName, triangles);
+    ReadWith<vtkShadelabPLYReader>(fileName, this->ReadNormals, triangles);
   }
   else if (extension == ".stl")
   {
-    ReadWith<vtkShadelabSTLReader>(fileName, triangles);
+    ReadWith<vtkShadelabSTLReader>(fileName, this->ReadNormals, triangles);
   }
   else if (extension == ".vtp")
   {
@@ -130,7 +131,7 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   }
   else if (extension == ".vtk")
   {
-    ReadWith<vtkShadelabLegacyVTKReader>(fileName, triangles);
+    ReadWith<vtkShadelabLegacyVTKReader>(fileName, this->ReadNormals, triangles);
   }
   else
   {

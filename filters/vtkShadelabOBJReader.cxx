@@ -214,7 +214,11 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
 {
   ObjData obj = Parse(ReadFileBytes(fileName));
   shadelab::PolygonMesh mesh;
-  if (obj.SomeCornersHaveNormals && !obj.SomeCornersLackNormals)
+  if (!this->ReadNormals)
+  {
+    mesh.Points = std::move(obj.Vertices);
+  }
+  else if (obj.SomeCornersHaveNormals && !obj.SomeCornersLackNormals)
   {
     SplitByNormal(obj, mesh);
   }

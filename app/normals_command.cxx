@@ -1,0 +1,137 @@
+#include "normals_command.h"
+
+#include "errors.h"
+#include "vtkShadelabMeshNormals.h"
+#include "vtkShadelabMeshReader.h"
+#include "vtkShadelabOutputWindow.h"
+#include "vtkShadelabPLYWriter.h"
+
+#include <vtkExecutive.h>
+#include <vtkOBJWriter.h>
+#include <vtkOutputWindow.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+namespace shadelab
+{
+CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
+{
+  CLI::App* normals = program.add_subcommand(
+    "normals", "Write MESH with computed vertex normals (and face normals where OUT has room)");
+  normals->add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk")->required();
+  normals->add_option("-o,--output", o.Output, "Output mesh: .ply .vtp .obj")
+    ->required()
+    ->option_text("OUT");
+  normals->add_option("--weighting", o.Weighting, "Vertex-normal weighting (default angle)")
+    ->check(CLI::IsMember({ "uniform", "area", "angle", "max", "loop" }))
+    ->option_text("uniform|area|angle|max|loop");
+  normals
+    ->add_option("--feature-angle", o.FeatureAngle,
+      "Split vertices where faces meet at more than DEG degrees (default: no splitting)")
+    ->check(CLI::Range(0.0, 180.0))
+    ->option_text("DEG");
+  normals->add_flag("--orient", o.Orient, "Make the faces' orientation consistent first");
+  return normals;
+}
+
+namespace
+{
+std::string FirstVtkError(const char* fallback)
+{
+  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+  return window && !window->GetFirstError().empty() ? window->GetFirstError() : fallback;
+}
+
+// Writes mesh to path in the format that ext names; errors go to VTK's
+// output window.
+template <typename Writer>
+void Write(vtkPolyData* mesh, const std::string& path)
+{
+  auto writer = vtkSmartPointer<Writer>::New();
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+}
+
+int RunNormals(const NormalsOptions& o)
+{
+  const std::string ext = Lower(std::filesystem::path(o.Output).extension().string());
+  if (ext != ".ply" && ext != ".vtp" && ext != ".obj")
+  {
+    return ReportError(o.Output, "unknown mesh format \"" + ext + "\" (known: .ply .vtp .obj)");
+  }
+  const std::string folder = std::filesystem::path(o.Output).parent_path().string();
+  if (access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
+  {
+    return ReportError(o.Output, std::string("cannot write: ") + std::strerror(errno));
+  }
+
+  auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
+  reader->SetFileName(o.Mesh.c_str());
+  reader->ReadNormalsOff(); // computed, and not split at the file's vn seams
+  auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+  normals->SetInputConnection(reader->GetOutputPort());
+  normals->SetWeightingByName(o.Weighting.c_str());
+  normals->SetSplitting(o.FeatureAngle >= 0);
+  normals->SetFeatureAngle(std::max(o.FeatureAngle, 0.0));
+  normals->SetConsistency(o.Orient);
+  if (!reader->GetExecutive()->Update())
+  {
+    return ReportError(o.Mesh, FirstVtkError("cannot be read"));
+  }
+  if (!normals->GetExecutive()->Update())
+  {
+    return ReportError(o.Mesh, "normals: " + FirstVtkError("cannot be computed"));
+  }
+  if (normals->GetNumberOfDuplicatedFaces() > 0)
+  {
+    std::cerr << "shadelab: note: " << o.Mesh << ": " << normals->GetNumberOfDuplicatedFaces()
+              << " non-manifold faces got vertices of their own" << std::endl;
+  }
+
+  // Written to a temporary name beside OUT and renamed: no partial file.
+  const std::string temporary = o.Output + ".tmp-" + std::to_string(getpid()) + ext;
+  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
+  window->Clear();
+  vtkPolyData* mesh = normals->GetOutput();
+  if (ext == ".ply")
+  {
+    Write<vtkShadelabPLYWriter>(mesh, temporary);
+  }
+  else if (ext == ".vtp")
+  {
+    Write<vtkXMLPolyDataWriter>(mesh, temporary);
+  }
+  else
+  {
+    Write<vtkOBJWriter>(mesh, temporary);
+  }
+  if (!window->GetFirstError().empty() || std::rename(temporary.c_str(), o.Output.c_str()) != 0)
+  {
+    const std::string why =
+      window->GetFirstError().empty() ? std::strerror(errno) : window->GetFirstError();
+    std::remove(temporary.c_str());
+    return ReportError(o.Output, "cannot write: " + why);
+  }
+  return 0;
+}
+}

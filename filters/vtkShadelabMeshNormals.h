@@ -1,0 +1,109 @@
+/**
+ * @class   vtkShadelabMeshNormals
+ * @brief   face and vertex normals of a triangle mesh, computed with OpenMesh
+ *
+ * Input: a polydata of triangles (what vtkShadelabMeshReader gives). Output:
+ * the same mesh with unit point normals ("Normals", float, the active
+ * normals) and unit cell normals ("Normals" in the cell data). Vertex
+ * normals are weighted averages of the face normals around each vertex:
+ *
+ * - Uniform: the plain average of the unit face normals;
+ * - Area: weighted by the faces' areas;
+ * - Angle: weighted by the face angle at the vertex (Thuermer & Wuethrich 1998);
+ * - Max: Max 1999, cross products of the incident edges over their squared
+ *   lengths (exact for a sphere);
+ * - Loop: OpenMesh's Loop-subdivision limit normal (calc_vertex_normal_loop),
+ *   defined at interior vertices of a closed fan; at boundary vertices,
+ *   split vertices and vertices of duplicated faces, where the limit normal
+ *   of a smooth surface does not apply, the angle weighting is used.
+ *
+ * Without splitting, the output has the input's points in the input's order
+ * and the input's triangles. With Splitting on, faces around a vertex are
+ * grouped by walking across edges where adjacent faces meet at no more than
+ * FeatureAngle degrees; each group beyond the first becomes a new point
+ * (appended after the input's points, in vertex order) with its own normal,
+ * and the triangles refer to it (a cube's corner becomes three points).
+ * Boundary and non-manifold edges also separate groups, as in
+ * vtkPolyDataNormals.
+ *
+ * OpenMesh's connectivity is built once per input (by its modification time),
+ * so that changing the weighting or the feature angle recomputes normals
+ * without rebuilding it. Faces that OpenMesh refuses (they would make a
+ * non-manifold edge or vertex) still get normals, through duplicated
+ * vertices; GetNumberOfDuplicatedFaces() reports how many. Zero-area faces
+ * add no weight and no NaN; a vertex with no face of positive area gets
+ * (0,0,0). Consistency on makes the faces' orientation consistent within each
+ * edge-connected part, as vtkPolyDataNormals does: the part's lowest-numbered
+ * face keeps its orientation and faces that disagree with their neighbours
+ * are reversed in the output (across manifold edges; a non-manifold edge
+ * does not propagate orientation).
+ */
+#ifndef vtkShadelabMeshNormals_h
+#define vtkShadelabMeshNormals_h
+
+#include <vtkPolyDataAlgorithm.h>
+
+#include <memory>
+
+class vtkShadelabMeshNormals : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkShadelabMeshNormals* New();
+  vtkTypeMacro(vtkShadelabMeshNormals, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Weightings
+  {
+    Uniform = 0,
+    Area,
+    Angle,
+    Max,
+    Loop
+  };
+  vtkSetClampMacro(Weighting, int, Uniform, Loop);
+  vtkGetMacro(Weighting, int);
+  /** Parses "uniform|area|angle|max|loop"; false if unknown. */
+  bool SetWeightingByName(const char* name);
+
+  vtkSetMacro(Splitting, bool);
+  vtkGetMacro(Splitting, bool);
+  vtkBooleanMacro(Splitting, bool);
+  vtkSetClampMacro(FeatureAngle, double, 0, 180);
+  vtkGetMacro(FeatureAngle, double);
+
+  vtkSetMacro(Consistency, bool);
+  vtkGetMacro(Consistency, bool);
+  vtkBooleanMacro(Consistency, bool);
+
+  /** Faces that needed duplicated vertices in the last update. */
+  vtkGetMacro(NumberOfDuplicatedFaces, vtkIdType);
+
+  /**
+   * How often the OpenMesh connectivity has been built: once per new input
+   * (or Consistency change), not when only the weighting or the feature
+   * angle changed.
+   */
+  vtkGetMacro(NumberOfConnectivityBuilds, int);
+
+protected:
+  vtkShadelabMeshNormals();
+  ~vtkShadelabMeshNormals() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkShadelabMeshNormals(const vtkShadelabMeshNormals&) = delete;
+  void operator=(const vtkShadelabMeshNormals&) = delete;
+
+  int Weighting = Angle;
+  bool Splitting = false;
+  double FeatureAngle = 30;
+  bool Consistency = false;
+  vtkIdType NumberOfDuplicatedFaces = 0;
+  int NumberOfConnectivityBuilds = 0;
+
+  struct Cache; // the OpenMesh mesh of the last input, and that input's MTime
+  std::unique_ptr<Cache> Cached;
+};
+
+#endif

@@ -2,6 +2,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
@@ -12,14 +13,18 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <future>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -35,6 +40,11 @@ struct MeshTraits : public OpenMesh::DefaultTraits
 };
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 using Vec3 = OpenMesh::Vec3d;
+
+Vec3 PointAt(const double* xyz, vtkIdType i)
+{
+  return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+}
 
 const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
 
@@ -184,8 +194,8 @@ private:
 };
 }
 
-// The connectivity of one input: what survives a change of weighting or of
-// feature angle.
+// The connectivity and the face geometry of one input: what survives a
+// change of weighting or of feature angle.
 struct vtkShadelabMeshNormals::Cache
 {
   vtkPolyData* Input = nullptr; // identity only, never dereferenced
@@ -200,7 +210,19 @@ struct vtkShadelabMeshNormals::Cache
   std::vector<bool> InDuplicatedFace; // per input point
   vtkIdType DuplicatedFaces = 0;
 
-  void Build(vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles);
+  vtkSmartPointer<vtkDoubleArray> XYZ;        // the input's points, in double
+  std::vector<Vec3> FaceNormal;               // unit; zero for faces of no area
+  std::vector<double> DoubleArea;             // |e1 x e2|; zero for faces of no area
+  vtkSmartPointer<vtkFloatArray> CellNormals; // FaceNormal as the output stores it
+  int WeightsOf = -1;                         // the weighting CornerWeight is for
+  std::vector<double> CornerWeight;           // 3 a face
+
+  /** Builds it all, with the corner weights of `weighting` ready. */
+  void Build(
+    vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles, int weighting);
+
+  /** The weight of each face corner (3 a face) for the Angle or Max weighting. */
+  const std::vector<double>& CornerWeights(int weighting);
 
   /**
    * Groups the faces around each vertex at feature edges (faces whose unit
@@ -208,12 +230,15 @@ struct vtkShadelabMeshNormals::Cache
    * non-manifold edges. Gives each output point's input point (`source`),
    * each face corner's output point, and which input points were split.
    */
-  void Split(double cosFeature, const std::vector<Vec3>& faceNormal, std::vector<vtkIdType>& source,
-    std::vector<vtkIdType>& cornerPoint, std::vector<bool>& split) const;
+  void Split(double cosFeature, std::vector<vtkIdType>& source, std::vector<vtkIdType>& cornerPoint,
+    std::vector<bool>& split) const;
+
+private:
+  void ComputeFaceNormals();
 };
 
 void vtkShadelabMeshNormals::Cache::Build(
-  vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles)
+  vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles, int weighting)
 {
   this->Input = input;
   this->InputTime = input->GetMTime();
@@ -222,20 +247,34 @@ void vtkShadelabMeshNormals::Cache::Build(
   this->Triangles = std::move(triangles);
   this->Reversed = consistency && Orient(this->Triangles, this->Points);
 
+  this->XYZ = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
+  if (!this->XYZ)
+  {
+    this->XYZ = vtkSmartPointer<vtkDoubleArray>::New();
+    this->XYZ->DeepCopy(input->GetPoints()->GetData());
+  }
+  const double* p = this->XYZ->GetPointer(0);
+  // The face geometry needs no connectivity: it is computed on a second
+  // thread while OpenMesh builds hers (add_face is most of the time). A
+  // future, so that it is waited for even if the build throws.
+  auto faceGeometry = std::async(std::launch::async,
+    [this, weighting]
+    {
+      this->ComputeFaceNormals();
+      if (weighting == Angle || weighting == Max)
+      {
+        this->CornerWeights(weighting);
+      }
+    });
+
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
   TriMesh& mesh = this->Mesh;
-  mesh.clear();
   mesh.reserve(this->Points, 3 * faces / 2 + 3, faces);
-  vtkPoints* points = input->GetPoints();
   for (vtkIdType i = 0; i < this->Points; ++i)
   {
-    double p[3];
-    points->GetPoint(i, p);
-    mesh.add_vertex(Vec3(p[0], p[1], p[2]));
+    mesh.add_vertex(PointAt(p, i));
   }
-  this->CopyOf.clear();
   this->InDuplicatedFace.assign(this->Points, false);
-  this->DuplicatedFaces = 0;
 
   QuietOpenMesh quiet;
   for (vtkIdType f = 0; f < faces; ++f)
@@ -264,6 +303,88 @@ void vtkShadelabMeshNormals::Cache::Build(
     mesh.add_face(corner[0], corner[1], corner[2]);
     ++this->DuplicatedFaces;
   }
+  faceGeometry.get();
+}
+
+void vtkShadelabMeshNormals::Cache::ComputeFaceNormals()
+{
+  const double* xyz = this->XYZ->GetPointer(0);
+  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  this->FaceNormal.resize(faces);
+  this->DoubleArea.resize(faces);
+  this->CellNormals = vtkSmartPointer<vtkFloatArray>::New();
+  this->CellNormals->SetName("Normals");
+  this->CellNormals->SetNumberOfComponents(3);
+  this->CellNormals->SetNumberOfTuples(faces);
+  float* out = this->CellNormals->GetPointer(0);
+  const vtkIdType* tri = this->Triangles.data();
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    const Vec3 p0 = PointAt(xyz, tri[3 * f]);
+    const Vec3 n =
+      OpenMesh::cross(PointAt(xyz, tri[3 * f + 1]) - p0, PointAt(xyz, tri[3 * f + 2]) - p0);
+    const double length = n.norm();
+    // Zero (or overflowing) cross products give no direction: no weight.
+    const bool usable = length > 0 && std::isfinite(length);
+    this->FaceNormal[f] = usable ? n / length : Vec3(0, 0, 0);
+    this->DoubleArea[f] = usable ? length : 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      out[3 * f + c] = static_cast<float>(this->FaceNormal[f][c]);
+    }
+  }
+}
+
+const std::vector<double>& vtkShadelabMeshNormals::Cache::CornerWeights(int weighting)
+{
+  if (this->WeightsOf == weighting)
+  {
+    return this->CornerWeight;
+  }
+  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  this->CornerWeight.resize(3 * faces);
+  // The input's points: OpenMesh's may grow meanwhile (Build).
+  const double* xyz = this->XYZ->GetPointer(0);
+  const vtkIdType* tri = this->Triangles.data();
+  const double* doubleArea = this->DoubleArea.data();
+  double* w = this->CornerWeight.data();
+  // Independent per face, so both cores share it.
+  vtkSMPTools::For(0, faces,
+    [=](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const double area2 = doubleArea[f];
+        // Edge k runs from corner k to corner k + 1.
+        const Vec3 p[3] = { PointAt(xyz, tri[3 * f]), PointAt(xyz, tri[3 * f + 1]),
+          PointAt(xyz, tri[3 * f + 2]) };
+        const Vec3 e[3] = { p[1] - p[0], p[2] - p[1], p[0] - p[2] };
+        double* corner = w + 3 * f;
+        if (area2 == 0)
+        {
+          corner[0] = corner[1] = corner[2] = 0; // a face of no area has no weight
+        }
+        else if (weighting == vtkShadelabMeshNormals::Max)
+        {
+          // Max 1999: |a x b| / (|a|^2 |b|^2) for the corner's edges a, b;
+          // |a x b| is twice the area at every corner.
+          const double l[3] = { e[0].sqrnorm(), e[1].sqrnorm(), e[2].sqrnorm() };
+          corner[0] = area2 / (l[2] * l[0]);
+          corner[1] = area2 / (l[0] * l[1]);
+          corner[2] = area2 / (l[1] * l[2]);
+        }
+        else
+        {
+          // The angle between the corner's edges as atan2(|a x b|, a.b),
+          // accurate at every size, unlike acos; the third from the sum pi.
+          corner[0] = std::atan2(area2, -OpenMesh::dot(e[0], e[2]));
+          corner[1] = std::atan2(area2, -OpenMesh::dot(e[1], e[0]));
+          corner[2] = vtkMath::Pi() - corner[0] - corner[1];
+        }
+      }
+    });
+  this->WeightsOf = weighting;
+  return this->CornerWeight;
 }
 
 vtkShadelabMeshNormals::vtkShadelabMeshNormals() = default;
@@ -293,85 +414,6 @@ void vtkShadelabMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfConnectivityBuilds: " << this->NumberOfConnectivityBuilds << "\n";
 }
 
-namespace
-{
-// Unit face normals (zero for faces of no area), and each face's |e1 x e2|.
-void FaceNormals(const TriMesh& mesh, const std::vector<vtkIdType>& tri, std::vector<Vec3>& normal,
-  std::vector<double>& doubleArea)
-{
-  const size_t faces = tri.size() / 3;
-  normal.resize(faces);
-  doubleArea.resize(faces);
-  const Vec3* p = mesh.points();
-  for (size_t f = 0; f < faces; ++f)
-  {
-    const Vec3& p0 = p[tri[3 * f]];
-    const Vec3 n = OpenMesh::cross(p[tri[3 * f + 1]] - p0, p[tri[3 * f + 2]] - p0);
-    const double length = n.norm();
-    // Zero (or overflowing) cross products give no direction: no weight.
-    const bool usable = length > 0 && std::isfinite(length);
-    normal[f] = usable ? n / length : Vec3(0, 0, 0);
-    doubleArea[f] = usable ? length : 0;
-  }
-}
-
-// Sums each face's weighted unit normal into the output point of each of its
-// corners (corner c of face f is output point cornerPoint[3f + c]).
-void SumFaceNormals(int weighting, const TriMesh& mesh, const std::vector<vtkIdType>& tri,
-  const std::vector<vtkIdType>& cornerPoint, const std::vector<Vec3>& faceNormal,
-  const std::vector<double>& doubleArea, std::vector<Vec3>& sum)
-{
-  const Vec3* p = mesh.points();
-  const size_t faces = tri.size() / 3;
-  for (size_t f = 0; f < faces; ++f)
-  {
-    const double area2 = doubleArea[f];
-    if (area2 == 0)
-    {
-      continue;
-    }
-    double w[3];
-    switch (weighting)
-    {
-      case vtkShadelabMeshNormals::Uniform:
-        w[0] = w[1] = w[2] = 1;
-        break;
-      case vtkShadelabMeshNormals::Area:
-        w[0] = w[1] = w[2] = area2;
-        break;
-      default:
-      {
-        // Edge k runs from corner k to corner k + 1.
-        const Vec3 e[3] = { p[tri[3 * f + 1]] - p[tri[3 * f]],
-          p[tri[3 * f + 2]] - p[tri[3 * f + 1]], p[tri[3 * f]] - p[tri[3 * f + 2]] };
-        if (weighting == vtkShadelabMeshNormals::Max)
-        {
-          // Max 1999: (a x b) / (|a|^2 |b|^2) with a, b the corner's edges;
-          // |a x b| is the same at every corner: twice the area.
-          const double l[3] = { e[0].sqrnorm(), e[1].sqrnorm(), e[2].sqrnorm() };
-          w[0] = area2 / (l[2] * l[0]);
-          w[1] = area2 / (l[0] * l[1]);
-          w[2] = area2 / (l[1] * l[2]);
-        }
-        else
-        {
-          // The angle at corner k between the edges leaving it, from
-          // atan2(|a x b|, a.b): accurate at every size, unlike acos.
-          for (int k = 0; k < 3; ++k)
-          {
-            w[k] = std::atan2(area2, -OpenMesh::dot(e[k], e[(k + 2) % 3]));
-          }
-        }
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      sum[cornerPoint[3 * f + k]] += w[k] * faceNormal[f];
-    }
-  }
-}
-}
-
 int vtkShadelabMeshNormals::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -382,44 +424,56 @@ int vtkShadelabMeshNormals::RequestData(
   if (!this->Cached || this->Cached->Input != input ||
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)
   {
+    this->Cached.reset();
     std::vector<vtkIdType> triangles;
     std::string error;
     input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
     if (!error.empty())
     {
       vtkErrorMacro(<< error);
-      this->Cached.reset();
       return 0;
     }
-    this->Cached = std::make_unique<Cache>();
-    this->Cached->Build(input, this->Consistency, std::move(triangles));
+    auto cache = std::make_unique<Cache>();
+    cache->Build(input, this->Consistency, std::move(triangles),
+      this->Weighting == Loop ? Angle : this->Weighting);
+    this->Cached = std::move(cache);
     ++this->NumberOfConnectivityBuilds;
   }
-  const Cache& cache = *this->Cached;
+  Cache& cache = *this->Cached;
   const TriMesh& mesh = cache.Mesh;
   const std::vector<vtkIdType>& tri = cache.Triangles;
   const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
   this->NumberOfDuplicatedFaces = cache.DuplicatedFaces;
 
-  std::vector<Vec3> faceNormal;
-  std::vector<double> doubleArea;
-  FaceNormals(mesh, tri, faceNormal, doubleArea);
-
-  // Each output point's input point; corners to output points.
+  // Each output point's input point, and each face corner's output point.
   std::vector<vtkIdType> source;
   std::vector<vtkIdType> cornerPoint;
   std::vector<bool> split;
   if (this->Splitting)
   {
-    cache.Split(std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle)), faceNormal, source,
-      cornerPoint, split);
+    cache.Split(
+      std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle)), source, cornerPoint, split);
   }
   const vtkIdType outputPoints = this->Splitting ? static_cast<vtkIdType>(source.size()) : points;
   const std::vector<vtkIdType>& corners = this->Splitting ? cornerPoint : tri;
 
+  // Each face's weighted unit normal, summed into its corners' points.
+  const int weighting = this->Weighting == Loop ? Angle : this->Weighting;
+  const double* cornerWeight =
+    weighting == Angle || weighting == Max ? cache.CornerWeights(weighting).data() : nullptr;
   std::vector<Vec3> sum(outputPoints, Vec3(0, 0, 0));
-  SumFaceNormals(this->Weighting == Loop ? Angle : this->Weighting, mesh, tri, corners, faceNormal,
-    doubleArea, sum);
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    const double area2 = cache.DoubleArea[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      // (A face of no area has a zero normal: it adds nothing.)
+      const double w = weighting == Uniform ? 1
+        : weighting == Area                 ? area2
+                                            : cornerWeight[3 * f + k];
+      sum[corners[3 * f + k]] += w * cache.FaceNormal[f];
+    }
+  }
   if (this->Weighting == Loop)
   {
     // OpenMesh's limit normal where it is one: at an interior vertex whose
@@ -454,166 +508,177 @@ int vtkShadelabMeshNormals::RequestData(
       pn[3 * i + c] = static_cast<float>(n[c]);
     }
   }
-  auto cellNormals = vtkSmartPointer<vtkFloatArray>::New();
-  cellNormals->SetName("Normals");
-  cellNormals->SetNumberOfComponents(3);
-  cellNormals->SetNumberOfTuples(faces);
-  float* cn = cellNormals->GetPointer(0);
-  for (vtkIdType f = 0; f < faces; ++f)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      cn[3 * f + c] = static_cast<float>(faceNormal[f][c]);
-    }
-  }
 
   // Geometry: the input's as it is unless points were split or faces
   // reversed; only the triangles are kept (verts, lines and strips dropped).
-  output->SetPoints(input->GetPoints());
   output->GetPointData()->CopyNormalsOff();
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
   if (this->Splitting || cache.Reversed)
   {
+    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    offsets->SetNumberOfValues(faces + 1);
+    vtkIdType* offset = offsets->GetPointer(0);
+    for (vtkIdType f = 0; f <= faces; ++f)
+    {
+      offset[f] = 3 * f;
+    }
     auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
     connectivity->SetNumberOfValues(3 * faces);
     std::copy(corners.begin(), corners.end(), connectivity->GetPointer(0));
     auto polys = vtkSmartPointer<vtkCellArray>::New();
-    polys->SetData(3, connectivity);
+    polys->SetData(offsets, connectivity);
     output->SetPolys(polys);
   }
   else
   {
     output->SetPolys(input->GetPolys());
   }
-  if (this->Splitting && outputPoints > points)
+  if (outputPoints > points)
   {
+    // The input's points, then copies of the split ones (with their data).
     auto splitPoints = vtkSmartPointer<vtkPoints>::New();
     splitPoints->SetDataType(input->GetPoints()->GetDataType());
     splitPoints->SetNumberOfPoints(outputPoints);
+    splitPoints->GetData()->InsertTuples(0, points, 0, input->GetPoints()->GetData());
     auto from = vtkSmartPointer<vtkIdList>::New();
-    from->SetNumberOfIds(outputPoints);
     auto to = vtkSmartPointer<vtkIdList>::New();
-    to->SetNumberOfIds(outputPoints);
-    for (vtkIdType i = 0; i < outputPoints; ++i)
+    from->SetNumberOfIds(outputPoints - points);
+    to->SetNumberOfIds(outputPoints - points);
+    for (vtkIdType i = points; i < outputPoints; ++i)
     {
-      splitPoints->SetPoint(i, input->GetPoint(source[i]));
-      from->SetId(i, source[i]);
-      to->SetId(i, i);
+      from->SetId(i - points, source[i]);
+      to->SetId(i - points, i);
     }
+    splitPoints->GetData()->InsertTuples(to, from, input->GetPoints()->GetData());
     output->SetPoints(splitPoints);
-    output->GetPointData()->CopyAllocate(input->GetPointData(), outputPoints);
-    output->GetPointData()->CopyData(input->GetPointData(), from, to);
+    vtkPointData* pointData = output->GetPointData();
+    pointData->CopyAllocate(input->GetPointData(), outputPoints);
+    pointData->CopyData(input->GetPointData(), 0, points, 0);
+    pointData->CopyData(input->GetPointData(), from, to);
   }
   else
   {
+    output->SetPoints(input->GetPoints());
     output->GetPointData()->PassData(input->GetPointData());
   }
   output->GetPointData()->SetNormals(pointNormals);
-  output->GetCellData()->SetNormals(cellNormals);
+  output->GetCellData()->SetNormals(cache.CellNormals);
   return 1;
 }
 
-void vtkShadelabMeshNormals::Cache::Split(double cosFeature, const std::vector<Vec3>& faceNormal,
-  std::vector<vtkIdType>& source, std::vector<vtkIdType>& cornerPoint,
-  std::vector<bool>& split) const
+void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdType>& source,
+  std::vector<vtkIdType>& cornerPoint, std::vector<bool>& split) const
 {
   const TriMesh& mesh = this->Mesh;
-  const std::vector<vtkIdType>& tri = this->Triangles;
   const vtkIdType points = this->Points;
-
   source.resize(points);
+  std::iota(source.begin(), source.end(), 0);
+  cornerPoint.assign(this->Triangles.size(), -1);
+  split.assign(points, false);
+
+  // Which edges separate the faces on their two sides: boundary and feature
+  // edges. Once per edge, on both cores, before the walks around vertices.
+  std::vector<char> separating(mesh.n_edges());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(separating.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType e = begin; e < end; ++e)
+      {
+        const auto a = mesh.face_handle(TriMesh::HalfedgeHandle(static_cast<int>(2 * e)));
+        const auto b = mesh.face_handle(TriMesh::HalfedgeHandle(static_cast<int>(2 * e + 1)));
+        separating[e] = !a.is_valid() || !b.is_valid() ||
+          OpenMesh::dot(this->FaceNormal[a.idx()], this->FaceNormal[b.idx()]) < cosFeature;
+      }
+    });
+  // An edge that OpenMesh holds as manifold may have more faces in the
+  // input, duplicated ones: it is non-manifold, and separates too.
+  for (size_t c = 0; c < this->CopyOf.size(); c += 3)
+  {
+    for (size_t k = 0; k < 3; ++k)
+    {
+      const TriMesh::HalfedgeHandle h =
+        mesh.find_halfedge(TriMesh::VertexHandle(static_cast<int>(this->CopyOf[c + k])),
+          TriMesh::VertexHandle(static_cast<int>(this->CopyOf[c + (k + 1) % 3])));
+      if (h.is_valid())
+      {
+        separating[h.idx() / 2] = 1;
+      }
+    }
+  }
+  auto separates = [&](TriMesh::HalfedgeHandle h) { return separating[h.idx() / 2] != 0; };
+
+  // Input point i's OpenMesh vertices: vertex i, then its copies in order.
+  std::vector<int> copies(this->CopyOf.size());
+  std::iota(copies.begin(), copies.end(), 0);
+  std::stable_sort(copies.begin(), copies.end(),
+    [this](int a, int b) { return this->CopyOf[a] < this->CopyOf[b]; });
+  size_t nextCopy = 0;
+
+  // Walks the fan of OpenMesh vertex vi, a vertex of input point i, giving
+  // each run of faces between separating edges an output point: i itself
+  // for the point's first run, new points after the input's for the rest.
+  bool ownNumberUsed = false;
+  auto walk = [&](int vi, vtkIdType i)
+  {
+    const TriMesh::HalfedgeHandle start = mesh.halfedge_handle(TriMesh::VertexHandle(vi));
+    if (!start.is_valid())
+    {
+      return; // no face
+    }
+    // Outgoing halfedges in turn (h -> next(opposite(h))): the face of the
+    // next one lies across the edge of this one. Start a run just after a
+    // separation (a closed smooth fan has none and is one run).
+    TriMesh::HalfedgeHandle first = start;
+    TriMesh::HalfedgeHandle h = start;
+    do
+    {
+      if (separates(h))
+      {
+        first = mesh.cw_rotated_halfedge_handle(h);
+        break;
+      }
+      h = mesh.cw_rotated_halfedge_handle(h);
+    } while (h != start);
+
+    vtkIdType group = -1;
+    h = first;
+    do
+    {
+      const TriMesh::FaceHandle f = mesh.face_handle(h);
+      if (f.is_valid())
+      {
+        if (group < 0)
+        {
+          group = ownNumberUsed ? static_cast<vtkIdType>(source.size()) : i;
+          if (ownNumberUsed)
+          {
+            split[i] = true;
+            source.push_back(i);
+          }
+          ownNumberUsed = true;
+        }
+        // The corner's number in the face: copies are made three at a time
+        // in corner order; an original vertex is found by its id (a face
+        // that repeats an id was duplicated).
+        const vtkIdType* ids = &this->Triangles[3 * f.idx()];
+        const int k = vi >= points ? (vi - points) % 3 : ids[0] == i ? 0 : ids[1] == i ? 1 : 2;
+        cornerPoint[3 * f.idx() + k] = group;
+      }
+      if (separates(h))
+      {
+        group = -1;
+      }
+      h = mesh.cw_rotated_halfedge_handle(h);
+    } while (h != first);
+  };
   for (vtkIdType i = 0; i < points; ++i)
   {
-    source[i] = i;
-  }
-  cornerPoint.assign(tri.size(), -1);
-  split.assign(points, false);
-  std::vector<bool> taken(points, false);
-
-  // The faces around one OpenMesh vertex, grouped by a small union-find:
-  // neighbours across an edge that is manifold and not a feature join.
-  std::vector<int> face;
-  std::vector<int> parent;
-  std::vector<vtkIdType> groupPoint;
-  auto find = [&parent](int i)
-  {
-    while (parent[i] != i)
+    ownNumberUsed = false;
+    walk(static_cast<int>(i), i);
+    for (; nextCopy < copies.size() && this->CopyOf[copies[nextCopy]] == i; ++nextCopy)
     {
-      i = parent[i] = parent[parent[i]];
-    }
-    return i;
-  };
-  auto local = [&face](int f)
-  {
-    for (size_t i = 0; i < face.size(); ++i)
-    {
-      if (face[i] == f)
-      {
-        return static_cast<int>(i);
-      }
-    }
-    return -1;
-  };
-  for (const auto v : mesh.vertices())
-  {
-    const vtkIdType inputPoint = v.idx() < points ? v.idx() : this->CopyOf[v.idx() - points];
-    face.clear();
-    for (const auto f : v.faces())
-    {
-      face.push_back(f.idx());
-    }
-    if (face.empty())
-    {
-      continue;
-    }
-    parent.resize(face.size());
-    for (size_t i = 0; i < face.size(); ++i)
-    {
-      parent[i] = static_cast<int>(i);
-    }
-    for (const auto h : v.outgoing_halfedges())
-    {
-      if (h.is_boundary() || h.opp().is_boundary())
-      {
-        continue;
-      }
-      const int a = h.face().idx();
-      const int b = h.opp().face().idx();
-      if (OpenMesh::dot(faceNormal[a], faceNormal[b]) >= cosFeature)
-      {
-        parent[find(local(a))] = find(local(b));
-      }
-    }
-    // Group roots to output points: the input point's own number for the
-    // first group that reaches it, new points after the input's for the rest.
-    groupPoint.assign(face.size(), -1);
-    for (size_t i = 0; i < face.size(); ++i)
-    {
-      const int root = find(static_cast<int>(i));
-      if (groupPoint[root] < 0)
-      {
-        if (!taken[inputPoint])
-        {
-          taken[inputPoint] = true;
-          groupPoint[root] = inputPoint;
-        }
-        else
-        {
-          split[inputPoint] = true;
-          groupPoint[root] = static_cast<vtkIdType>(source.size());
-          source.push_back(inputPoint);
-        }
-      }
-      // The corner's number in the face: copies are made three at a time in
-      // corner order; an original vertex is found by its id (a face that
-      // repeats an id was duplicated).
-      const vtkIdType* ids = &tri[3 * face[i]];
-      const int k = v.idx() >= points ? (v.idx() - points) % 3
-        : ids[0] == inputPoint        ? 0
-        : ids[1] == inputPoint        ? 1
-                                      : 2;
-      cornerPoint[3 * face[i] + k] = groupPoint[root];
+      walk(static_cast<int>(points) + copies[nextCopy], i);
     }
   }
 }

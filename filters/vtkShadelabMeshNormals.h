@@ -31,8 +31,9 @@
  * without rebuilding it. Faces that OpenMesh refuses (they would make a
  * non-manifold edge or vertex) still get normals, through duplicated
  * vertices; GetNumberOfDuplicatedFaces() reports how many. Zero-area faces
- * add no weight and no NaN; a vertex with no face of positive area gets
- * (0,0,0). Consistency on makes the faces' orientation consistent within each
+ * add no weight and no NaN; a vertex with no face of positive area (or whose
+ * faces' weighted normals cancel, as for a face and its reverse) gets
+ * (0,0,0), which shadelab's shaders treat as "no normal". Consistency on makes the faces' orientation consistent within each
  * edge-connected part, as vtkPolyDataNormals does: the part's lowest-numbered
  * face keeps its orientation and faces that disagree with their neighbours
  * are reversed in the output (across manifold edges; a non-manifold edge

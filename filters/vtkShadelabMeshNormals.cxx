@@ -221,16 +221,20 @@ struct vtkShadelabMeshNormals::Cache
   void Build(
     vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles, int weighting);
 
-  /** The weight of each face corner (3 a face) for the Angle or Max weighting. */
-  const std::vector<double>& CornerWeights(int weighting);
+  /**
+   * The weight of each face corner (3 a face) for the Angle or Max
+   * weighting, on both cores unless `parallel` is false.
+   */
+  const std::vector<double>& CornerWeights(int weighting, bool parallel = true);
 
   /**
    * Groups the faces around each vertex at feature edges (faces whose unit
    * normals' dot product is below cosFeature) and at boundary and
    * non-manifold edges. Gives each output point's input point (`source`),
-   * each face corner's output point, and which input points were split.
+   * each face corner's output point (`cornerPoint`, 3 a face), and which
+   * input points were split.
    */
-  void Split(double cosFeature, std::vector<vtkIdType>& source, std::vector<vtkIdType>& cornerPoint,
+  void Split(double cosFeature, std::vector<vtkIdType>& source, vtkIdType* cornerPoint,
     std::vector<bool>& split) const;
 
 private:
@@ -263,16 +267,19 @@ void vtkShadelabMeshNormals::Cache::Build(
       this->ComputeFaceNormals();
       if (weighting == Angle || weighting == Max)
       {
-        this->CornerWeights(weighting);
+        // One core: the other is busy with add_face.
+        this->CornerWeights(weighting, false);
       }
     });
 
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
   TriMesh& mesh = this->Mesh;
+  // The input's points as OpenMesh's first vertices, set in place.
   mesh.reserve(this->Points, 3 * faces / 2 + 3, faces);
+  mesh.resize(this->Points, 0, 0);
   for (vtkIdType i = 0; i < this->Points; ++i)
   {
-    mesh.add_vertex(PointAt(p, i));
+    mesh.set_point(TriMesh::VertexHandle(static_cast<int>(i)), PointAt(p, i));
   }
   this->InDuplicatedFace.assign(this->Points, false);
 
@@ -335,7 +342,8 @@ void vtkShadelabMeshNormals::Cache::ComputeFaceNormals()
   }
 }
 
-const std::vector<double>& vtkShadelabMeshNormals::Cache::CornerWeights(int weighting)
+const std::vector<double>& vtkShadelabMeshNormals::Cache::CornerWeights(
+  int weighting, bool parallel)
 {
   if (this->WeightsOf == weighting)
   {
@@ -348,41 +356,48 @@ const std::vector<double>& vtkShadelabMeshNormals::Cache::CornerWeights(int weig
   const vtkIdType* tri = this->Triangles.data();
   const double* doubleArea = this->DoubleArea.data();
   double* w = this->CornerWeight.data();
-  // Independent per face, so both cores share it.
-  vtkSMPTools::For(0, faces,
-    [=](vtkIdType begin, vtkIdType end)
+  // Independent per face, so cores can share it.
+  auto weigh = [=](vtkIdType begin, vtkIdType end)
+  {
+    for (vtkIdType f = begin; f < end; ++f)
     {
-      for (vtkIdType f = begin; f < end; ++f)
+      const double area2 = doubleArea[f];
+      // Edge k runs from corner k to corner k + 1.
+      const Vec3 p[3] = { PointAt(xyz, tri[3 * f]), PointAt(xyz, tri[3 * f + 1]),
+        PointAt(xyz, tri[3 * f + 2]) };
+      const Vec3 e[3] = { p[1] - p[0], p[2] - p[1], p[0] - p[2] };
+      double* corner = w + 3 * f;
+      if (area2 == 0)
       {
-        const double area2 = doubleArea[f];
-        // Edge k runs from corner k to corner k + 1.
-        const Vec3 p[3] = { PointAt(xyz, tri[3 * f]), PointAt(xyz, tri[3 * f + 1]),
-          PointAt(xyz, tri[3 * f + 2]) };
-        const Vec3 e[3] = { p[1] - p[0], p[2] - p[1], p[0] - p[2] };
-        double* corner = w + 3 * f;
-        if (area2 == 0)
-        {
-          corner[0] = corner[1] = corner[2] = 0; // a face of no area has no weight
-        }
-        else if (weighting == vtkShadelabMeshNormals::Max)
-        {
-          // Max 1999: |a x b| / (|a|^2 |b|^2) for the corner's edges a, b;
-          // |a x b| is twice the area at every corner.
-          const double l[3] = { e[0].sqrnorm(), e[1].sqrnorm(), e[2].sqrnorm() };
-          corner[0] = area2 / (l[2] * l[0]);
-          corner[1] = area2 / (l[0] * l[1]);
-          corner[2] = area2 / (l[1] * l[2]);
-        }
-        else
-        {
-          // The angle between the corner's edges as atan2(|a x b|, a.b),
-          // accurate at every size, unlike acos; the third from the sum pi.
-          corner[0] = std::atan2(area2, -OpenMesh::dot(e[0], e[2]));
-          corner[1] = std::atan2(area2, -OpenMesh::dot(e[1], e[0]));
-          corner[2] = vtkMath::Pi() - corner[0] - corner[1];
-        }
+        corner[0] = corner[1] = corner[2] = 0; // a face of no area has no weight
       }
-    });
+      else if (weighting == vtkShadelabMeshNormals::Max)
+      {
+        // Max 1999: |a x b| / (|a|^2 |b|^2) for the corner's edges a, b;
+        // |a x b| is twice the area at every corner.
+        const double l[3] = { e[0].sqrnorm(), e[1].sqrnorm(), e[2].sqrnorm() };
+        corner[0] = area2 / (l[2] * l[0]);
+        corner[1] = area2 / (l[0] * l[1]);
+        corner[2] = area2 / (l[1] * l[2]);
+      }
+      else
+      {
+        // The angle between the corner's edges as atan2(|a x b|, a.b),
+        // accurate at every size, unlike acos; the third from the sum pi.
+        corner[0] = std::atan2(area2, -OpenMesh::dot(e[0], e[2]));
+        corner[1] = std::atan2(area2, -OpenMesh::dot(e[1], e[0]));
+        corner[2] = vtkMath::Pi() - corner[0] - corner[1];
+      }
+    }
+  };
+  if (parallel)
+  {
+    vtkSMPTools::For(0, faces, weigh);
+  }
+  else
+  {
+    weigh(0, faces);
+  }
   this->WeightsOf = weighting;
   return this->CornerWeight;
 }
@@ -445,17 +460,27 @@ int vtkShadelabMeshNormals::RequestData(
   const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
   this->NumberOfDuplicatedFaces = cache.DuplicatedFaces;
 
-  // Each output point's input point, and each face corner's output point.
+  // Each output point's input point, and each face corner's output point:
+  // the output's own triangles where they differ from the input's.
+  vtkSmartPointer<vtkIdTypeArray> connectivity;
   std::vector<vtkIdType> source;
-  std::vector<vtkIdType> cornerPoint;
   std::vector<bool> split;
+  if (this->Splitting || cache.Reversed)
+  {
+    connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    connectivity->SetNumberOfValues(3 * faces);
+  }
   if (this->Splitting)
   {
-    cache.Split(
-      std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle)), source, cornerPoint, split);
+    cache.Split(std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle)), source,
+      connectivity->GetPointer(0), split);
+  }
+  else if (cache.Reversed)
+  {
+    std::copy(tri.begin(), tri.end(), connectivity->GetPointer(0));
   }
   const vtkIdType outputPoints = this->Splitting ? static_cast<vtkIdType>(source.size()) : points;
-  const std::vector<vtkIdType>& corners = this->Splitting ? cornerPoint : tri;
+  const vtkIdType* corners = connectivity ? connectivity->GetPointer(0) : tri.data();
 
   // Each face's weighted unit normal, summed into its corners' points.
   const int weighting = this->Weighting == Loop ? Angle : this->Weighting;
@@ -477,21 +502,28 @@ int vtkShadelabMeshNormals::RequestData(
   if (this->Weighting == Loop)
   {
     // OpenMesh's limit normal where it is one: at an interior vertex whose
-    // whole fan is one smooth piece of a manifold mesh.
-    for (vtkIdType i = 0; i < points; ++i)
-    {
-      const TriMesh::VertexHandle v(static_cast<int>(i));
-      if (mesh.is_boundary(v) || mesh.valence(v) < 3 || cache.InDuplicatedFace[i] ||
-        (this->Splitting && split[i]))
+    // whole fan is one smooth piece of a manifold mesh. Per vertex, on both
+    // cores; OpenMesh makes its table of Loop weights on first use, so that
+    // happens here first.
+    OpenMesh::LoopSchemeMaskDoubleSingleton::Instance();
+    vtkSMPTools::For(0, points,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        continue;
-      }
-      TriMesh::Normal n;
-      // Unnormalised, and on the side of the faces' normals (OpenMesh
-      // crosses its tangents as cross(t_w, t_v) for that).
-      mesh.calc_vertex_normal_loop(v, n);
-      sum[i] = n;
-    }
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const TriMesh::VertexHandle v(static_cast<int>(i));
+          if (mesh.is_boundary(v) || mesh.valence(v) < 3 || cache.InDuplicatedFace[i] ||
+            (this->Splitting && split[i]))
+          {
+            continue;
+          }
+          TriMesh::Normal n;
+          // Unnormalised, and on the side of the faces' normals (OpenMesh
+          // crosses its tangents as cross(t_w, t_v) for that).
+          mesh.calc_vertex_normal_loop(v, n);
+          sum[i] = n;
+        }
+      });
   }
 
   auto pointNormals = vtkSmartPointer<vtkFloatArray>::New();
@@ -514,7 +546,7 @@ int vtkShadelabMeshNormals::RequestData(
   output->GetPointData()->CopyNormalsOff();
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
-  if (this->Splitting || cache.Reversed)
+  if (connectivity)
   {
     auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
     offsets->SetNumberOfValues(faces + 1);
@@ -523,9 +555,6 @@ int vtkShadelabMeshNormals::RequestData(
     {
       offset[f] = 3 * f;
     }
-    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-    connectivity->SetNumberOfValues(3 * faces);
-    std::copy(corners.begin(), corners.end(), connectivity->GetPointer(0));
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     polys->SetData(offsets, connectivity);
     output->SetPolys(polys);
@@ -568,13 +597,12 @@ int vtkShadelabMeshNormals::RequestData(
 }
 
 void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdType>& source,
-  std::vector<vtkIdType>& cornerPoint, std::vector<bool>& split) const
+  vtkIdType* cornerPoint, std::vector<bool>& split) const
 {
   const TriMesh& mesh = this->Mesh;
   const vtkIdType points = this->Points;
   source.resize(points);
   std::iota(source.begin(), source.end(), 0);
-  cornerPoint.assign(this->Triangles.size(), -1);
   split.assign(points, false);
 
   // Which edges separate the faces on their two sides: boundary and feature
@@ -608,77 +636,115 @@ void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdTy
   }
   auto separates = [&](TriMesh::HalfedgeHandle h) { return separating[h.idx() / 2] != 0; };
 
-  // Input point i's OpenMesh vertices: vertex i, then its copies in order.
+  // Input point i's OpenMesh vertices: vertex i, then its copies in order,
+  // copies[copyFirst[i]] to copies[copyFirst[i + 1] - 1].
+  std::vector<vtkIdType> copyFirst(points + 1, 0);
+  for (const vtkIdType i : this->CopyOf)
+  {
+    ++copyFirst[i + 1];
+  }
+  std::partial_sum(copyFirst.begin(), copyFirst.end(), copyFirst.begin());
   std::vector<int> copies(this->CopyOf.size());
-  std::iota(copies.begin(), copies.end(), 0);
-  std::stable_sort(copies.begin(), copies.end(),
-    [this](int a, int b) { return this->CopyOf[a] < this->CopyOf[b]; });
-  size_t nextCopy = 0;
-
-  // Walks the fan of OpenMesh vertex vi, a vertex of input point i, giving
-  // each run of faces between separating edges an output point: i itself
-  // for the point's first run, new points after the input's for the rest.
-  bool ownNumberUsed = false;
-  auto walk = [&](int vi, vtkIdType i)
   {
-    const TriMesh::HalfedgeHandle start = mesh.halfedge_handle(TriMesh::VertexHandle(vi));
-    if (!start.is_valid())
+    std::vector<vtkIdType> fill(copyFirst.begin(), copyFirst.end() - 1);
+    for (size_t c = 0; c < this->CopyOf.size(); ++c)
     {
-      return; // no face
-    }
-    // Outgoing halfedges in turn (h -> next(opposite(h))): the face of the
-    // next one lies across the edge of this one. Start a run just after a
-    // separation (a closed smooth fan has none and is one run).
-    TriMesh::HalfedgeHandle first = start;
-    TriMesh::HalfedgeHandle h = start;
-    do
-    {
-      if (separates(h))
-      {
-        first = mesh.cw_rotated_halfedge_handle(h);
-        break;
-      }
-      h = mesh.cw_rotated_halfedge_handle(h);
-    } while (h != start);
-
-    vtkIdType group = -1;
-    h = first;
-    do
-    {
-      const TriMesh::FaceHandle f = mesh.face_handle(h);
-      if (f.is_valid())
-      {
-        if (group < 0)
-        {
-          group = ownNumberUsed ? static_cast<vtkIdType>(source.size()) : i;
-          if (ownNumberUsed)
-          {
-            split[i] = true;
-            source.push_back(i);
-          }
-          ownNumberUsed = true;
-        }
-        // The corner's number in the face: copies are made three at a time
-        // in corner order; an original vertex is found by its id (a face
-        // that repeats an id was duplicated).
-        const vtkIdType* ids = &this->Triangles[3 * f.idx()];
-        const int k = vi >= points ? (vi - points) % 3 : ids[0] == i ? 0 : ids[1] == i ? 1 : 2;
-        cornerPoint[3 * f.idx() + k] = group;
-      }
-      if (separates(h))
-      {
-        group = -1;
-      }
-      h = mesh.cw_rotated_halfedge_handle(h);
-    } while (h != first);
-  };
-  for (vtkIdType i = 0; i < points; ++i)
-  {
-    ownNumberUsed = false;
-    walk(static_cast<int>(i), i);
-    for (; nextCopy < copies.size() && this->CopyOf[copies[nextCopy]] == i; ++nextCopy)
-    {
-      walk(static_cast<int>(points) + copies[nextCopy], i);
+      copies[fill[this->CopyOf[c]]++] = static_cast<int>(c);
     }
   }
+
+  // First, on both cores: round the fans of each input point's vertices,
+  // the runs of faces between separations, numbered 0, 1, ... per point in
+  // the corners (for now) and counted.
+  std::vector<int> runs(points, 0);
+  vtkSMPTools::For(0, points,
+    [&](vtkIdType firstPoint, vtkIdType endPoint)
+    {
+      struct FanFace
+      {
+        int Face;           // -1 for the gap of a boundary
+        bool SeparatesNext; // from the next face round the fan
+      };
+      std::vector<FanFace> fan;
+      for (vtkIdType i = firstPoint; i < endPoint; ++i)
+      {
+        auto walk = [&](int vi)
+        {
+          const TriMesh::HalfedgeHandle start = mesh.halfedge_handle(TriMesh::VertexHandle(vi));
+          if (!start.is_valid())
+          {
+            return; // no face
+          }
+          // Outgoing halfedges in turn (h -> next(opposite(h))): the face of
+          // the next one lies across the edge of this one. The first run
+          // starts after the last separation (a closed smooth fan has none
+          // and is one run).
+          fan.clear();
+          TriMesh::HalfedgeHandle h = start;
+          do
+          {
+            fan.push_back({ mesh.face_handle(h).idx(), separates(h) });
+            h = mesh.cw_rotated_halfedge_handle(h);
+          } while (h != start);
+          const size_t n = fan.size();
+          size_t begin = 0;
+          for (size_t j = 0; j < n; ++j)
+          {
+            if (fan[j].SeparatesNext)
+            {
+              begin = j + 1;
+              break;
+            }
+          }
+          bool inRun = false;
+          for (size_t j = 0; j < n; ++j)
+          {
+            const FanFace& face = fan[(begin + j) % n];
+            if (face.Face >= 0)
+            {
+              if (!inRun)
+              {
+                inRun = true;
+                ++runs[i];
+              }
+              // The corner's number in the face: copies are made three at a
+              // time in corner order; an original vertex is found by its id
+              // (a face that repeats an id was duplicated).
+              const vtkIdType* ids = &this->Triangles[3 * face.Face];
+              const int k = vi >= points ? (vi - points) % 3
+                : ids[0] == i            ? 0
+                : ids[1] == i            ? 1
+                                         : 2;
+              cornerPoint[3 * face.Face + k] = runs[i] - 1;
+            }
+            inRun = inRun && !face.SeparatesNext;
+          }
+        };
+        walk(static_cast<int>(i));
+        for (vtkIdType c = copyFirst[i]; c < copyFirst[i + 1]; ++c)
+        {
+          walk(static_cast<int>(points) + copies[c]);
+        }
+      }
+    });
+
+  // Then the output points: input point i keeps its number for its first
+  // run; its other runs become new points, appended in input order.
+  std::vector<vtkIdType> firstNew(points);
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    firstNew[i] = static_cast<vtkIdType>(source.size());
+    split[i] = runs[i] > 1;
+    source.insert(source.end(), std::max(runs[i] - 1, 0), i);
+  }
+  const vtkIdType* tri = this->Triangles.data();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(this->Triangles.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        const vtkIdType run = cornerPoint[c];
+        cornerPoint[c] = run == 0 ? tri[c] : firstNew[tri[c]] + run - 1;
+      }
+    });
 }

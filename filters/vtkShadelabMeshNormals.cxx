@@ -82,6 +82,30 @@ struct TriangleIds
   }
 };
 
+// The indices of `keys` grouped by key, in order (a counting sort): those of
+// key k are Items[First[k]] to Items[First[k + 1] - 1].
+struct Buckets
+{
+  std::vector<vtkIdType> First;
+  std::vector<vtkIdType> Items;
+
+  Buckets(const std::vector<vtkIdType>& keys, vtkIdType keyCount)
+    : First(keyCount + 1, 0)
+    , Items(keys.size())
+  {
+    for (const vtkIdType k : keys)
+    {
+      ++this->First[k + 1];
+    }
+    std::partial_sum(this->First.begin(), this->First.end(), this->First.begin());
+    std::vector<vtkIdType> fill(this->First.begin(), this->First.end() - 1);
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+      this->Items[fill[keys[i]]++] = static_cast<vtkIdType>(i);
+    }
+  }
+};
+
 // True when face g has the directed edge a -> b.
 bool HasEdge(const vtkIdType* g, vtkIdType a, vtkIdType b)
 {
@@ -96,25 +120,8 @@ bool HasEdge(const vtkIdType* g, vtkIdType a, vtkIdType b)
 bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
 {
   const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
-  // The faces around each point, as offsets into one list.
-  std::vector<vtkIdType> first(points + 1, 0);
-  for (vtkIdType id : tri)
-  {
-    ++first[id + 1];
-  }
-  for (vtkIdType p = 0; p < points; ++p)
-  {
-    first[p + 1] += first[p];
-  }
-  std::vector<vtkIdType> around(tri.size());
-  std::vector<vtkIdType> fill(first.begin(), first.end() - 1);
-  for (vtkIdType f = 0; f < faces; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      around[fill[tri[3 * f + k]]++] = f;
-    }
-  }
+  // The face corners at each point (corner c is in face c / 3).
+  const Buckets around(tri, points);
 
   bool reversed = false;
   std::vector<bool> reached(faces, false);
@@ -143,9 +150,9 @@ bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
         // (non-manifold) pass no orientation on.
         vtkIdType other = -1;
         int count = 0;
-        for (vtkIdType i = first[a]; i < first[a + 1]; ++i)
+        for (vtkIdType i = around.First[a]; i < around.First[a + 1]; ++i)
         {
-          const vtkIdType g = around[i];
+          const vtkIdType g = around.Items[i] / 3;
           const vtkIdType* ids = &tri[3 * g];
           if (g != f && g != other && (ids[0] == b || ids[1] == b || ids[2] == b))
           {
@@ -636,22 +643,8 @@ void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdTy
   }
   auto separates = [&](TriMesh::HalfedgeHandle h) { return separating[h.idx() / 2] != 0; };
 
-  // Input point i's OpenMesh vertices: vertex i, then its copies in order,
-  // copies[copyFirst[i]] to copies[copyFirst[i + 1] - 1].
-  std::vector<vtkIdType> copyFirst(points + 1, 0);
-  for (const vtkIdType i : this->CopyOf)
-  {
-    ++copyFirst[i + 1];
-  }
-  std::partial_sum(copyFirst.begin(), copyFirst.end(), copyFirst.begin());
-  std::vector<int> copies(this->CopyOf.size());
-  {
-    std::vector<vtkIdType> fill(copyFirst.begin(), copyFirst.end() - 1);
-    for (size_t c = 0; c < this->CopyOf.size(); ++c)
-    {
-      copies[fill[this->CopyOf[c]]++] = static_cast<int>(c);
-    }
-  }
+  // Input point i's OpenMesh vertices: vertex i, then its copies in order.
+  const Buckets copies(this->CopyOf, points);
 
   // First, on both cores: round the fans of each input point's vertices,
   // the runs of faces between separations, numbered 0, 1, ... per point in
@@ -721,9 +714,9 @@ void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdTy
           }
         };
         walk(static_cast<int>(i));
-        for (vtkIdType c = copyFirst[i]; c < copyFirst[i + 1]; ++c)
+        for (vtkIdType c = copies.First[i]; c < copies.First[i + 1]; ++c)
         {
-          walk(static_cast<int>(points) + copies[c]);
+          walk(static_cast<int>(points + copies.Items[c]));
         }
       }
     });

@@ -1,4 +1,5 @@
 #include "shadelabShadingOracle.h"
+#include "shadelabVec3.h"
 
 #include <cmath>
 
@@ -6,40 +7,10 @@ namespace shadelab
 {
 namespace
 {
-// GLSL's vector operations, in double.
-Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec3 operator-(const Vec3& a)
-{
-  return { -a[0], -a[1], -a[2] };
-}
-Vec3 operator*(double s, const Vec3& a)
-{
-  return { s * a[0], s * a[1], s * a[2] };
-}
 Rgb Mul(const Rgb& a, const Rgb& b)
 {
   return { a[0] * b[0], a[1] * b[1], a[2] * b[2] };
 }
-double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double length(const Vec3& a)
-{
-  return std::sqrt(dot(a, a));
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-
 // Below this length a normal or a direction is taken as undefined.
 constexpr double TinyLength = 1e-20;
 // An interpolated normal shorter than this falls back to the geometric one.

@@ -13,6 +13,7 @@
 // centre in the xy plane are those of the fragment.
 #include "cli_test_support.h"
 #include "shadelabShadingOracle.h"
+#include "shadelabVec3.h"
 
 #include <gtest/gtest.h>
 
@@ -27,11 +28,17 @@
 #include <vector>
 
 using namespace shadelab_test;
+using shadelab::operator+;
+using shadelab::operator-;
+using shadelab::operator*;
+using shadelab::cross;
+using shadelab::dot;
 using shadelab::FrameLight;
 using shadelab::IlluminationInputs;
 using shadelab::Light;
 using shadelab::LightKind;
 using shadelab::Material;
+using shadelab::normalize;
 using shadelab::Reflection;
 using shadelab::Rgb;
 using shadelab::Shading;
@@ -49,31 +56,6 @@ constexpr double ParallelScale = 1.1;
 // boundary or another curve where a term switches on or off.
 constexpr double EdgeMargin = 1.5;
 
-Vec3 Add(const Vec3& a, const Vec3& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-Vec3 Sub(const Vec3& a, const Vec3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec3 Scaled(double s, const Vec3& a)
-{
-  return { s * a[0], s * a[1], s * a[2] };
-}
-double Dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 Cross(const Vec3& a, const Vec3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-Vec3 Normalized(const Vec3& a)
-{
-  const double len = std::sqrt(Dot(a, a));
-  return len > 0 ? Scaled(1 / len, a) : a;
-}
 // z of the cross product of two xy vectors: twice the signed area.
 double Cross2(const Vec3& a, const Vec3& b)
 {
@@ -125,7 +107,7 @@ struct GridSpec
 // The vertex normal at (x, y), before rounding to float.
 Vec3 GridNormal(const GridSpec& g, double x, double y)
 {
-  return Normalized(Add(Normalized({ -g.SlopeX, -g.SlopeY, 1 }), Scaled(g.Bump, { x, y, 0 })));
+  return normalize(normalize({ -g.SlopeX, -g.SlopeY, 1 }) + g.Bump * Vec3{ x, y, 0 });
 }
 
 Mesh Grid(const GridSpec& g)
@@ -141,7 +123,7 @@ Mesh Grid(const GridSpec& g)
       Vec3 normal = GridNormal(g, x, y);
       if (g.BackFaces)
       {
-        normal = Scaled(-1, normal);
+        normal = -normal;
       }
       for (const auto& zero : g.ZeroNormals)
       {
@@ -237,7 +219,7 @@ struct Scene
   int Size = 96;
   bool EightBit = false; // PNG instead of float EXR
 
-  Vec3 World(const Vec3& p) const { return Add(this->Offset, Scaled(this->Scale, p)); }
+  Vec3 World(const Vec3& p) const { return this->Offset + this->Scale * p; }
 };
 
 std::vector<Light> WorldLights(const Scene& s)
@@ -420,12 +402,11 @@ public:
       << ", V (0, 0, 1)";
     for (const FrameLight& l : this->In.Lights)
     {
-      const Vec3 L = l.Kind == LightKind::Directional ? Scaled(-1, l.Direction)
-                                                      : Normalized(Sub(l.Position, e.P));
-      s << "; " << shadelab::ToString(l.Kind) << " L " << Show(L) << " N.L " << Dot(e.N, L);
+      const Vec3 L = l.Kind == LightKind::Directional ? -l.Direction : normalize(l.Position - e.P);
+      s << "; " << shadelab::ToString(l.Kind) << " L " << Show(L) << " N.L " << dot(e.N, L);
       if (l.Kind == LightKind::Spot)
       {
-        s << " cos " << -Dot(L, l.Direction) << " (cut-off " << l.CosCutoff << ")";
+        s << " cos " << -dot(L, l.Direction) << " (cut-off " << l.CosCutoff << ")";
       }
     }
     return s.str();
@@ -440,8 +421,8 @@ private:
     const Vec3& a = this->M.Positions[tri[0]];
     const Vec3& b = this->M.Positions[tri[1]];
     const Vec3& c = this->M.Positions[tri[2]];
-    const double area = Cross2(Sub(b, a), Sub(c, a));
-    w = { Cross2(Sub(b, q), Sub(c, q)) / area, Cross2(Sub(c, q), Sub(a, q)) / area, 0 };
+    const double area = Cross2(b - a, c - a);
+    w = { Cross2(b - q, c - q) / area, Cross2(c - q, a - q) / area, 0 };
     w[2] = 1 - w[0] - w[1];
     const bool inside = w[0] > 0 && w[1] > 0 && w[2] > 0;
     double d = 1e300;
@@ -450,8 +431,8 @@ private:
       const Vec3& a0 = this->M.Positions[tri[k]];
       const Vec3& a1 = this->M.Positions[tri[(k + 1) % 3]];
       const Vec3 p0{ a0[0], a0[1], 0 }, e{ a1[0] - a0[0], a1[1] - a0[1], 0 }; // in the xy plane
-      const double along = std::clamp(Dot(Sub(q, p0), e) / Dot(e, e), 0.0, 1.0);
-      const Vec3 off = Sub(q, Add(p0, Scaled(along, e)));
+      const double along = std::clamp(dot(q - p0, e) / dot(e, e), 0.0, 1.0);
+      const Vec3 off = q - (p0 + along * e);
       d = std::min(d, std::hypot(off[0], off[1]));
     }
     d /= this->PixelSize();
@@ -463,7 +444,7 @@ private:
     Vec3 p{ 0, 0, 0 };
     for (int k = 0; k < 3; ++k)
     {
-      p = Add(p, Scaled(w[k], this->WorldPositions[this->M.Triangles[t][k]]));
+      p = p + w[k] * this->WorldPositions[this->M.Triangles[t][k]];
     }
     return p;
   }
@@ -481,14 +462,12 @@ private:
     std::vector<bool> on;
     for (const FrameLight& l : this->In.Lights)
     {
-      const Vec3 L = l.Kind == LightKind::Directional ? Scaled(-1, l.Direction)
-                                                      : Normalized(Sub(l.Position, at.P));
+      const Vec3 L = l.Kind == LightKind::Directional ? -l.Direction : normalize(l.Position - at.P);
       const Vec3 V{ 0, 0, 1 };
-      const double NdotL = Dot(at.N, L);
-      const double base = this->S.Model == Reflection::BlinnPhong
-        ? Dot(at.N, Normalized(Add(L, V)))
-        : Dot(V, Sub(Scaled(2 * NdotL, at.N), L));
-      on.push_back(l.Kind != LightKind::Spot || -Dot(L, l.Direction) >= l.CosCutoff);
+      const double NdotL = dot(at.N, L);
+      const double base = this->S.Model == Reflection::BlinnPhong ? dot(at.N, normalize(L + V))
+                                                                  : dot(V, 2 * NdotL * at.N - L);
+      on.push_back(l.Kind != LightKind::Spot || -dot(L, l.Direction) >= l.CosCutoff);
       on.push_back(NdotL > Rounding);
       on.push_back(base > Rounding);
     }
@@ -517,7 +496,7 @@ private:
     for (int k = 0; k < 32; ++k)
     {
       const double a = 2 * Pi * k / 32, r = EdgeMargin * this->PixelSize();
-      if (switches(Add(q, { r * std::cos(a), r * std::sin(a), 0 })) != centre)
+      if (switches(q + Vec3{ r * std::cos(a), r * std::sin(a), 0 }) != centre)
       {
         return true;
       }
@@ -533,22 +512,21 @@ private:
   {
     const auto& tri = this->M.Triangles[t];
     const Vec3& p0 = this->WorldPositions[tri[0]];
-    const Vec3 face = Normalized(
-      Cross(Sub(this->WorldPositions[tri[1]], p0), Sub(this->WorldPositions[tri[2]], p0)));
+    const Vec3 face =
+      normalize(cross(this->WorldPositions[tri[1]] - p0, this->WorldPositions[tri[2]] - p0));
     // The camera looks along -Z with +Y up, so the screen's winding is the
     // xy plane's: counter-clockwise is a front face.
     e.Front = face[2] > 0;
-    const Vec3 geometric = e.Front ? face : Scaled(-1, face); // towards the viewer
+    const Vec3 geometric = e.Front ? face : -face; // towards the viewer
     e.P = this->S.Rule == Shading::Flat ? this->WorldPositions[tri[2]] : this->WorldPoint(t, w);
     Vec3 interpolated{ 0, 0, 0 };
     for (int k = 0; k < 3; ++k)
     {
-      interpolated = Add(interpolated, Scaled(w[k], this->M.Normals[tri[k]]));
+      interpolated = interpolated + w[k] * this->M.Normals[tri[k]];
     }
-    const double len = std::sqrt(Dot(interpolated, interpolated));
-    e.N = len > 1e-6 && this->S.Rule != Shading::Flat
-      ? Scaled((e.Front ? 1 : -1) / len, interpolated)
-      : geometric;
+    const double len = std::sqrt(dot(interpolated, interpolated));
+    e.N = len > 1e-6 && this->S.Rule != Shading::Flat ? ((e.Front ? 1 : -1) / len * interpolated)
+                                                      : geometric;
     return { interpolated, geometric };
   }
 
@@ -756,7 +734,7 @@ std::vector<Case> Cases()
       s.Surface = TestMaterial(1e6);
       s.Geometry.Bump = -2e-3;
       const Vec3 n = GridNormal(s.Geometry, -0.25, -0.125);
-      s.Lights = { Directional(Sub({ 0, 0, 1 }, Scaled(2 * n[2], n))) }; // -(2(N.V)N - V)
+      s.Lights = { Directional(Vec3{ 0, 0, 1 } - 2 * n[2] * n) }; // -(2(N.V)N - V)
       add("ns1e6_" + rule(r) + "_" + ModelName(m), s, HighExponent);
     }
   }

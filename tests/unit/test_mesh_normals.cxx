@@ -3,6 +3,7 @@
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
 // degenerate input, consistent orientation, suzanne's file normals and the
 // connectivity cache.
+#include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 
@@ -59,38 +60,16 @@ constexpr int Weightings = 5;
 // ---------------------------------------------------------------------------
 // Vectors in double
 
-using Vec = std::array<double, 3>;
+using Vec = shadelab::Vec3;
+using shadelab::operator+;
+using shadelab::operator-;
+using shadelab::operator*;
+using shadelab::cross;
+using shadelab::dot;
+using shadelab::length;
+using shadelab::normalize;
 using Triangle = std::array<vtkIdType, 3>;
 
-Vec operator+(const Vec& a, const Vec& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-Vec operator-(const Vec& a, const Vec& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec operator*(double s, const Vec& a)
-{
-  return { s * a[0], s * a[1], s * a[2] };
-}
-double Dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec Cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double Norm(const Vec& a)
-{
-  return std::sqrt(Dot(a, a));
-}
-Vec Normalized(const Vec& a)
-{
-  const double length = Norm(a);
-  return length > 0 ? (1 / length) * a : Vec{ 0, 0, 0 };
-}
 double MaxDifference(const Vec& a, const Vec& b)
 {
   return std::max({ std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2]) });
@@ -98,7 +77,7 @@ double MaxDifference(const Vec& a, const Vec& b)
 // Accurate for tiny angles too (acos of a dot product is not).
 double AngleDegrees(const Vec& a, const Vec& b)
 {
-  return vtkMath::DegreesFromRadians(std::atan2(Norm(Cross(a, b)), Dot(a, b)));
+  return vtkMath::DegreesFromRadians(std::atan2(length(cross(a, b)), dot(a, b)));
 }
 bool IsFinite(const Vec& a)
 {
@@ -129,7 +108,7 @@ public:
     for (;;)
     {
       const Vec v = { this->Uniform(-1, 1), this->Uniform(-1, 1), this->Uniform(-1, 1) };
-      if (Dot(v, v) <= 1)
+      if (dot(v, v) <= 1)
       {
         return radius * v;
       }
@@ -153,7 +132,7 @@ struct Mesh
   // (p1 - p0) x (p2 - p0): along the face normal, twice the face's area long.
   Vec AreaNormal(const Triangle& t) const
   {
-    return Cross(this->Point(t[1]) - this->Point(t[0]), this->Point(t[2]) - this->Point(t[0]));
+    return cross(this->Point(t[1]) - this->Point(t[0]), this->Point(t[2]) - this->Point(t[0]));
   }
   double MeanEdgeLength() const
   {
@@ -162,7 +141,7 @@ struct Mesh
     {
       for (int k = 0; k < 3; ++k)
       {
-        sum += Norm(this->Point(t[(k + 1) % 3]) - this->Point(t[k]));
+        sum += length(this->Point(t[(k + 1) % 3]) - this->Point(t[k]));
       }
     }
     return sum / (3.0 * this->Triangles.size());
@@ -261,7 +240,7 @@ Mesh Icosphere(int subdivisions)
   }
   for (Vec& p : mesh.Points)
   {
-    p = Normalized(p);
+    p = normalize(p);
   }
   mesh.Exact = mesh.Points;
   return mesh;
@@ -276,7 +255,7 @@ Mesh JitteredOnSphere(Mesh mesh, double fraction, Random& random)
   for (Vec& p : mesh.Points)
   {
     const Vec offset = random.InBall(radius);
-    p = Normalized(p + (offset - Dot(offset, p) * p));
+    p = normalize(p + (offset - dot(offset, p) * p));
   }
   mesh.Exact = mesh.Points;
   return mesh;
@@ -368,7 +347,7 @@ Mesh Cube()
       { { q[0], q[1], q[3] }, { q[1], q[2], q[3] } } };
     for (Triangle t : pair[f % 2])
     {
-      if (Dot(mesh.AreaNormal(t), mesh.Point(t[0]) - center) < 0)
+      if (dot(mesh.AreaNormal(t), mesh.Point(t[0]) - center) < 0)
       {
         std::swap(t[1], t[2]);
       }
@@ -399,11 +378,11 @@ Mesh Read(const fs::path& path, std::vector<Vec>* fileNormals = nullptr)
 Vec CornerContribution(const Mesh& mesh, const Triangle& t, int k, int weighting)
 {
   const Vec areaNormal = mesh.AreaNormal(t);
-  if (Norm(areaNormal) == 0)
+  if (length(areaNormal) == 0)
   {
     return { 0, 0, 0 };
   }
-  const Vec n = Normalized(areaNormal);
+  const Vec n = normalize(areaNormal);
   const Vec v = mesh.Point(t[k]);
   const Vec a = mesh.Point(t[(k + 1) % 3]) - v;
   const Vec b = mesh.Point(t[(k + 2) % 3]) - v;
@@ -412,11 +391,11 @@ Vec CornerContribution(const Mesh& mesh, const Triangle& t, int k, int weighting
     case vtkShadelabMeshNormals::Uniform:
       return n;
     case vtkShadelabMeshNormals::Area:
-      return 0.5 * Norm(areaNormal) * n;
+      return 0.5 * length(areaNormal) * n;
     case vtkShadelabMeshNormals::Max:
-      return (1 / (Dot(a, a) * Dot(b, b))) * Cross(a, b);
+      return (1 / (dot(a, a) * dot(b, b))) * cross(a, b);
     default: // the face's interior angle at v
-      return std::atan2(Norm(Cross(a, b)), Dot(a, b)) * n;
+      return std::atan2(length(cross(a, b)), dot(a, b)) * n;
   }
 }
 
@@ -435,7 +414,7 @@ std::vector<Vec> GroupNormals(
   }
   for (Vec& sum : sums)
   {
-    sum = Normalized(sum);
+    sum = normalize(sum);
   }
   return sums;
 }
@@ -516,7 +495,7 @@ std::optional<Vec> LoopNormal(
     tv = tv + std::cos(2 * vtkMath::Pi() * i / n) * mesh.Point(ring[i]);
     tw = tw + std::sin(2 * vtkMath::Pi() * i / n) * mesh.Point(ring[i]);
   }
-  return Normalized(Cross(tv, tw));
+  return normalize(cross(tv, tw));
 }
 
 // Feature splitting, as the contract says: the corners of the faces around
@@ -667,7 +646,7 @@ Output Collect(vtkShadelabMeshNormals* filter, const Mesh& input, const Options&
     const int turn = SameTurn(t, sorted) ? 1 : -1;
     for (const vtkIdType v : t)
     {
-      if (v >= 0 && v < static_cast<vtkIdType>(faces.size()) && Norm(mesh.AreaNormal(t)) > 0)
+      if (v >= 0 && v < static_cast<vtkIdType>(faces.size()) && length(mesh.AreaNormal(t)) > 0)
       {
         faces[static_cast<std::size_t>(v)][sorted] += turn;
       }
@@ -676,7 +655,7 @@ Output Collect(vtkShadelabMeshNormals* filter, const Mesh& input, const Options&
   for (std::size_t i = 0; i < out.PointNormals.size() && i < faces.size(); ++i)
   {
     const Vec& n = out.PointNormals[i];
-    const bool unit = std::abs(Norm(n) - 1) <= Tolerance, zero = n == Vec{ 0, 0, 0 };
+    const bool unit = std::abs(length(n) - 1) <= Tolerance, zero = n == Vec{ 0, 0, 0 };
     const bool cancelled = std::all_of(
       faces[i].begin(), faces[i].end(), [](const auto& face) { return face.second == 0; });
     if (!IsFinite(n) || (faces[i].empty() && !zero) || (!cancelled && !unit) || !(unit || zero))
@@ -689,7 +668,7 @@ Output Collect(vtkShadelabMeshNormals* filter, const Mesh& input, const Options&
   // Cell normals: the normalized cross product of the output's triangles.
   for (std::size_t t = 0; t < out.CellNormals.size() && t < mesh.Triangles.size(); ++t)
   {
-    const Vec expected = Normalized(mesh.AreaNormal(mesh.Triangles[t]));
+    const Vec expected = normalize(mesh.AreaNormal(mesh.Triangles[t]));
     if (!IsFinite(out.CellNormals[t]) || MaxDifference(out.CellNormals[t], expected) > Tolerance)
     {
       ADD_FAILURE() << "cell " << t << " normal " << Str(out.CellNormals[t]) << ", expected "
@@ -784,7 +763,7 @@ void ExpectOutward(const Mesh& mesh)
   std::size_t inward = 0;
   for (const Triangle& t : mesh.Triangles)
   {
-    inward += Dot(mesh.AreaNormal(t), mesh.Exact[static_cast<std::size_t>(t[0])]) <= 0;
+    inward += dot(mesh.AreaNormal(t), mesh.Exact[static_cast<std::size_t>(t[0])]) <= 0;
   }
   EXPECT_EQ(inward, 0u) << "the test's generator made folded triangles";
 }
@@ -878,8 +857,8 @@ TEST(MeshNormals, LoopNormalsPointOutwardOnASmoothClosedMesh)
   {
     // The limit normal of a fine sphere is the radial direction to within a
     // degree or so; 0.99 is 8 degrees, a reversed or tangent normal is far off.
-    inward += !(Dot(out.PointNormals[i], sphere.Exact[i]) > 0.99);
-    EXPECT_NEAR(Norm(out.PointNormals[i]), 1.0, Tolerance) << i;
+    inward += !(dot(out.PointNormals[i], sphere.Exact[i]) > 0.99);
+    EXPECT_NEAR(length(out.PointNormals[i]), 1.0, Tolerance) << i;
   }
   EXPECT_EQ(inward, 0u);
 }
@@ -995,7 +974,7 @@ TEST(MeshNormals, CubeCornersSplitIntoAxisNormals)
   // Every corner's normal is its side's axis, the triangle's own normal.
   for (std::size_t t = 0; t < split.Geometry.Triangles.size(); ++t)
   {
-    const Vec axis = Normalized(cube.AreaNormal(cube.Triangles[t]));
+    const Vec axis = normalize(cube.AreaNormal(cube.Triangles[t]));
     EXPECT_DOUBLE_EQ(std::abs(axis[0]) + std::abs(axis[1]) + std::abs(axis[2]), 1.0);
     for (const vtkIdType point : split.Geometry.Triangles[t])
     {
@@ -1016,12 +995,12 @@ TEST(MeshNormals, CubeCornersSplitIntoAxisNormals)
   {
     if (std::count(t.begin(), t.end(), 7))
     {
-      sum = sum + Normalized(cube.AreaNormal(t));
+      sum = sum + normalize(cube.AreaNormal(t));
     }
   }
   ASSERT_EQ(whole.PointNormals.size(), 8u);
-  EXPECT_LE(MaxDifference(whole.PointNormals[7], Normalized(sum)), Tolerance)
-    << Str(whole.PointNormals[7]) << " vs " << Str(Normalized(sum));
+  EXPECT_LE(MaxDifference(whole.PointNormals[7], normalize(sum)), Tolerance)
+    << Str(whole.PointNormals[7]) << " vs " << Str(normalize(sum));
   ExpectNormalsNear(whole.PointNormals, ReferenceNormals(cube, options.Weighting));
 }
 
@@ -1070,7 +1049,7 @@ TEST(MeshNormals, FandiskSharpEdgesStaySharpWhenSplitting)
         a.begin(), a.end(), [&](vtkIdType p) { return std::count(b.begin(), b.end(), p) > 0; });
       for (const std::size_t t : { f, g })
       {
-        const Vec n = Normalized(fandisk.AreaNormal(fandisk.Triangles[t]));
+        const Vec n = normalize(fandisk.AreaNormal(fandisk.Triangles[t]));
         for (const vtkIdType p : out.Geometry.Triangles[t])
         {
           soft = soft || AngleDegrees(out.PointNormals[static_cast<std::size_t>(p)], n) > 25;
@@ -1306,7 +1285,7 @@ TEST(MeshNormals, SuzanneAgreesWithItsFileNormals)
     std::size_t agreeing = 0;
     for (std::size_t i = 0; i < fileNormals.size(); ++i)
     {
-      agreeing += Dot(out.PointNormals[i], fileNormals[i]) > 0;
+      agreeing += dot(out.PointNormals[i], fileNormals[i]) > 0;
     }
     const double fraction = static_cast<double>(agreeing) / fileNormals.size();
     std::cout << "[ suzanne  ] " << WeightingNames[weighting] << ": " << agreeing << " of "

@@ -310,7 +310,9 @@ void vtkShadelabMeshNormals::Cache::Build(
     // normals (and keeps its number: face f stays OpenMesh face f).
     for (int k = 0; k < 3; ++k)
     {
-      corner[k] = mesh.add_vertex(mesh.point(corner[k]));
+      // From the input: a reference into OpenMesh's points would dangle
+      // when add_vertex moves them.
+      corner[k] = mesh.add_vertex(PointAt(p, ids[k]));
       this->CopyOf.push_back(ids[k]);
       this->InDuplicatedFace[ids[k]] = true;
     }

@@ -105,7 +105,8 @@ int RunNormals(const NormalsOptions& o)
   if (normals->GetNumberOfDuplicatedFaces() > 0)
   {
     std::cerr << "shadelab: note: " << o.Mesh << ": " << normals->GetNumberOfDuplicatedFaces()
-              << " non-manifold faces got vertices of their own" << std::endl;
+              << " faces are non-manifold or repeat a vertex: they got vertices of their own"
+              << std::endl;
   }
 
   // Written to a temporary name beside OUT and renamed: no partial file.

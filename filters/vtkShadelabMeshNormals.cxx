@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstring>
 #include <future>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -452,6 +453,13 @@ int vtkShadelabMeshNormals::RequestData(
     std::vector<vtkIdType> triangles;
     std::string error;
     input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
+    // OpenMesh numbers vertices and halfedges (3 a face, and copies) in int.
+    const size_t limit = std::numeric_limits<int>::max() / 2;
+    if (error.empty() && (static_cast<size_t>(points) > limit || triangles.size() > limit))
+    {
+      error = "too large for OpenMesh's int handles: " + std::to_string(points) + " points, " +
+        std::to_string(triangles.size() / 3) + " triangles";
+    }
     if (!error.empty())
     {
       vtkErrorMacro(<< error);

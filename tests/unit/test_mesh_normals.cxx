@@ -6,6 +6,7 @@
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
+#include "vtkShadelabOutputWindow.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -13,6 +14,7 @@
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
+#include <vtkLogger.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -1389,4 +1391,34 @@ TEST(MeshNormals, WeightingNames)
     EXPECT_FALSE(filter->SetWeightingByName(unknown)) << "'" << unknown << "'";
   }
 }
+}
+
+TEST(MeshNormals, PolygonsAndBadIdsAreOneLineErrors)
+{
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the captured line is enough
+  vtkShadelabOutputWindow* window = vtkShadelabOutputWindow::Install();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (const Vec& p : std::vector<Vec>{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } })
+  {
+    points->InsertNextPoint(p.data());
+  }
+  const std::vector<std::pair<std::vector<vtkIdType>, std::string>> cases = {
+    { { 0, 1, 2, 3 }, "polygon 0 has 4 vertices (triangles only)" },
+    { { 0, 1, 7 }, "triangle 0 refers to point 7 of 4" },
+    { { 0, -1, 2 }, "triangle 0 refers to point -1 of 4" },
+  };
+  for (const auto& [ids, message] : cases)
+  {
+    auto mesh = vtkSmartPointer<vtkPolyData>::New();
+    mesh->SetPoints(points);
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    mesh->SetPolys(polys);
+    vtkNew<vtkShadelabMeshNormals> filter;
+    filter->SetInputData(mesh);
+    window->Clear();
+    EXPECT_FALSE(filter->GetExecutive()->Update()) << message;
+    EXPECT_NE(window->GetFirstError().find(message), std::string::npos) << window->GetFirstError();
+    EXPECT_EQ(window->GetFirstError().find('\n'), std::string::npos) << window->GetFirstError();
+  }
 }

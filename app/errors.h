@@ -12,6 +12,9 @@ constexpr int ExitUsage = 2;
 
 /** Prints the error line on stderr and returns ExitFailure. */
 int ReportError(const std::string& input, const std::string& problem);
+
+/** The first error VTK reported (through vtkShadelabOutputWindow), or `fallback`. */
+std::string FirstVtkError(const char* fallback);
 }
 
 #endif

@@ -1,25 +1,15 @@
 #include "mesh_input.h"
 
+#include "errors.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
-#include "vtkShadelabOutputWindow.h"
 
 #include <vtkExecutive.h>
-#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 namespace shadelab
 {
-namespace
-{
-std::string FirstVtkError(const char* fallback)
-{
-  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-  return window && !window->GetFirstError().empty() ? window->GetFirstError() : fallback;
-}
-}
-
 vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting)
 {
   auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();

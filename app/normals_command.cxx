@@ -48,12 +48,6 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
 
 namespace
 {
-std::string FirstVtkError(const char* fallback)
-{
-  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-  return window && !window->GetFirstError().empty() ? window->GetFirstError() : fallback;
-}
-
 // Writes mesh to path in the format that ext names; errors go to VTK's
 // output window.
 template <typename Writer>

@@ -2,42 +2,54 @@
  * @class   vtkShadelabMeshNormals
  * @brief   face and vertex normals of a triangle mesh, computed with OpenMesh
  *
- * Input: a polydata of triangles (what vtkShadelabMeshReader gives). Output:
- * the same mesh with unit point normals ("Normals", float, the active
- * normals) and unit cell normals ("Normals" in the cell data). Vertex
- * normals are weighted averages of the face normals around each vertex:
+ * Input: a polydata of triangles (what vtkShadelabMeshReader gives: it
+ * triangulates polygons, so a face here is a triangle and its Newell normal
+ * is its cross product); other cells are dropped, a polygon of more than 3
+ * vertices or an id out of range is an error. Output: the mesh with unit
+ * point normals ("Normals", float, the active normals) and unit cell normals
+ * ("Normals" in the cell data), computed in double. A vertex normal is the
+ * normalised sum of the unit normals of the faces around the vertex, each
+ * weighted by:
  *
- * - Uniform: the plain average of the unit face normals;
- * - Area: weighted by the faces' areas;
- * - Angle: weighted by the face angle at the vertex (Thuermer & Wuethrich 1998);
- * - Max: Max 1999, cross products of the incident edges over their squared
- *   lengths (exact for a sphere);
- * - Loop: OpenMesh's Loop-subdivision limit normal (calc_vertex_normal_loop),
- *   defined at interior vertices of a closed fan; at boundary vertices,
- *   split vertices and vertices of duplicated faces, where the limit normal
- *   of a smooth surface does not apply, the angle weighting is used.
+ * - Uniform: 1 (vtkPolyDataNormals's average);
+ * - Area: the face's area;
+ * - Angle: the face's angle at the vertex (Thuermer & Wuethrich 1998);
+ * - Max: sin(angle) / (|a| |b|), a and b the face's edges at the vertex, i.e.
+ *   (a x b) / (|a|^2 |b|^2) (Max 1999; exact for points on a sphere);
+ * - Loop: none; OpenMesh's Loop-subdivision limit normal
+ *   (calc_vertex_normal_loop), defined at interior vertices of a closed fan;
+ *   at boundary vertices, split vertices and vertices of duplicated faces,
+ *   where the limit normal of a smooth surface does not apply, the angle
+ *   weighting is used.
  *
  * Without splitting, the output has the input's points in the input's order
- * and the input's triangles. With Splitting on, faces around a vertex are
- * grouped by walking across edges where adjacent faces meet at no more than
- * FeatureAngle degrees; each group beyond the first becomes a new point
- * (appended after the input's points, in vertex order) with its own normal,
- * and the triangles refer to it (a cube's corner becomes three points).
- * Boundary and non-manifold edges also separate groups, as in
- * vtkPolyDataNormals.
+ * and the input's triangles. With Splitting on, the faces around a vertex
+ * are grouped into runs between separating edges: edges where adjacent
+ * faces meet at more than FeatureAngle degrees, boundary edges, and
+ * non-manifold edges (as in vtkPolyDataNormals). Each run beyond the first
+ * becomes a new point (appended after the input's points, in the order of
+ * the points they split) with its own normal, and the triangles refer to it:
+ * a cube's corner becomes three points.
  *
- * OpenMesh's connectivity is built once per input (by its modification time),
- * so that changing the weighting or the feature angle recomputes normals
- * without rebuilding it. Faces that OpenMesh refuses (they would make a
- * non-manifold edge or vertex) still get normals, through duplicated
- * vertices; GetNumberOfDuplicatedFaces() reports how many. Zero-area faces
- * add no weight and no NaN; a vertex with no face of positive area (or whose
+ * OpenMesh's connectivity is built once per input (by its modification time)
+ * and kept with the face normals and the last corner weights, so that
+ * changing the weighting or the feature angle recomputes normals without
+ * rebuilding it. Faces that OpenMesh refuses (they would make a non-manifold
+ * edge or vertex, or they repeat a vertex) still get normals, through copies
+ * of their vertices (with splitting, they keep those as points of their
+ * own); GetNumberOfDuplicatedFaces() reports how many. Zero-area faces add
+ * no weight and no NaN; a vertex with no face of positive area (or whose
  * faces' weighted normals cancel, as for a face and its reverse) gets
- * (0,0,0), which shadelab's shaders treat as "no normal". Consistency on makes the faces' orientation consistent within each
- * edge-connected part, as vtkPolyDataNormals does: the part's lowest-numbered
- * face keeps its orientation and faces that disagree with their neighbours
- * are reversed in the output (across manifold edges; a non-manifold edge
- * does not propagate orientation).
+ * (0,0,0), which shadelab's shaders treat as "no normal". Consistency on
+ * makes the faces' orientation consistent within each edge-connected part,
+ * as vtkPolyDataNormals does: the part's lowest-numbered face keeps its
+ * orientation and faces that disagree with their neighbours are reversed in
+ * the output (across manifold edges; a non-manifold edge does not propagate
+ * orientation).
+ *
+ * Both cores are used: the face geometry is computed while OpenMesh builds
+ * the connectivity, and the weights, the splitting and Loop normals run
+ * through vtkSMPTools.
  */
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h

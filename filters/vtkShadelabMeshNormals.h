@@ -16,7 +16,7 @@
  * - Angle: the face's angle at the vertex (Thuermer & Wuethrich 1998);
  * - Max: sin(angle) / (|a| |b|), a and b the face's edges at the vertex, i.e.
  *   (a x b) / (|a|^2 |b|^2) (Max 1999; exact for points on a sphere);
- * - Loop: none; OpenMesh's Loop-subdivision limit normal
+ * - Loop: not a weighting but OpenMesh's Loop-subdivision limit normal
  *   (calc_vertex_normal_loop), defined at interior vertices of a closed fan;
  *   at boundary vertices, split vertices and vertices of duplicated faces,
  *   where the limit normal of a smooth surface does not apply, the angle

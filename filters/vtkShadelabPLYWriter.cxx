@@ -96,6 +96,11 @@ void vtkShadelabPLYWriter::WriteData()
   vtkIdType face = 0;
   for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++face)
   {
+    if (npts != 3) // (the count above can balance a 2-gon with a 4-gon)
+    {
+      vtkErrorMacro("PLY output takes triangles only");
+      return;
+    }
     Put(body, static_cast<uint8_t>(3));
     for (int k = 0; k < 3; ++k)
     {

@@ -114,7 +114,7 @@ int main(int argc, char** argv)
     loop->SetInputConnection(clean->GetOutputPort());
     loop->SetNumberOfSubdivisions(subdivide);
     loop->Update();
-    mesh = ComputeNormals(loop->GetOutput(), o.Weighting);
+    mesh = ComputeNormals(loop->GetOutput(), o.Computed).Mesh;
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },

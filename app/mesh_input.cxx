@@ -10,16 +10,19 @@
 
 namespace shadelab
 {
-vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting)
+ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings)
 {
   auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
   normals->SetInputData(mesh);
-  normals->SetWeightingByName(weighting.c_str());
+  normals->SetWeightingByName(settings.Weighting.c_str());
+  normals->SetSplitting(settings.FeatureAngle.has_value());
+  normals->SetFeatureAngle(settings.FeatureAngle.value_or(0));
+  normals->SetConsistency(settings.Orient);
   if (!normals->GetExecutive()->Update())
   {
-    return nullptr;
+    return {};
   }
-  return normals->GetOutput();
+  return { normals->GetOutput(), normals->GetNumberOfDuplicatedFaces() };
 }
 
 LoadedMesh LoadMesh(const SceneOptions& options)
@@ -48,7 +51,7 @@ LoadedMesh LoadMesh(const SceneOptions& options)
     (options.Normals == NormalsMode::Auto && !result.NormalsFromFile);
   if (lit && compute)
   {
-    mesh = ComputeNormals(mesh, options.Weighting);
+    mesh = ComputeNormals(mesh, options.Computed).Mesh;
     if (!mesh)
     {
       result.Error = "normals: " + FirstVtkError("cannot be computed");

@@ -6,6 +6,7 @@
 #include "options.h"
 
 #include <vtkSmartPointer.h>
+#include <vtkType.h>
 
 #include <string>
 
@@ -22,8 +23,14 @@ struct LoadedMesh
 
 LoadedMesh LoadMesh(const SceneOptions& options);
 
-/** mesh with vertex normals computed by vtkShadelabMeshNormals; null on failure. */
-vtkSmartPointer<vtkPolyData> ComputeNormals(vtkPolyData* mesh, const std::string& weighting);
+struct ComputedNormals
+{
+  vtkSmartPointer<vtkPolyData> Mesh; // null on failure (the error in VTK's output window)
+  vtkIdType DuplicatedFaces = 0;     // faces OpenMesh refused, given vertices of their own
+};
+
+/** mesh with vertex normals computed by vtkShadelabMeshNormals as settings say. */
+ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings);
 }
 
 #endif

@@ -102,7 +102,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(
   j["size"] = { o.Size.Width, o.Size.Height };
   j["background"] = o.Background;
   j["normals"] = ToString(o.Normals);
-  j["weighting"] = o.Weighting;
+  j["weighting"] = o.Computed.Weighting;
+  j["feature_angle"] =
+    o.Computed.FeatureAngle ? nlohmann::json(*o.Computed.FeatureAngle) : nlohmann::json();
+  j["orient"] = o.Computed.Orient;
 
   // OpenImageIO's EXR writer stamps the current time unless DateTime is
   // set; an empty one keeps the file a function of the scene alone.

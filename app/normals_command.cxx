@@ -1,7 +1,7 @@
 #include "normals_command.h"
 
 #include "errors.h"
-#include "vtkShadelabMeshNormals.h"
+#include "mesh_input.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYWriter.h"
@@ -34,15 +34,7 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
   normals->add_option("-o,--output", o.Output, "Output mesh: .ply .vtp .obj")
     ->required()
     ->option_text("OUT");
-  normals->add_option("--weighting", o.Weighting, "Vertex-normal weighting (default angle)")
-    ->check(CLI::IsMember({ "uniform", "area", "angle", "max", "loop" }))
-    ->option_text("uniform|area|angle|max|loop");
-  normals
-    ->add_option("--feature-angle", o.FeatureAngle,
-      "Split vertices where faces meet at more than DEG degrees (default: no splitting)")
-    ->check(CLI::Range(0.0, 180.0))
-    ->option_text("DEG");
-  normals->add_flag("--orient", o.Orient, "Make the faces' orientation consistent first");
+  AddNormalsSettings(*normals, o.Settings);
   return normals;
 }
 
@@ -82,23 +74,18 @@ int RunNormals(const NormalsOptions& o)
   auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
   reader->SetFileName(o.Mesh.c_str());
   reader->ReadNormalsOff(); // computed, and not split at the file's vn seams
-  auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
-  normals->SetInputConnection(reader->GetOutputPort());
-  normals->SetWeightingByName(o.Weighting.c_str());
-  normals->SetSplitting(o.FeatureAngle >= 0);
-  normals->SetFeatureAngle(std::max(o.FeatureAngle, 0.0));
-  normals->SetConsistency(o.Orient);
   if (!reader->GetExecutive()->Update())
   {
     return ReportError(o.Mesh, FirstVtkError("cannot be read"));
   }
-  if (!normals->GetExecutive()->Update())
+  const ComputedNormals normals = ComputeNormals(reader->GetOutput(), o.Settings);
+  if (!normals.Mesh)
   {
     return ReportError(o.Mesh, "normals: " + FirstVtkError("cannot be computed"));
   }
-  if (normals->GetNumberOfDuplicatedFaces() > 0)
+  if (normals.DuplicatedFaces > 0)
   {
-    std::cerr << "shadelab: note: " << o.Mesh << ": " << normals->GetNumberOfDuplicatedFaces()
+    std::cerr << "shadelab: note: " << o.Mesh << ": " << normals.DuplicatedFaces
               << " faces are non-manifold or repeat a vertex: they got vertices of their own"
               << std::endl;
   }
@@ -107,7 +94,7 @@ int RunNormals(const NormalsOptions& o)
   const std::string temporary = o.Output + ".tmp-" + std::to_string(getpid()) + ext;
   auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   window->Clear();
-  vtkPolyData* mesh = normals->GetOutput();
+  vtkPolyData* mesh = normals.Mesh;
   if (ext == ".ply")
   {
     Write<vtkShadelabPLYWriter>(mesh, temporary);

@@ -3,6 +3,8 @@
 #ifndef shadelab_normals_command_h
 #define shadelab_normals_command_h
 
+#include "options.h"
+
 #include <string>
 
 namespace CLI
@@ -16,9 +18,7 @@ struct NormalsOptions
 {
   std::string Mesh;
   std::string Output;
-  std::string Weighting = "angle";
-  double FeatureAngle = -1; // negative: no splitting
-  bool Orient = false;
+  NormalsSettings Settings;
 };
 
 /** Declares the normals command and its options on the program. */

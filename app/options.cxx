@@ -340,10 +340,23 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
       "--normals", o.Normals, "auto: the file's normals if it has them, else computed (default)")
     ->transform(CLI::CheckedTransformer(modes))
     ->option_text("auto|file|compute");
+  AddNormalsSettings(command, o.Computed);
+}
+
+void AddNormalsSettings(CLI::App& command, NormalsSettings& s)
+{
   command
-    .add_option("--weighting", o.Weighting,
+    .add_option("--weighting", s.Weighting,
       "Vertex-normal weighting when normals are computed (default angle)")
     ->check(CLI::IsMember({ "uniform", "area", "angle", "max", "loop" }))
     ->option_text("uniform|area|angle|max|loop");
+  command
+    .add_option("--feature-angle", s.FeatureAngle,
+      "Computed normals: split vertices where faces meet at more than DEG degrees "
+      "(default: no splitting)")
+    ->check(CLI::Range(0.0, 180.0))
+    ->option_text("DEG");
+  command.add_flag(
+    "--orient", s.Orient, "Computed normals: make the faces' orientation consistent first");
 }
 }

@@ -38,6 +38,14 @@ struct ImageSize
   int Height = 768;
 };
 
+/** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
+struct NormalsSettings
+{
+  std::string Weighting = "angle";
+  std::optional<double> FeatureAngle; // split at edges sharper than this, degrees
+  bool Orient = false;                // make the faces' orientation consistent first
+};
+
 /** Everything that decides what a picture shows. */
 struct SceneOptions
 {
@@ -58,7 +66,7 @@ struct SceneOptions
   std::optional<double> ParallelScale;
   Rgb Background{ 0, 0, 0 };
   NormalsMode Normals = NormalsMode::Auto;
-  std::string Weighting = "angle";
+  NormalsSettings Computed; // how normals are computed, when they are
 
   /** The material after the --ka/--kd/--ks/--ns overrides. */
   Material EffectiveMaterial() const;
@@ -75,6 +83,9 @@ struct RenderOptions
 
 /** Declares the scene options on a command. */
 void AddSceneOptions(CLI::App& command, SceneOptions& options);
+
+/** Declares --weighting, --feature-angle and --orient on command. */
+void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 
 // Value parsers, exposed for tests. Each throws std::invalid_argument with a
 // message that names what is wrong with the text.

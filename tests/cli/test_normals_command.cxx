@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
 
 using namespace shadelab_test;
 
@@ -143,4 +145,42 @@ TEST(NormalsCommand, ComputedNormalsIgnoreTheFilesNormalSeams)
   EXPECT_LT(first, 0.99);
   EXPECT_GT(second, 0.5);
   EXPECT_LT(second, 0.99);
+}
+
+TEST(NormalsCommand, RenderSplitsComputedNormalsAtTheFeatureAngle)
+{
+  TempDir dir;
+  WriteText(dir / "cube.obj", Cube);
+  // A cube seen from a corner, lit by a directional light, orthographic:
+  // with its corners split, each face has one normal and, per fragment, one
+  // colour (N, L and V are the same everywhere on it); smoothed, the corner
+  // normals point diagonally and each face shades in a gradient.
+  auto distinctColours = [&](const std::vector<std::string>& extra)
+  {
+    std::vector<std::string> args = { "render", (dir / "cube.obj").string(), "-o",
+      (dir / "cube.png").string(), "--shading", "phong", "--orthographic", "--size", "160x160",
+      "--camera-position", "3,4,5", "--camera-focal-point", "0.5,0.5,0.5", "--light",
+      "directional:-1,-2,-3" };
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = RunShadelab(args);
+    EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+    const Image image = ReadImage(dir / "cube.png");
+    std::set<std::array<float, 3>> colours;
+    for (size_t i = 0; i + 2 < image.Pixels.size(); i += image.Channels)
+    {
+      const std::array<float, 3> c{ image.Pixels[i], image.Pixels[i + 1], image.Pixels[i + 2] };
+      if (c != std::array<float, 3>{ 0, 0, 0 })
+      {
+        colours.insert(c);
+      }
+    }
+    return std::make_pair(colours.size(), image.Description);
+  };
+  const auto [split, description] = distinctColours({ "--feature-angle", "30" });
+  const auto [smooth, unused] = distinctColours({});
+  // Three faces in view, and a colour or two more where rasterisation
+  // rounds a face's own normal differently: at most 6.
+  EXPECT_LE(split, 6u);
+  EXPECT_GT(smooth, 50u);
+  EXPECT_NE(description.find("\"feature_angle\":30"), std::string::npos) << description;
 }

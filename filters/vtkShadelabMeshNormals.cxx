@@ -47,6 +47,11 @@ Vec3 PointAt(const double* xyz, vtkIdType i)
   return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
 }
 
+// A vertex normal's sum this much shorter than the sum of its weights is
+// taken as zero: terms that cancel leave about 1e-16 of them in rounding,
+// pointing anywhere, and a real normal is never this close to cancelling.
+constexpr double CancelledSum = 1e-12;
+
 const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
 
 // The input's triangles as 3 point ids a face, or an error.
@@ -503,17 +508,25 @@ int vtkShadelabMeshNormals::RequestData(
   const int weighting = this->Weighting == Loop ? Angle : this->Weighting;
   const double* cornerWeight =
     weighting == Angle || weighting == Max ? cache.CornerWeights(weighting).data() : nullptr;
+  // With the sum, the sum of the weights: a sum far shorter than its terms
+  // is the rounding left of terms that cancel (a face and its reverse), and
+  // its direction means nothing.
   std::vector<Vec3> sum(outputPoints, Vec3(0, 0, 0));
+  std::vector<double> weights(outputPoints, 0);
   for (vtkIdType f = 0; f < faces; ++f)
   {
     const double area2 = cache.DoubleArea[f];
+    if (area2 == 0)
+    {
+      continue; // a face of no area adds nothing
+    }
     for (int k = 0; k < 3; ++k)
     {
-      // (A face of no area has a zero normal: it adds nothing.)
       const double w = weighting == Uniform ? 1
         : weighting == Area                 ? area2
                                             : cornerWeight[3 * f + k];
       sum[corners[3 * f + k]] += w * cache.FaceNormal[f];
+      weights[corners[3 * f + k]] += w;
     }
   }
   if (this->Weighting == Loop)
@@ -539,6 +552,7 @@ int vtkShadelabMeshNormals::RequestData(
           // crosses its tangents as cross(t_w, t_v) for that).
           mesh.calc_vertex_normal_loop(v, n);
           sum[i] = n;
+          weights[i] = 0;
         }
       });
   }
@@ -551,7 +565,8 @@ int vtkShadelabMeshNormals::RequestData(
   for (vtkIdType i = 0; i < outputPoints; ++i)
   {
     const double length = sum[i].norm();
-    const Vec3 n = length > 0 && std::isfinite(length) ? sum[i] / length : Vec3(0, 0, 0);
+    const bool defined = length > CancelledSum * weights[i] && std::isfinite(length);
+    const Vec3 n = defined ? sum[i] / length : Vec3(0, 0, 0);
     for (int c = 0; c < 3; ++c)
     {
       pn[3 * i + c] = static_cast<float>(n[c]);

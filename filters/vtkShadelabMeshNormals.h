@@ -38,8 +38,9 @@
  * edge or vertex, or they repeat a vertex) still get normals, through copies
  * of their vertices (with splitting, they keep those as points of their
  * own); GetNumberOfDuplicatedFaces() reports how many. Zero-area faces add
- * no weight and no NaN; a vertex with no face of positive area (or whose
- * faces' weighted normals cancel, as for a face and its reverse) gets
+ * no weight and no NaN; a vertex with no face of positive area, or whose
+ * faces' weighted normals cancel (a face and its reverse: the sum shorter
+ * than 1e-12 of the weights' sum, rounding in no direction), gets
  * (0,0,0), which shadelab's shaders treat as "no normal". Consistency on
  * makes the faces' orientation consistent within each edge-connected part,
  * as vtkPolyDataNormals does: the part's lowest-numbered face keeps its

@@ -511,8 +511,12 @@ int vtkShadelabMeshNormals::RequestData(
   // With the sum, the sum of the weights: a sum far shorter than its terms
   // is the rounding left of terms that cancel (a face and its reverse), and
   // its direction means nothing.
-  std::vector<Vec3> sum(outputPoints, Vec3(0, 0, 0));
-  std::vector<double> weights(outputPoints, 0);
+  struct Sum
+  {
+    Vec3 Normal{ 0, 0, 0 };
+    double Weight = 0; // beside the normal: one cache line for both
+  };
+  std::vector<Sum> sum(outputPoints);
   for (vtkIdType f = 0; f < faces; ++f)
   {
     const double area2 = cache.DoubleArea[f];
@@ -525,8 +529,9 @@ int vtkShadelabMeshNormals::RequestData(
       const double w = weighting == Uniform ? 1
         : weighting == Area                 ? area2
                                             : cornerWeight[3 * f + k];
-      sum[corners[3 * f + k]] += w * cache.FaceNormal[f];
-      weights[corners[3 * f + k]] += w;
+      Sum& s = sum[corners[3 * f + k]];
+      s.Normal += w * cache.FaceNormal[f];
+      s.Weight += w;
     }
   }
   if (this->Weighting == Loop)
@@ -551,8 +556,7 @@ int vtkShadelabMeshNormals::RequestData(
           // Unnormalised, and on the side of the faces' normals (OpenMesh
           // crosses its tangents as cross(t_w, t_v) for that).
           mesh.calc_vertex_normal_loop(v, n);
-          sum[i] = n;
-          weights[i] = 0;
+          sum[i] = { n, 0 };
         }
       });
   }
@@ -564,9 +568,9 @@ int vtkShadelabMeshNormals::RequestData(
   float* pn = pointNormals->GetPointer(0);
   for (vtkIdType i = 0; i < outputPoints; ++i)
   {
-    const double length = sum[i].norm();
-    const bool defined = length > CancelledSum * weights[i] && std::isfinite(length);
-    const Vec3 n = defined ? sum[i] / length : Vec3(0, 0, 0);
+    const double length = sum[i].Normal.norm();
+    const bool defined = length > CancelledSum * sum[i].Weight && std::isfinite(length);
+    const Vec3 n = defined ? sum[i].Normal / length : Vec3(0, 0, 0);
     for (int c = 0; c < 3; ++c)
     {
       pn[3 * i + c] = static_cast<float>(n[c]);

@@ -450,6 +450,10 @@ int vtkShadelabMeshNormals::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   const vtkIdType points = input->GetNumberOfPoints();
+  if (!input->GetPoints() && input->GetNumberOfPolys() == 0)
+  {
+    return 1; // nothing to compute normals for: an empty output, as vtkPolyDataNormals gives
+  }
 
   if (!this->Cached || this->Cached->Input != input ||
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)

@@ -1410,6 +1410,30 @@ TEST(MeshNormals, WeightingNames)
 }
 }
 
+TEST(MeshNormals, AnEmptyInputGivesAnEmptyOutput)
+{
+  vtkNew<vtkShadelabMeshNormals> filter;
+  filter->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  filter->SplittingOn();
+  EXPECT_TRUE(filter->GetExecutive()->Update());
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+
+  // Triangles without points are bad input, not an empty mesh.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkShadelabOutputWindow* window = vtkShadelabOutputWindow::Install();
+  auto orphans = vtkSmartPointer<vtkPolyData>::New();
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType ids[3] = { 0, 1, 2 };
+  polys->InsertNextCell(3, ids);
+  orphans->SetPolys(polys);
+  filter->SetInputData(orphans);
+  window->Clear();
+  EXPECT_FALSE(filter->GetExecutive()->Update());
+  EXPECT_NE(window->GetFirstError().find("refers to point 0 of 0"), std::string::npos)
+    << window->GetFirstError();
+}
+
 TEST(MeshNormals, PolygonsAndBadIdsAreOneLineErrors)
 {
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the captured line is enough

@@ -5,7 +5,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
-#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
@@ -15,6 +14,7 @@
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
@@ -42,6 +42,10 @@ struct MeshTraits : public OpenMesh::DefaultTraits
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 using Vec3 = OpenMesh::Vec3d;
 
+// Point ids as OpenMesh numbers its handles (int): half the memory of
+// vtkIdType for the largest arrays; bigger meshes are refused.
+using Id = int;
+
 Vec3 PointAt(const double* xyz, vtkIdType i)
 {
   return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
@@ -59,7 +63,7 @@ struct TriangleIds
 {
   template <typename CellState>
   void operator()(
-    CellState& state, vtkIdType points, std::vector<vtkIdType>& ids, std::string& error) const
+    CellState& state, vtkIdType points, std::vector<Id>& ids, std::string& error) const
   {
     const auto* offsets = state.GetOffsets()->GetPointer(0);
     const auto* connectivity = state.GetConnectivity()->GetPointer(0);
@@ -82,7 +86,7 @@ struct TriangleIds
             " of " + std::to_string(points);
           return;
         }
-        ids[3 * f + k] = id;
+        ids[3 * f + k] = static_cast<Id>(id);
       }
     }
   }
@@ -92,28 +96,28 @@ struct TriangleIds
 // key k are Items[First[k]] to Items[First[k + 1] - 1].
 struct Buckets
 {
-  std::vector<vtkIdType> First;
-  std::vector<vtkIdType> Items;
+  std::vector<Id> First;
+  std::vector<Id> Items;
 
-  Buckets(const std::vector<vtkIdType>& keys, vtkIdType keyCount)
+  Buckets(const std::vector<Id>& keys, vtkIdType keyCount)
     : First(keyCount + 1, 0)
     , Items(keys.size())
   {
-    for (const vtkIdType k : keys)
+    for (const Id k : keys)
     {
       ++this->First[k + 1];
     }
     std::partial_sum(this->First.begin(), this->First.end(), this->First.begin());
-    std::vector<vtkIdType> fill(this->First.begin(), this->First.end() - 1);
+    std::vector<Id> fill(this->First.begin(), this->First.end() - 1);
     for (size_t i = 0; i < keys.size(); ++i)
     {
-      this->Items[fill[keys[i]]++] = static_cast<vtkIdType>(i);
+      this->Items[fill[keys[i]]++] = static_cast<Id>(i);
     }
   }
 };
 
 // True when face g has the directed edge a -> b.
-bool HasEdge(const vtkIdType* g, vtkIdType a, vtkIdType b)
+bool HasEdge(const Id* g, Id a, Id b)
 {
   return (g[0] == a && g[1] == b) || (g[1] == a && g[2] == b) || (g[2] == a && g[0] == b);
 }
@@ -123,7 +127,7 @@ bool HasEdge(const vtkIdType* g, vtkIdType a, vtkIdType b)
 // edge-connected part (vtkPolyDataNormals's Consistency). Returns whether a
 // face was reversed. Works on the ids, not on OpenMesh: OpenMesh refuses
 // exactly the inconsistent faces this must see.
-bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
+bool Orient(std::vector<Id>& tri, vtkIdType points)
 {
   const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
   // The face corners at each point (corner c is in face c / 3).
@@ -146,8 +150,8 @@ bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
       queue.pop_back();
       for (int k = 0; k < 3; ++k)
       {
-        const vtkIdType a = tri[3 * f + k];
-        const vtkIdType b = tri[3 * f + (k + 1) % 3];
+        const Id a = tri[3 * f + k];
+        const Id b = tri[3 * f + (k + 1) % 3];
         if (a == b)
         {
           continue;
@@ -159,7 +163,7 @@ bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
         for (vtkIdType i = around.First[a]; i < around.First[a + 1]; ++i)
         {
           const vtkIdType g = around.Items[i] / 3;
-          const vtkIdType* ids = &tri[3 * g];
+          const Id* ids = &tri[3 * g];
           if (g != f && g != other && (ids[0] == b || ids[1] == b || ids[2] == b))
           {
             other = g;
@@ -171,7 +175,7 @@ bool Orient(std::vector<vtkIdType>& tri, vtkIdType points)
           continue;
         }
         reached[other] = true;
-        vtkIdType* ids = &tri[3 * other];
+        Id* ids = &tri[3 * other];
         if (HasEdge(ids, a, b))
         {
           std::swap(ids[1], ids[2]);
@@ -216,10 +220,10 @@ struct vtkShadelabMeshNormals::Cache
   bool Consistency = false;
 
   vtkIdType Points = 0;               // OpenMesh vertex i < Points is input point i
-  std::vector<vtkIdType> Triangles;   // 3 input point ids a face, as oriented
+  std::vector<Id> Triangles;          // 3 input point ids a face, as oriented
   bool Reversed = false;              // Consistency reversed some faces
   TriMesh Mesh;                       // face f is input face f
-  std::vector<vtkIdType> CopyOf;      // OpenMesh vertex Points + i copies CopyOf[i]
+  std::vector<Id> CopyOf;             // OpenMesh vertex Points + i copies CopyOf[i]
   std::vector<bool> InDuplicatedFace; // per input point
   vtkIdType DuplicatedFaces = 0;
 
@@ -231,8 +235,7 @@ struct vtkShadelabMeshNormals::Cache
   std::vector<double> CornerWeight;           // 3 a face
 
   /** Builds it all, with the corner weights of `weighting` ready. */
-  void Build(
-    vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles, int weighting);
+  void Build(vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting);
 
   /**
    * The weight of each face corner (3 a face) for the Angle or Max
@@ -247,7 +250,7 @@ struct vtkShadelabMeshNormals::Cache
    * each face corner's output point (`cornerPoint`, 3 a face), and which
    * input points were split.
    */
-  void Split(double cosFeature, std::vector<vtkIdType>& source, vtkIdType* cornerPoint,
+  void Split(double cosFeature, std::vector<vtkIdType>& source, Id* cornerPoint,
     std::vector<bool>& split) const;
 
 private:
@@ -255,7 +258,7 @@ private:
 };
 
 void vtkShadelabMeshNormals::Cache::Build(
-  vtkPolyData* input, bool consistency, std::vector<vtkIdType>&& triangles, int weighting)
+  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting)
 {
   this->Input = input;
   this->InputTime = input->GetMTime();
@@ -299,7 +302,7 @@ void vtkShadelabMeshNormals::Cache::Build(
   QuietOpenMesh quiet;
   for (vtkIdType f = 0; f < faces; ++f)
   {
-    const vtkIdType* ids = &this->Triangles[3 * f];
+    const Id* ids = &this->Triangles[3 * f];
     std::array<TriMesh::VertexHandle, 3> corner;
     for (int k = 0; k < 3; ++k)
     {
@@ -339,7 +342,7 @@ void vtkShadelabMeshNormals::Cache::ComputeFaceNormals()
   this->CellNormals->SetNumberOfComponents(3);
   this->CellNormals->SetNumberOfTuples(faces);
   float* out = this->CellNormals->GetPointer(0);
-  const vtkIdType* tri = this->Triangles.data();
+  const Id* tri = this->Triangles.data();
   for (vtkIdType f = 0; f < faces; ++f)
   {
     const Vec3 p0 = PointAt(xyz, tri[3 * f]);
@@ -368,7 +371,7 @@ const std::vector<double>& vtkShadelabMeshNormals::Cache::CornerWeights(
   this->CornerWeight.resize(3 * faces);
   // The input's points: OpenMesh's may grow meanwhile (Build).
   const double* xyz = this->XYZ->GetPointer(0);
-  const vtkIdType* tri = this->Triangles.data();
+  const Id* tri = this->Triangles.data();
   const double* doubleArea = this->DoubleArea.data();
   double* w = this->CornerWeight.data();
   // Independent per face, so cores can share it.
@@ -459,15 +462,19 @@ int vtkShadelabMeshNormals::RequestData(
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)
   {
     this->Cached.reset();
-    std::vector<vtkIdType> triangles;
+    std::vector<Id> triangles;
     std::string error;
-    input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
     // OpenMesh numbers vertices and halfedges (3 a face, and copies) in int.
-    const size_t limit = std::numeric_limits<int>::max() / 2;
-    if (error.empty() && (static_cast<size_t>(points) > limit || triangles.size() > limit))
+    const vtkIdType limit = std::numeric_limits<Id>::max() / 2;
+    const vtkIdType cornerCount = input->GetPolys()->GetNumberOfConnectivityIds();
+    if (points > limit || cornerCount > limit)
     {
       error = "too large for OpenMesh's int handles: " + std::to_string(points) + " points, " +
-        std::to_string(triangles.size() / 3) + " triangles";
+        std::to_string(cornerCount) + " triangle corners";
+    }
+    else
+    {
+      input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
     }
     if (!error.empty())
     {
@@ -482,18 +489,18 @@ int vtkShadelabMeshNormals::RequestData(
   }
   Cache& cache = *this->Cached;
   const TriMesh& mesh = cache.Mesh;
-  const std::vector<vtkIdType>& tri = cache.Triangles;
+  const std::vector<Id>& tri = cache.Triangles;
   const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
   this->NumberOfDuplicatedFaces = cache.DuplicatedFaces;
 
   // Each output point's input point, and each face corner's output point:
   // the output's own triangles where they differ from the input's.
-  vtkSmartPointer<vtkIdTypeArray> connectivity;
+  vtkSmartPointer<vtkTypeInt32Array> connectivity;
   std::vector<vtkIdType> source;
   std::vector<bool> split;
   if (this->Splitting || cache.Reversed)
   {
-    connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
     connectivity->SetNumberOfValues(3 * faces);
   }
   if (this->Splitting)
@@ -506,7 +513,7 @@ int vtkShadelabMeshNormals::RequestData(
     std::copy(tri.begin(), tri.end(), connectivity->GetPointer(0));
   }
   const vtkIdType outputPoints = this->Splitting ? static_cast<vtkIdType>(source.size()) : points;
-  const vtkIdType* corners = connectivity ? connectivity->GetPointer(0) : tri.data();
+  const Id* corners = connectivity ? connectivity->GetPointer(0) : tri.data();
 
   // Each face's weighted unit normal, summed into its corners' points.
   const int weighting = this->Weighting == Loop ? Angle : this->Weighting;
@@ -588,12 +595,12 @@ int vtkShadelabMeshNormals::RequestData(
   output->GetCellData()->PassData(input->GetCellData());
   if (connectivity)
   {
-    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
     offsets->SetNumberOfValues(faces + 1);
-    vtkIdType* offset = offsets->GetPointer(0);
+    Id* offset = offsets->GetPointer(0);
     for (vtkIdType f = 0; f <= faces; ++f)
     {
-      offset[f] = 3 * f;
+      offset[f] = static_cast<Id>(3 * f);
     }
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     polys->SetData(offsets, connectivity);
@@ -637,7 +644,7 @@ int vtkShadelabMeshNormals::RequestData(
 }
 
 void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdType>& source,
-  vtkIdType* cornerPoint, std::vector<bool>& split) const
+  Id* cornerPoint, std::vector<bool>& split) const
 {
   const TriMesh& mesh = this->Mesh;
   const vtkIdType points = this->Points;
@@ -736,7 +743,7 @@ void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdTy
               // The corner's number in the face: copies are made three at a
               // time in corner order; an original vertex is found by its id
               // (a face that repeats an id was duplicated).
-              const vtkIdType* ids = &this->Triangles[3 * face.Face];
+              const Id* ids = &this->Triangles[3 * face.Face];
               const int k = vi >= points ? (vi - points) % 3
                 : ids[0] == i            ? 0
                 : ids[1] == i            ? 1
@@ -756,20 +763,20 @@ void vtkShadelabMeshNormals::Cache::Split(double cosFeature, std::vector<vtkIdTy
 
   // Then the output points: input point i keeps its number for its first
   // run; its other runs become new points, appended in input order.
-  std::vector<vtkIdType> firstNew(points);
+  std::vector<Id> firstNew(points);
   for (vtkIdType i = 0; i < points; ++i)
   {
-    firstNew[i] = static_cast<vtkIdType>(source.size());
+    firstNew[i] = static_cast<Id>(source.size());
     split[i] = runs[i] > 1;
     source.insert(source.end(), std::max(runs[i] - 1, 0), i);
   }
-  const vtkIdType* tri = this->Triangles.data();
+  const Id* tri = this->Triangles.data();
   vtkSMPTools::For(0, static_cast<vtkIdType>(this->Triangles.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType c = begin; c < end; ++c)
       {
-        const vtkIdType run = cornerPoint[c];
+        const Id run = cornerPoint[c];
         cornerPoint[c] = run == 0 ? tri[c] : firstNew[tri[c]] + run - 1;
       }
     });

@@ -1,8 +1,8 @@
 #include "image_output.h"
 
-#include <OpenImageIO/imageio.h>
+#include "output_path.h"
 
-#include <unistd.h>
+#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -16,12 +16,6 @@ namespace shadelab
 {
 namespace
 {
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 OIIO::TypeDesc ToTypeDesc(PixelType type)
 {
   switch (type)
@@ -35,12 +29,6 @@ OIIO::TypeDesc ToTypeDesc(PixelType type)
     default:
       return OIIO::TypeDesc::UINT8;
   }
-}
-
-// Beside the target, so that the rename stays on one file system.
-std::string TemporaryName(const std::string& path)
-{
-  return path + ".tmp-" + std::to_string(getpid());
 }
 
 std::string OneLine(std::string s)
@@ -71,12 +59,8 @@ std::unique_ptr<OIIO::ImageOutput> Open(
   {
     const int saved = errno;
     std::remove(temporary.c_str());
-    const std::string folder = std::filesystem::path(path).parent_path().string();
-    if (access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
-    {
-      error = std::string("cannot write: ") + std::strerror(errno);
-    }
-    else
+    error = CheckWritableFolder(path);
+    if (error.empty())
     {
       const std::string why = OneLine(out->geterror());
       error = "cannot write: " + (why.empty() ? std::string(std::strerror(saved)) : why);
@@ -135,7 +119,7 @@ PixelType ResolvePixelType(const std::string& path, PixelType requested)
   {
     return requested;
   }
-  const std::string ext = Lower(std::filesystem::path(path).extension().string());
+  const std::string ext = LowerExtension(path);
   return ext == ".exr" || ext == ".hdr" || ext == ".pfm" ? PixelType::Float : PixelType::UInt8;
 }
 

@@ -1,6 +1,7 @@
 #include "image_writer_process.h"
 
 #include "image_writer_protocol.h"
+#include "output_path.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -105,10 +106,9 @@ std::string ImageWriterProcess::CheckFolder(const std::string& path)
   {
     return "no file extension to choose an image format by";
   }
-  const std::string folder = p.parent_path().empty() ? "." : p.parent_path().string();
-  if (access(folder.c_str(), W_OK) != 0)
+  if (std::string error = CheckWritableFolder(path); !error.empty())
   {
-    return std::string("cannot write: ") + std::strerror(errno);
+    return error;
   }
   std::error_code error;
   if (std::filesystem::is_directory(p, error))

@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "mesh_input.h"
+#include "output_path.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYWriter.h"
@@ -15,13 +16,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
-
-#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 
 namespace shadelab
@@ -50,25 +47,18 @@ void Write(vtkPolyData* mesh, const std::string& path)
   writer->SetFileName(path.c_str());
   writer->Write();
 }
-
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
 }
 
 int RunNormals(const NormalsOptions& o)
 {
-  const std::string ext = Lower(std::filesystem::path(o.Output).extension().string());
+  const std::string ext = LowerExtension(o.Output);
   if (ext != ".ply" && ext != ".vtp" && ext != ".obj")
   {
     return ReportError(o.Output, "unknown mesh format \"" + ext + "\" (known: .ply .vtp .obj)");
   }
-  const std::string folder = std::filesystem::path(o.Output).parent_path().string();
-  if (access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
+  if (const std::string error = CheckWritableFolder(o.Output); !error.empty())
   {
-    return ReportError(o.Output, std::string("cannot write: ") + std::strerror(errno));
+    return ReportError(o.Output, error);
   }
 
   auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
@@ -91,7 +81,7 @@ int RunNormals(const NormalsOptions& o)
   }
 
   // Written to a temporary name beside OUT and renamed: no partial file.
-  const std::string temporary = o.Output + ".tmp-" + std::to_string(getpid()) + ext;
+  const std::string temporary = TemporaryName(o.Output);
   auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
   window->Clear();
   vtkPolyData* mesh = normals.Mesh;

@@ -1,5 +1,7 @@
 #include "shader_dump.h"
 
+#include "output_path.h"
+
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkMapper.h>
@@ -60,7 +62,7 @@ std::string ShaderDump::PrepareFolder(const std::string& folder)
 void ShaderDump::Write(const std::string& extension, const std::string& source)
 {
   const std::string path = this->Base + extension;
-  const std::string temporary = path + ".tmp-" + std::to_string(getpid());
+  const std::string temporary = TemporaryName(path);
   std::ofstream out(temporary, std::ios::binary);
   out << source;
   out.close();

@@ -11,6 +11,7 @@
 // peak when "5" is written to /proc/self/clear_refs), the largest over a
 // configuration's runs, with the input mesh already in memory. Markdown to
 // stdout, progress to stderr.
+#include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 
@@ -21,7 +22,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkLoopSubdivisionFilter.h>
-#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -36,7 +36,6 @@
 #include <sched.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -53,7 +52,14 @@
 namespace
 {
 using Clock = std::chrono::steady_clock;
-using Vec = std::array<double, 3>;
+using Vec = shadelab::Vec3;
+using shadelab::operator+;
+using shadelab::operator-;
+using shadelab::operator*;
+using shadelab::cross;
+using shadelab::dot;
+using shadelab::length;
+using shadelab::normalize;
 
 const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
 
@@ -391,14 +397,11 @@ vtkSmartPointer<vtkPolyData> Tessellate(const Surface& s, double jitter, unsigne
   return mesh;
 }
 
-// Moves each vertex of a mesh on the unit sphere tangentially, in a random
-// direction, by up to `jitter` of its shortest edge, and back onto the
-// sphere. Relative to the shortest edge, so that the thin cells by a UV
-// sphere's poles get irregular without folding or turning into slivers.
-void JitterOnSphere(vtkPolyData* mesh, double jitter, unsigned seed)
+// Calls visit(id, nextId, p, next, previous) for every corner of every
+// cell: the corner's point id, the next one's, and the three positions.
+template <typename Visit>
+void ForEachCorner(vtkPolyData* mesh, Visit visit)
 {
-  const vtkIdType count = mesh->GetNumberOfPoints();
-  std::vector<double> shortest(count, std::numeric_limits<double>::infinity());
   vtkIdType size;
   const vtkIdType* ids;
   for (auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
@@ -407,14 +410,30 @@ void JitterOnSphere(vtkPolyData* mesh, double jitter, unsigned seed)
     cells->GetCurrentCell(size, ids);
     for (vtkIdType k = 0; k < size; ++k)
     {
-      Vec a, b;
-      mesh->GetPoint(ids[k], a.data());
-      mesh->GetPoint(ids[(k + 1) % size], b.data());
-      const double l = std::sqrt(vtkMath::Distance2BetweenPoints(a.data(), b.data()));
-      shortest[ids[k]] = std::min(shortest[ids[k]], l);
-      shortest[ids[(k + 1) % size]] = std::min(shortest[ids[(k + 1) % size]], l);
+      Vec p, next, previous;
+      mesh->GetPoint(ids[k], p.data());
+      mesh->GetPoint(ids[(k + 1) % size], next.data());
+      mesh->GetPoint(ids[(k + size - 1) % size], previous.data());
+      visit(ids[k], ids[(k + 1) % size], p, next, previous);
     }
   }
+}
+
+// Moves each vertex of a mesh on the unit sphere tangentially, in a random
+// direction, by up to `jitter` of its shortest edge, and back onto the
+// sphere. Relative to the shortest edge, so that the thin cells by a UV
+// sphere's poles get irregular without folding or turning into slivers.
+void JitterOnSphere(vtkPolyData* mesh, double jitter, unsigned seed)
+{
+  const vtkIdType count = mesh->GetNumberOfPoints();
+  std::vector<double> shortest(count, std::numeric_limits<double>::infinity());
+  ForEachCorner(mesh,
+    [&](vtkIdType id, vtkIdType nextId, const Vec& p, const Vec& next, const Vec&)
+    {
+      const double l = length(next - p);
+      shortest[id] = std::min(shortest[id], l);
+      shortest[nextId] = std::min(shortest[nextId], l);
+    });
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   for (vtkIdType i = 0; i < count; ++i)
@@ -427,19 +446,20 @@ void JitterOnSphere(vtkPolyData* mesh, double jitter, unsigned seed)
       : (std::fabs(p[1]) < std::fabs(p[2]) ? 1 : 2);
     Vec axis = { 0, 0, 0 };
     axis[least] = 1;
-    Vec t1, t2;
-    vtkMath::Cross(p.data(), axis.data(), t1.data());
-    vtkMath::Normalize(t1.data());
-    vtkMath::Cross(p.data(), t1.data(), t2.data());
+    const Vec t1 = normalize(cross(p, axis));
+    const Vec t2 = cross(p, t1);
     const double direction = 2 * M_PI * unit(random);
     const double distance = jitter * shortest[i] * unit(random);
-    for (int c = 0; c < 3; ++c)
-    {
-      p[c] += distance * (std::cos(direction) * t1[c] + std::sin(direction) * t2[c]);
-    }
-    vtkMath::Normalize(p.data());
+    p = normalize(p + distance * (std::cos(direction) * t1 + std::sin(direction) * t2));
     mesh->GetPoints()->SetPoint(i, p.data());
   }
+}
+
+// Angle between two vectors in degrees; atan2 stays accurate for tiny
+// angles, where acos does not.
+double Degrees(const Vec& a, const Vec& b)
+{
+  return std::atan2(length(cross(a, b)), dot(a, b)) * 180 / M_PI;
 }
 
 struct Error
@@ -459,59 +479,30 @@ Error AngleError(vtkPolyData* output, const Surface& s)
   {
     Vec p;
     output->GetPoint(i, p.data());
-    const Vec exact = s.Normal(p);
-    double degrees = 180;
+    Vec n = { 0, 0, 0 };
     if (normals)
     {
-      const double* n = normals->GetTuple3(i);
-      const Vec cross = { n[1] * exact[2] - n[2] * exact[1], n[2] * exact[0] - n[0] * exact[2],
-        n[0] * exact[1] - n[1] * exact[0] };
-      const double sine =
-        std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-      const double cosine = n[0] * exact[0] + n[1] * exact[1] + n[2] * exact[2];
-      if (sine > 0 || cosine > 0)
-      {
-        // atan2 stays accurate for tiny angles, where acos does not.
-        degrees = std::atan2(sine, cosine) * 180 / M_PI;
-      }
+      normals->GetTuple(i, n.data());
     }
+    const double degrees = n == Vec{ 0, 0, 0 } ? 180 : Degrees(n, s.Normal(p));
     e.Mean += degrees / count;
     e.Max = std::max(e.Max, degrees);
   }
   return e;
 }
 
-Vec Unit(const Vec& v)
-{
-  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return { v[0] / l, v[1] / l, v[2] / l };
-}
-
 // The smallest and largest inner angle of the mesh's triangles, degrees:
 // slivers (angles near 180) are where the weightings differ most.
-Error TriangleAngles(vtkPolyData* mesh)
+std::pair<double, double> TriangleAngles(vtkPolyData* mesh)
 {
-  Error range{ 180, 0 }; // Mean: the smallest; Max: the largest
-  vtkIdType size;
-  const vtkIdType* ids;
-  for (auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-       !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    cells->GetCurrentCell(size, ids);
-    for (vtkIdType k = 0; k < size; ++k)
+  std::pair<double, double> range{ 180, 0 };
+  ForEachCorner(mesh,
+    [&](vtkIdType, vtkIdType, const Vec& p, const Vec& next, const Vec& previous)
     {
-      Vec a, b, c;
-      mesh->GetPoint(ids[k], a.data());
-      mesh->GetPoint(ids[(k + 1) % size], b.data());
-      mesh->GetPoint(ids[(k + 2) % size], c.data());
-      const Vec ab = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const Vec ac = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      const double degrees =
-        vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(ab.data(), ac.data()));
-      range.Mean = std::min(range.Mean, degrees);
-      range.Max = std::max(range.Max, degrees);
-    }
-  }
+      const double degrees = Degrees(next - p, previous - p);
+      range.first = std::min(range.first, degrees);
+      range.second = std::max(range.second, degrees);
+    });
   return range;
 }
 
@@ -527,7 +518,7 @@ void AccuracyTable()
       return Vec{ std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta),
         -std::cos(phi) };
     },
-    [](const Vec& p) { return Unit(p); } };
+    [](const Vec& p) { return normalize(p); } };
   const Surface torus{ "torus", 64, 24, false,
     [R, r](double u, double v)
     {
@@ -540,7 +531,7 @@ void AccuracyTable()
     {
       // Away from the nearest point of the core circle.
       const double l = std::hypot(p[0], p[1]);
-      return Unit({ p[0] - R * p[0] / l, p[1] - R * p[1] / l, p[2] });
+      return normalize({ p[0] - R * p[0] / l, p[1] - R * p[1] / l, p[2] });
     } };
 
   // How irregular: tangential moves up to 0.3 of a vertex's shortest edge
@@ -552,8 +543,8 @@ void AccuracyTable()
   struct Column
   {
     std::string Name;
-    std::vector<Error> Errors; // the weightings in order, then vtkPolyDataNormals
-    Error Angles;              // the triangles' smallest and largest angles
+    std::vector<Error> Errors;        // the weightings in order, then vtkPolyDataNormals
+    std::pair<double, double> Angles; // the triangles' smallest and largest angles
   };
   std::vector<Column> columns;
   for (const Surface* s : { &sphere, &torus })
@@ -620,7 +611,7 @@ void AccuracyTable()
   std::printf("| (the triangles' smallest / largest angle) |");
   for (const Column& c : columns)
   {
-    std::printf(" %.1f / %.1f |", c.Angles.Mean, c.Angles.Max);
+    std::printf(" %.1f / %.1f |", c.Angles.first, c.Angles.second);
   }
   std::printf("\n");
   std::fflush(stdout);

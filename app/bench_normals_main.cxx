@@ -53,13 +53,7 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 using Vec = shadelab::Vec3;
-using shadelab::operator+;
-using shadelab::operator-;
-using shadelab::operator*;
-using shadelab::cross;
-using shadelab::dot;
-using shadelab::length;
-using shadelab::normalize;
+using namespace shadelab::vec3;
 
 const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
 

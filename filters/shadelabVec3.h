@@ -44,6 +44,21 @@ inline Vec3 normalize(const Vec3& a)
   const double l = length(a);
   return l > 0 ? (1 / l) * a : a;
 }
+
+/**
+ * Vec3 is a std::array, so these are not found by argument-dependent lookup
+ * outside namespace shadelab: `using namespace shadelab::vec3;` brings them.
+ */
+namespace vec3
+{
+using shadelab::operator+;
+using shadelab::operator-;
+using shadelab::operator*;
+using shadelab::cross;
+using shadelab::dot;
+using shadelab::length;
+using shadelab::normalize;
+}
 }
 
 #endif

@@ -28,11 +28,7 @@
 #include <vector>
 
 using namespace shadelab_test;
-using shadelab::operator+;
-using shadelab::operator-;
-using shadelab::operator*;
-using shadelab::cross;
-using shadelab::dot;
+using namespace shadelab::vec3;
 using shadelab::FrameLight;
 using shadelab::IlluminationInputs;
 using shadelab::Light;

@@ -63,13 +63,7 @@ constexpr int Weightings = 5;
 // Vectors in double
 
 using Vec = shadelab::Vec3;
-using shadelab::operator+;
-using shadelab::operator-;
-using shadelab::operator*;
-using shadelab::cross;
-using shadelab::dot;
-using shadelab::length;
-using shadelab::normalize;
+using namespace shadelab::vec3;
 using Triangle = std::array<vtkIdType, 3>;
 
 double MaxDifference(const Vec& a, const Vec& b)

@@ -18,10 +18,8 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCleanPolyData.h>
 #include <vtkLight.h>
 #include <vtkLogger.h>
-#include <vtkLoopSubdivisionFilter.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -108,13 +106,7 @@ int main(int argc, char** argv)
   vtkSmartPointer<vtkPolyData> mesh = loaded.Mesh;
   if (subdivide > 0)
   {
-    auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
-    clean->SetInputData(mesh);
-    auto loop = vtkSmartPointer<vtkLoopSubdivisionFilter>::New();
-    loop->SetInputConnection(clean->GetOutputPort());
-    loop->SetNumberOfSubdivisions(subdivide);
-    loop->Update();
-    mesh = ComputeNormals(loop->GetOutput(), o.Computed).Mesh;
+    mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },

@@ -11,17 +11,15 @@
 // peak when "5" is written to /proc/self/clear_refs), the largest over a
 // configuration's runs, with the input mesh already in memory. Markdown to
 // stdout, progress to stderr.
+#include "mesh_input.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
-#include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
-#include <vtkLoopSubdivisionFilter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -652,24 +650,9 @@ int main(int argc, char** argv)
     if (level > 0)
     {
       std::fprintf(stderr, "bench-normals: Loop subdivision x%d\n", level);
-      auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
-      clean->SetInputData(mesh);
-      auto loop = vtkSmartPointer<vtkLoopSubdivisionFilter>::New();
-      loop->SetInputConnection(clean->GetOutputPort());
-      loop->SetNumberOfSubdivisions(level);
-      loop->Update();
-      mesh = vtkSmartPointer<vtkPolyData>::New();
-      mesh->ShallowCopy(loop->GetOutput());
-      // Double points, as shadelab's readers give them, so that neither
-      // filter pays for a conversion the bunny itself does not need.
-      if (mesh->GetPoints()->GetDataType() != VTK_DOUBLE)
-      {
-        auto xyz = vtkSmartPointer<vtkDoubleArray>::New();
-        xyz->DeepCopy(mesh->GetPoints()->GetData()); // converts
-        auto points = vtkSmartPointer<vtkPoints>::New();
-        points->SetData(xyz);
-        mesh->SetPoints(points);
-      }
+      // Double points, as for the bunny itself, so that neither filter
+      // pays for a conversion.
+      mesh = shadelab::LoopSubdivided(mesh, level);
       std::fprintf(stderr, "bench-normals: %lld triangles, points in %s\n",
         static_cast<long long>(mesh->GetNumberOfPolys()),
         mesh->GetPoints()->GetData()->GetDataTypeAsString());

@@ -4,8 +4,12 @@
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 
+#include <vtkCleanPolyData.h>
+#include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
+#include <vtkLoopSubdivisionFilter.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 namespace shadelab
@@ -23,6 +27,27 @@ ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& setting
     return {};
   }
   return { normals->GetOutput(), normals->GetNumberOfDuplicatedFaces() };
+}
+
+vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
+{
+  auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
+  clean->SetInputData(mesh);
+  auto loop = vtkSmartPointer<vtkLoopSubdivisionFilter>::New();
+  loop->SetInputConnection(clean->GetOutputPort());
+  loop->SetNumberOfSubdivisions(levels);
+  loop->Update();
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(loop->GetOutput());
+  if (result->GetPoints()->GetDataType() != VTK_DOUBLE)
+  {
+    auto xyz = vtkSmartPointer<vtkDoubleArray>::New();
+    xyz->DeepCopy(result->GetPoints()->GetData()); // converts
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetData(xyz);
+    result->SetPoints(points);
+  }
+  return result;
 }
 
 LoadedMesh LoadMesh(const SceneOptions& options)

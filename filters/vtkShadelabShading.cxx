@@ -199,8 +199,10 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
         normalMatrix->SetElement(i, j, modelView->GetElement(i, j));
       }
     }
+    // vtkShaderProgram::SetUniformMatrix hands GL the elements row by row
+    // as if they were columns, so GLSL receives the transpose of what is
+    // passed: pass the inverse, and the shader gets the inverse transpose.
     normalMatrix->Invert();
-    normalMatrix->Transpose();
     program->SetUniformMatrix("shadelabNormalMatrix", normalMatrix);
   }
 }

@@ -1,5 +1,6 @@
 // shadelab: the lecture's illumination model and shading rules on triangle
 // meshes, through VTK. Each command lives in its own file.
+#include "bench_command.h"
 #include "errors.h"
 #include "metadata.h"
 #include "normals_command.h"
@@ -36,6 +37,8 @@ int main(int argc, char** argv)
   CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
   shadelab::NormalsOptions normals;
   CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
+  shadelab::BenchOptions bench;
+  CLI::App* benchCommand = shadelab::AddBenchCommand(program, bench);
 
   try
   {
@@ -73,6 +76,10 @@ int main(int argc, char** argv)
   if (normalsCommand->parsed())
   {
     return shadelab::RunNormals(normals);
+  }
+  if (benchCommand->parsed())
+  {
+    return shadelab::RunBench(bench, commandLine);
   }
   return shadelab::ExitUsage;
 }

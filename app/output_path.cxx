@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 namespace shadelab
 {
@@ -29,6 +31,21 @@ std::string CheckWritableFolder(const std::string& path)
   if (access(folder.empty() ? "." : folder.c_str(), W_OK) != 0)
   {
     return std::string("cannot write: ") + std::strerror(errno);
+  }
+  return {};
+}
+
+std::string WriteTextFile(const std::string& path, const std::string& text)
+{
+  const std::string temporary = TemporaryName(path);
+  std::ofstream out(temporary, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out || std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    return "cannot write " + path + ": " + reason;
   }
   return {};
 }

@@ -61,18 +61,10 @@ std::string ShaderDump::PrepareFolder(const std::string& folder)
 
 void ShaderDump::Write(const std::string& extension, const std::string& source)
 {
-  const std::string path = this->Base + extension;
-  const std::string temporary = TemporaryName(path);
-  std::ofstream out(temporary, std::ios::binary);
-  out << source;
-  out.close();
-  if (!out || std::rename(temporary.c_str(), path.c_str()) != 0)
+  const std::string error = WriteTextFile(this->Base + extension, source);
+  if (this->Error.empty())
   {
-    std::remove(temporary.c_str());
-    if (this->Error.empty())
-    {
-      this->Error = "cannot write " + path + ": " + std::strerror(errno);
-    }
+    this->Error = error;
   }
 }
 }

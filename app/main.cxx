@@ -1,5 +1,6 @@
 // shadelab: the lecture's illumination model and shading rules on triangle
 // meshes, through VTK. Each command lives in its own file.
+#include "advise_command.h"
 #include "bench_command.h"
 #include "errors.h"
 #include "metadata.h"
@@ -39,6 +40,8 @@ int main(int argc, char** argv)
   CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
   shadelab::BenchOptions bench;
   CLI::App* benchCommand = shadelab::AddBenchCommand(program, bench);
+  shadelab::AdviseOptions advise;
+  CLI::App* adviseCommand = shadelab::AddAdviseCommand(program, advise);
 
   try
   {
@@ -80,6 +83,10 @@ int main(int argc, char** argv)
   if (benchCommand->parsed())
   {
     return shadelab::RunBench(bench, commandLine);
+  }
+  if (adviseCommand->parsed())
+  {
+    return shadelab::RunAdvise(advise);
   }
   return shadelab::ExitUsage;
 }

@@ -245,6 +245,11 @@ std::string ReadSpeedAccuracyCsv(const std::string& path, std::vector<SpeedAccur
   {
     return "cannot read the measurements";
   }
+  return ParseSpeedAccuracyCsv(in, rows);
+}
+
+std::string ParseSpeedAccuracyCsv(std::istream& in, std::vector<SpeedAccuracyRow>& rows)
+{
   auto split = [](const std::string& line)
   {
     std::vector<std::string> fields;

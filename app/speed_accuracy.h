@@ -7,6 +7,7 @@
 #include "image_output.h"
 #include "shadelabExactImage.h"
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,8 @@ std::string WriteSpeedAccuracyJson(
   const std::string& path, const std::vector<SpeedAccuracyRow>& rows);
 /** Reads what WriteSpeedAccuracyCsv wrote (columns by name, in any order); an error text or "". */
 std::string ReadSpeedAccuracyCsv(const std::string& path, std::vector<SpeedAccuracyRow>& rows);
+/** The same from a stream. */
+std::string ParseSpeedAccuracyCsv(std::istream& in, std::vector<SpeedAccuracyRow>& rows);
 }
 
 #endif

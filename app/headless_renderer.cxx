@@ -6,6 +6,7 @@
 
 #include <vtkAutoInit.h>
 #include <vtkOutputWindow.h>
+#include <vtkProp.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
 
@@ -44,6 +45,16 @@ std::string HeadlessRenderer::Start(int width, int height)
                                                   : std::string("no OSMesa context"));
   }
   return {};
+}
+
+void HeadlessRenderer::Clear()
+{
+  this->Renderer->RemoveAllViewProps();
+}
+
+void HeadlessRenderer::Release(vtkProp* prop)
+{
+  prop->ReleaseGraphicsResources(this->Window);
 }
 
 FloatImage HeadlessRenderer::Render()

@@ -3,12 +3,13 @@
 #ifndef shadelab_headless_renderer_h
 #define shadelab_headless_renderer_h
 
-#include "image_output.h"
+#include "image_pixels.h"
 
 #include <vtkSmartPointer.h>
 
 #include <string>
 
+class vtkProp;
 class vtkRenderer;
 class vtkShadelabFloatCapturePass;
 class vtkShadelabOSMesaRenderWindow;
@@ -26,6 +27,12 @@ public:
 
   /** The renderer to fill with the scene. */
   vtkRenderer* GetRenderer() const { return this->Renderer; }
+
+  /** Takes every prop out of the renderer (they keep their OpenGL resources). */
+  void Clear();
+
+  /** Frees prop's OpenGL resources (buffers; the compiled programs stay for others). */
+  void Release(vtkProp* prop);
 
   /** Renders one frame and returns it. */
   FloatImage Render();

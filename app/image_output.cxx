@@ -77,54 +77,11 @@ std::unique_ptr<OIIO::ImageOutput> Open(
   }
   return out;
 }
-
-// The picture as top-down RGB of type T, each value through convert.
-template <typename T, typename Convert>
-std::vector<T> ToTopDownRgb(const FloatImage& image, Convert convert)
-{
-  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * 3);
-  for (int y = 0; y < image.Height; ++y)
-  {
-    const float* src =
-      image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
-    T* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
-    for (int x = 0; x < image.Width; ++x)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        dst[3 * x + c] = convert(src[4 * x + c]);
-      }
-    }
-  }
-  return out;
-}
-
-// round(scale*clamp(I, 0, 1)), the contract's rule for integer files.
-template <typename T>
-std::vector<T> Quantise(const FloatImage& image, double scale)
-{
-  return ToTopDownRgb<T>(image,
-    [scale](double v)
-    {
-      // NaN compares false and lands on 0.
-      const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
-      return static_cast<T>(std::floor(scale * clamped + 0.5));
-    });
-}
-}
-
-PixelType ResolvePixelType(const std::string& path, PixelType requested)
-{
-  if (requested != PixelType::Auto)
-  {
-    return requested;
-  }
-  const std::string ext = LowerExtension(path);
-  return ext == ".exr" || ext == ".hdr" || ext == ".pfm" ? PixelType::Float : PixelType::UInt8;
 }
 
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
-  const std::vector<std::pair<std::string, std::string>>& metadata)
+  const std::vector<std::pair<std::string, std::string>>& metadata,
+  const std::vector<std::uint8_t>* rgb8)
 {
   const PixelType resolved = ResolvePixelType(path, type);
   OIIO::ImageSpec spec(image.Width, image.Height, 3, ToTypeDesc(resolved));
@@ -150,7 +107,8 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
         OIIO::TypeDesc::FLOAT, ToTopDownRgb<float>(image, [](float v) { return v; }).data());
       break;
     default:
-      written = out->write_image(OIIO::TypeDesc::UINT8, Quantise<uint8_t>(image, 255).data());
+      written = out->write_image(
+        OIIO::TypeDesc::UINT8, rgb8 ? rgb8->data() : Quantise<uint8_t>(image, 255).data());
       break;
   }
   const std::string temporary = TemporaryName(path);

@@ -5,34 +5,28 @@
 #ifndef shadelab_image_output_h
 #define shadelab_image_output_h
 
+#include "image_pixels.h"
 #include "options.h"
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace shadelab
 {
-/** A rendered picture: RGBA floats, unclamped, bottom row first. */
-struct FloatImage
-{
-  int Width = 0;
-  int Height = 0;
-  std::vector<float> Rgba;
-};
-
-/** The pixel type that Auto means for path: float for EXR, HDR and PFM, else 8-bit. */
-PixelType ResolvePixelType(const std::string& path, PixelType requested);
-
 /**
  * Writes image to path as RGB: 8 and 16-bit types store
  * round(max*clamp(I, 0, 1)), float types store I as rendered. metadata
  * becomes string attributes of the file (ImageDescription, Software, ...).
  * Returns an error text (an unknown format, an unwritable path, a pixel type
  * the format cannot store), or an empty string; on error no file is left.
+ * rgb8, when given, is the 8-bit picture already quantised (Quantise<uint8_t>),
+ * used instead of image's pixels when the type resolves to 8-bit.
  */
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
-  const std::vector<std::pair<std::string, std::string>>& metadata);
+  const std::vector<std::pair<std::string, std::string>>& metadata,
+  const std::vector<std::uint8_t>* rgb8 = nullptr);
 }
 
 #endif

@@ -1,24 +1,29 @@
-// shadelab-image-writer: writes the one picture that shadelab sends on
-// standard input (image_writer_protocol.h) and answers on standard output
-// with an error line, or nothing on success. See image_writer_process.h.
+// shadelab-image-writer: writes the pictures that shadelab sends on
+// standard input (image_writer_protocol.h), one after another, and answers
+// each on standard output with one line: empty when it was written, else
+// the error. See image_writer_process.h.
 #include "image_output.h"
 #include "image_writer_protocol.h"
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <string>
+
 int main()
 {
+  // Until shadelab closes the pipe (or sends something malformed).
   shadelab::ImageRequest request;
-  if (!shadelab::ReceiveImageRequest(STDIN_FILENO, request))
+  while (shadelab::ReceiveImageRequest(STDIN_FILENO, request))
   {
-    return 0; // shadelab stopped before it had a picture: nothing to write
-  }
-  const std::string error =
-    shadelab::WriteImage(request.Path, request.Image, request.Type, request.Metadata);
-  if (!error.empty())
-  {
-    (void)!write(STDOUT_FILENO, error.data(), error.size());
-    return 1;
+    std::string reply = shadelab::WriteImage(request.Path, request.Image, request.Type,
+      request.Metadata, request.Rgb8.empty() ? nullptr : &request.Rgb8);
+    std::replace(reply.begin(), reply.end(), '\n', ' ');
+    reply += '\n';
+    if (write(STDOUT_FILENO, reply.data(), reply.size()) != static_cast<ssize_t>(reply.size()))
+    {
+      return 1;
+    }
   }
   return 0;
 }

@@ -10,7 +10,7 @@
 #ifndef shadelab_image_writer_process_h
 #define shadelab_image_writer_process_h
 
-#include "image_output.h"
+#include "image_pixels.h"
 
 #include <sys/types.h>
 
@@ -38,6 +38,17 @@ public:
   std::string Write(const std::string& path, const FloatImage& image, PixelType type,
     const std::vector<std::pair<std::string, std::string>>& metadata);
 
+  /**
+   * Hands the picture over and returns once the writer has it, so that the
+   * caller renders the next while this one is encoded. Each Submit must be
+   * followed by one Collect (before the next Submit); "" or an error text.
+   */
+  std::string Submit(const std::string& path, const FloatImage& image, PixelType type,
+    const std::vector<std::pair<std::string, std::string>>& metadata);
+
+  /** Waits until the submitted picture is written: "" or an error text. */
+  std::string Collect();
+
 private:
   ImageWriterProcess(const ImageWriterProcess&) = delete;
   void operator=(const ImageWriterProcess&) = delete;
@@ -48,6 +59,8 @@ private:
   int ToChild = -1;
   int FromChild = -1;
   std::string StartError;
+  bool Written = false; // a picture was handed over: let the writer finish
+  bool Pending = false; // submitted, not yet collected
 };
 }
 

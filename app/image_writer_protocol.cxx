@@ -83,8 +83,11 @@ bool SendImageRequest(int fd, const ImageRequest& r)
   {
     ok = ok && SendText(fd, key) && SendText(fd, value);
   }
+  const bool bytes = !r.Rgb8.empty();
   return ok && Send<int32_t>(fd, r.Image.Width) && Send<int32_t>(fd, r.Image.Height) &&
-    WriteAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float));
+    Send<uint32_t>(fd, bytes ? 1 : 0) &&
+    (bytes ? WriteAll(fd, r.Rgb8.data(), r.Rgb8.size())
+           : WriteAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float)));
 }
 
 bool ReceiveImageRequest(int fd, ImageRequest& r)
@@ -111,9 +114,22 @@ bool ReceiveImageRequest(int fd, ImageRequest& r)
   {
     return false;
   }
+  uint32_t bytes = 0;
+  if (!Receive(fd, bytes) || bytes > 1)
+  {
+    return false;
+  }
   r.Image.Width = width;
   r.Image.Height = height;
-  r.Image.Rgba.resize(static_cast<size_t>(width) * height * 4);
+  const size_t pixels = static_cast<size_t>(width) * height;
+  if (bytes)
+  {
+    r.Image.Rgba.clear();
+    r.Rgb8.resize(pixels * 3);
+    return ReadAll(fd, r.Rgb8.data(), r.Rgb8.size());
+  }
+  r.Rgb8.clear();
+  r.Image.Rgba.resize(pixels * 4);
   return ReadAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float));
 }
 }

@@ -4,7 +4,9 @@
 #ifndef shadelab_image_writer_protocol_h
 #define shadelab_image_writer_protocol_h
 
-#include "image_output.h"
+#include "image_pixels.h"
+
+#include <cstdint>
 
 #include <string>
 #include <utility>
@@ -17,7 +19,8 @@ struct ImageRequest
   std::string Path;
   PixelType Type = PixelType::Auto;
   std::vector<std::pair<std::string, std::string>> Metadata;
-  FloatImage Image;
+  FloatImage Image;               // its Width and Height always; its pixels unless Rgb8 has them
+  std::vector<std::uint8_t> Rgb8; // 8-bit pictures: top-down RGB, quantised by the sender
 };
 
 /** Writes request to fd; false if the pipe broke. */

@@ -62,7 +62,7 @@ nlohmann::ordered_json LightJson(const Light& light)
 }
 
 std::vector<std::pair<std::string, std::string>> DescribePicture(
-  const std::string& commandLine, const SceneOptions& o, vtkCamera* camera)
+  const std::string& commandLine, const SceneOptions& o, vtkCamera* camera, const std::string& shot)
 {
   const Material m = o.EffectiveMaterial();
   Vec3 position, focal, up;
@@ -73,6 +73,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(
   nlohmann::ordered_json j;
   j["shadelab"] = ShadelabVersion;
   j["command"] = commandLine;
+  if (!shot.empty())
+  {
+    j["shot"] = shot;
+  }
   j["mesh"] = o.Mesh;
   j["shading"] = ToString(o.ShadingRule);
   j["reflection"] = ToString(o.ReflectionModel);

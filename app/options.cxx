@@ -193,6 +193,27 @@ Light ParseLight(const std::string& text)
   return light;
 }
 
+std::pair<int, int> ParseShard(const std::string& text)
+{
+  const auto slash = text.find('/');
+  int index = -1, count = 0;
+  if (slash != std::string::npos)
+  {
+    const auto i = std::from_chars(text.data(), text.data() + slash, index);
+    const auto n = std::from_chars(text.data() + slash + 1, text.data() + text.size(), count);
+    if (i.ec != std::errc() || i.ptr != text.data() + slash || n.ec != std::errc() ||
+      n.ptr != text.data() + text.size())
+    {
+      index = -1;
+    }
+  }
+  if (index < 0 || count < 1 || index >= count)
+  {
+    throw std::invalid_argument("'" + text + "' is not a shard I/N with 0 <= I < N");
+  }
+  return { index, count };
+}
+
 const char* ToString(NormalsMode mode)
 {
   switch (mode)
@@ -228,7 +249,7 @@ const char* ToString(PixelType type)
 Material SceneOptions::EffectiveMaterial() const
 {
   const Material* base = FindLectureMaterial(this->MaterialName);
-  Material m = base ? *base : Material{};
+  Material m = base ? *base : Material{ this->MaterialName };
   m.Ka = this->Ka.value_or(m.Ka);
   m.Kd = this->Kd.value_or(m.Kd);
   m.Ks = this->Ks.value_or(m.Ks);
@@ -238,7 +259,8 @@ Material SceneOptions::EffectiveMaterial() const
 
 void AddSceneOptions(CLI::App& command, SceneOptions& o)
 {
-  command.add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk")->required();
+  // Required unless a scene file gives the meshes (the render command checks).
+  command.add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk");
 
   const std::map<std::string, Shading> shadings{ { "none", Shading::None },
     { "flat", Shading::Flat }, { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong } };

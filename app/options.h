@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI
@@ -75,11 +76,19 @@ struct SceneOptions
 struct RenderOptions
 {
   SceneOptions Scene;
-  std::string Output;
+  std::string Output; // with a scene file: an output template for every shot
   PixelType Pixels = PixelType::Auto;
   std::string DumpShaders; // a folder, or empty
   bool Verbose = false;
+  std::string SceneFile; // --scene: the shots come from this JSON file
+  bool PrintSchema = false;
+  bool Quiet = false;
+  int ShardIndex = 0; // --shard I/N
+  int ShardCount = 1;
 };
+
+/** "I/N" with 0 <= I < N: the shard index and count. */
+std::pair<int, int> ParseShard(const std::string& text);
 
 /** Declares the scene options on a command. */
 void AddSceneOptions(CLI::App& command, SceneOptions& options);

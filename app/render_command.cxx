@@ -1,32 +1,28 @@
 #include "render_command.h"
 
+#include "batch.h"
 #include "camera.h"
 #include "errors.h"
-#include "headless_renderer.h"
-#include "image_writer_process.h"
-#include "mesh_input.h"
-#include "metadata.h"
-#include "scene.h"
-#include "shader_dump.h"
-
-#include <vtkActor.h>
-#include <vtkPolyData.h>
-#include <vtkRenderer.h>
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <iostream>
-#include <memory>
+#include <tuple>
 
 namespace shadelab
 {
 CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
 {
-  CLI::App* render = program.add_subcommand("render", "Render MESH headless into the image OUT");
+  CLI::App* render = program.add_subcommand(
+    "render", "Render MESH headless into the image OUT, or every shot of a scene file (--scene)");
   AddSceneOptions(*render, o.Scene);
-  render->add_option("-o,--output", o.Output, "Image file; its extension picks the format")
-    ->required()
+  // With a scene file, the file says all that these say.
+  std::vector<CLI::Option*> sceneSettings =
+    render->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });
+  render
+    ->add_option("-o,--output", o.Output,
+      "Image file; its extension picks the format. With --scene: an output name template for "
+      "every shot, replacing the file's")
     ->option_text("OUT");
   const std::map<std::string, PixelType> types{ { "auto", PixelType::Auto },
     { "uint8", PixelType::UInt8 }, { "uint16", PixelType::UInt16 }, { "half", PixelType::Half },
@@ -36,95 +32,83 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
       "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)")
     ->transform(CLI::CheckedTransformer(types))
     ->option_text("auto|uint8|uint16|half|float");
+  sceneSettings.push_back(render->get_option("--pixel-type"));
   render
     ->add_option("--dump-shaders", o.DumpShaders,
       "Write the final GLSL of each shader program into DIR (RULE-REFLECTION.vert/.frag)")
     ->option_text("DIR");
   render->add_flag("-v,--verbose", o.Verbose, "Print each phase's time and VTK's messages");
+  CLI::Option* scene = render
+                         ->add_option("--scene", o.SceneFile,
+                           "Every shot of a scene file, in one process (--print-schema shows "
+                           "its format)")
+                         ->option_text("FILE.json");
+  for (CLI::Option* setting : sceneSettings)
+  {
+    setting->excludes(scene);
+  }
+  render->get_option("--dump-shaders")->excludes(scene);
+  render->add_flag("--print-schema", o.PrintSchema, "Print the scene files' JSON Schema and exit");
+  render
+    ->add_option_function<std::string>(
+      "--shard",
+      [&o](const std::string& text)
+      {
+        try
+        {
+          std::tie(o.ShardIndex, o.ShardCount) = ParseShard(text);
+        }
+        catch (const std::invalid_argument& e)
+        {
+          throw CLI::ValidationError("--shard", e.what());
+        }
+      },
+      "With --scene: render only the shots whose index (from 0) mod N is I, so that N jobs "
+      "share a batch")
+    ->option_text("I/N")
+    ->needs(scene);
+  render->add_flag(
+    "-q,--quiet", o.Quiet, "No progress bar (none either when output is not a terminal)");
   render->footer(CameraHelp);
   return render;
 }
 
-namespace
-{
-class PhaseTimer
-{
-public:
-  explicit PhaseTimer(bool enabled)
-    : Enabled(enabled)
-  {
-  }
-  void Lap(const char* phase)
-  {
-    const auto now = std::chrono::steady_clock::now();
-    if (this->Enabled)
-    {
-      std::cerr << "shadelab: " << phase << " "
-                << std::chrono::duration<double, std::milli>(now - this->Last).count() << " ms\n";
-    }
-    this->Last = now;
-  }
-
-private:
-  bool Enabled;
-  std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
-};
-}
-
 int RunRender(const RenderOptions& o, const std::string& commandLine)
 {
-  PhaseTimer timer(o.Verbose);
-  if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
+  if (o.PrintSchema)
   {
-    return ReportError(o.Output, error);
+    std::cout << SceneSchema();
+    return 0;
   }
-  if (!o.DumpShaders.empty())
+  BatchOptions batch;
+  batch.DumpShaders = o.DumpShaders;
+  batch.Verbose = o.Verbose;
+  batch.Quiet = o.Quiet;
+  batch.ShardIndex = o.ShardIndex;
+  batch.ShardCount = o.ShardCount;
+  std::vector<Shot> shots;
+  if (!o.SceneFile.empty())
   {
-    if (const std::string error = ShaderDump::PrepareFolder(o.DumpShaders); !error.empty())
+    if (const std::string error = ReadSceneFile(o.SceneFile, o.Output, shots); !error.empty())
     {
-      return ReportError(o.DumpShaders, error);
+      return ReportError(o.SceneFile, error);
     }
   }
-  ImageWriterProcess writer;
-  const LoadedMesh loaded = LoadMesh(o.Scene);
-  if (!loaded.Mesh)
+  else
   {
-    return ReportError(o.Scene.Mesh, loaded.Error);
+    for (const auto& [missing, what] :
+      { std::pair{ o.Scene.Mesh.empty(), "MESH" }, std::pair{ o.Output.empty(), "--output" } })
+    {
+      if (missing)
+      {
+        std::cerr << "shadelab: error: render: " << what
+                  << " is required unless --scene gives the shots (see shadelab --help)"
+                  << std::endl;
+        return ExitUsage;
+      }
+    }
+    shots.push_back({ o.Scene, o.Output, o.Pixels, "" });
   }
-  timer.Lap("mesh");
-
-  HeadlessRenderer renderer;
-  if (const std::string error = renderer.Start(o.Scene.Size.Width, o.Scene.Size.Height);
-      !error.empty())
-  {
-    return ReportError("render", error);
-  }
-  timer.Lap("context");
-  const BuiltScene scene = BuildScene(o.Scene, loaded.Mesh, renderer.GetRenderer());
-  if (!scene.Error.empty())
-  {
-    return ReportError("camera", scene.Error);
-  }
-  std::unique_ptr<ShaderDump> dump;
-  if (!o.DumpShaders.empty())
-  {
-    dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), o.DumpShaders,
-      std::string(ToString(o.Scene.ShadingRule)) + "-" + ToString(o.Scene.ReflectionModel));
-  }
-  const FloatImage image = renderer.Render();
-  timer.Lap("frame");
-  if (dump && !dump->GetError().empty())
-  {
-    return ReportError(o.DumpShaders, dump->GetError());
-  }
-
-  const auto metadata =
-    DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera());
-  if (const std::string error = writer.Write(o.Output, image, o.Pixels, metadata); !error.empty())
-  {
-    return ReportError(o.Output, error);
-  }
-  timer.Lap("write");
-  return 0;
+  return RenderShots(shots, batch, commandLine);
 }
 }

@@ -1,4 +1,5 @@
-// `shadelab render MESH -o OUT [options]`: one headless picture.
+// `shadelab render MESH -o OUT [options]`: one headless picture; or
+// `shadelab render --scene FILE.json [-o TEMPLATE] [--shard I/N]`: many.
 #ifndef shadelab_render_command_h
 #define shadelab_render_command_h
 

@@ -5,6 +5,7 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -24,9 +25,11 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
-BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer)
+BuiltScene BuildScene(
+  const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
 {
   BuiltScene scene;
+  scene.Mesh = mesh;
   renderer->SetBackground(options.Background.data());
   double bounds[6];
   mesh->GetBounds(bounds);
@@ -44,11 +47,20 @@ BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRendere
   scene.Shading = vtkSmartPointer<vtkShadelabShading>::New();
   scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
     options.EffectiveMaterial(), options.Ambient, EffectiveLights(options, eye));
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(scene.Shading->PrepareMesh(mesh));
-  mapper->ScalarVisibilityOff();
-  scene.Actor = vtkSmartPointer<vtkActor>::New();
-  scene.Actor->SetMapper(mapper);
+  if (reuse && reuse->Actor && reuse->Mesh == mesh &&
+    reuse->Shading->GetFeatures().Rule == options.ShadingRule)
+  {
+    scene.Actor = reuse->Actor;
+    scene.Actor->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
+  }
+  else
+  {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(scene.Shading->PrepareMesh(mesh));
+    mapper->ScalarVisibilityOff();
+    scene.Actor = vtkSmartPointer<vtkActor>::New();
+    scene.Actor->SetMapper(mapper);
+  }
   renderer->AddActor(scene.Actor);
   scene.Shading->Attach(scene.Actor, renderer);
   return scene;

@@ -21,11 +21,18 @@ struct BuiltScene
 {
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkShadelabShading> Shading;
-  std::string Error; // an impossible scene (camera), else empty
+  std::string Error;           // an impossible scene (camera), else empty
+  vtkPolyData* Mesh = nullptr; // what the actor draws, before the rule prepared it
 };
 
-/** Fills renderer with mesh as options describe, lit by the lecture's shaders. */
-BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer);
+/**
+ * Fills renderer with mesh as options describe, lit by the lecture's
+ * shaders. With `reuse`, a scene built before that drew the same mesh with
+ * the same rule, its actor is taken over (its mapper keeps the uploaded
+ * buffers; only the lighting changes).
+ */
+BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
+  const BuiltScene* reuse = nullptr);
 
 /** The lights the scene uses: the given ones, or the lecture's default. */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);

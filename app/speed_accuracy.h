@@ -4,7 +4,7 @@
 #ifndef shadelab_speed_accuracy_h
 #define shadelab_speed_accuracy_h
 
-#include "image_output.h"
+#include "image_pixels.h"
 #include "shadelabExactImage.h"
 
 #include <iosfwd>

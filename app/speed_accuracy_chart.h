@@ -3,7 +3,7 @@
 #ifndef shadelab_speed_accuracy_chart_h
 #define shadelab_speed_accuracy_chart_h
 
-#include "image_output.h"
+#include "image_pixels.h"
 #include "speed_accuracy.h"
 
 #include <string>

@@ -10,7 +10,7 @@ namespace shadelab
 {
 ProgressBar::ProgressBar(long long total, bool quiet)
   : Total(std::max(total, 1LL))
-  , Enabled(!quiet && isatty(STDERR_FILENO))
+  , Enabled(!quiet && isatty(STDERR_FILENO) && isatty(STDOUT_FILENO))
 {
 }
 

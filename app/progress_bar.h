@@ -1,6 +1,6 @@
 // A progress bar on the terminal for long commands: counts, the current
-// step and an ETA, redrawn in place on stderr. Silent when stderr is not a
-// terminal, so scripts and logs get no control characters.
+// step and an ETA, redrawn in place on stderr. Silent unless both stdout and
+// stderr are a terminal, so scripts and logs get no control characters.
 #ifndef shadelab_progress_bar_h
 #define shadelab_progress_bar_h
 
@@ -12,7 +12,7 @@ namespace shadelab
 class ProgressBar
 {
 public:
-  /** total steps; shown only if stderr is a terminal and `quiet` is false. */
+  /** total steps; shown only on a terminal (stdout and stderr) and when not `quiet`. */
   ProgressBar(long long total, bool quiet);
   ~ProgressBar();
 

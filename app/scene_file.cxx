@@ -534,7 +534,8 @@ std::string ReadSceneFile(
       const auto [other, added] = outputs.emplace(shot.Output, prefix);
       if (!added)
       {
-        throw SceneError{ where("output"),
+        // The shot's resolved output, wherever its template came from.
+        throw SceneError{ prefix.empty() ? "output" : prefix + ".output",
           "\"" + shot.Output + "\" is also " +
             (other->second.empty() ? "another shot" : other->second) + "'s output" };
       }

@@ -1,0 +1,186 @@
+// `shadelab render --scene` end to end (issue 7): a batch equals its shots
+// rendered one by one, shards cover every shot once, a failing shot does
+// not stop the rest, the same scene gives the same bytes, and the pictures
+// say which scene and shot they come from.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+using namespace shadelab_test;
+
+namespace
+{
+const std::vector<std::string> Rules{ "flat", "gouraud", "phong" };
+const std::vector<std::string> Materials{ "brass", "bronze", "polished-bronze", "chrome", "copper",
+  "polished-copper", "gold", "polished-gold" };
+
+// 3 rules x 8 materials of spot at 160x120, written as out/{shading}-{material}.png.
+std::string TwentyFourShots(const std::string& mesh)
+{
+  std::ostringstream scene;
+  scene << R"({ "mesh": ")" << mesh << R"(", "output": "{shading}-{material}.png",)"
+        << R"( "size": [160, 120], "camera": { "position": [3.9, 1.5, -2.2] }, "shots": [)";
+  for (std::size_t i = 0; i < Rules.size() * Materials.size(); ++i)
+  {
+    scene << (i ? "," : "") << R"({ "shading": ")" << Rules[i / Materials.size()]
+          << R"(", "material": ")" << Materials[i % Materials.size()] << R"(" })";
+  }
+  scene << "] }";
+  return scene.str();
+}
+
+std::string Bytes(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+}
+
+std::set<std::string> Names(const std::vector<std::string>& files)
+{
+  return { files.begin(), files.end() };
+}
+}
+
+TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
+{
+  TempDir dir;
+  const std::string mesh = SharedMesh("spot.obj").string();
+  WriteText(dir / "scene.json", TwentyFourShots(mesh));
+  const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "batch/{shading}-{material}.png").string() });
+  ASSERT_EQ(batch.ExitCode, 0) << batch.Stderr;
+  EXPECT_EQ(batch.Stderr, "") << "no progress bar when not on a terminal";
+  for (const std::string& rule : Rules)
+  {
+    for (const std::string& material : Materials)
+    {
+      const auto single = dir / ("single-" + rule + "-" + material + ".png");
+      const RunResult r = RunShadelab({ "render", mesh, "-o", single.string(), "--size", "160x120",
+        "--camera-position", "3.9,1.5,-2.2", "--shading", rule, "--material", material });
+      ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+      const Image a = ReadImage(dir / "batch" / (rule + "-" + material + ".png"));
+      const Image b = ReadImage(single);
+      ASSERT_EQ(a.Width, 160) << rule << " " << material;
+      EXPECT_EQ(a.Pixels, b.Pixels) << rule << " " << material << ": the batch's picture differs";
+      EXPECT_GT(CountCovered(a), 1000u);
+    }
+  }
+}
+
+TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
+{
+  TempDir dir;
+  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  // The same command twice (the command line is in the metadata too).
+  const std::vector<std::string> args{ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "a" / "{index}.png").string() };
+  ASSERT_EQ(RunShadelab(args).ExitCode, 0);
+  std::vector<std::string> first;
+  for (int i = 0; i < 24; ++i)
+  {
+    first.push_back(Bytes(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")));
+    ASSERT_GT(first.back().size(), 100u) << i;
+  }
+  ASSERT_EQ(RunShadelab(args).ExitCode, 0);
+  for (int i = 0; i < 24; ++i)
+  {
+    EXPECT_EQ(Bytes(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")), first[i])
+      << "shot " << i << " is not bit-identical";
+  }
+  const Image shot5 = ReadImage(dir / "a" / "05.png");
+  EXPECT_NE(shot5.Description.find("\"shot\":\"" + (dir / "scene.json").string() + " shots[5]\""),
+    std::string::npos)
+    << shot5.Description;
+  EXPECT_NE(shot5.Description.find("\"shading\":\"flat\""), std::string::npos);
+  EXPECT_NE(shot5.Description.find("\"name\":\"polished-copper\""), std::string::npos);
+}
+
+TEST(Batch, ShardsCoverEveryShotExactlyOnce)
+{
+  TempDir dir;
+  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  std::multiset<std::string> all;
+  for (int shard = 0; shard < 5; ++shard)
+  {
+    const auto folder = dir / ("shard" + std::to_string(shard));
+    const RunResult r = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
+      (folder / "{shading}-{material}.png").string(), "--shard", std::to_string(shard) + "/5" });
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+    {
+      files.push_back(entry.path().filename().string());
+    }
+    // Shot k goes to shard k mod 5.
+    EXPECT_EQ(files.size(), shard < 4 ? 5u : 4u) << "shard " << shard;
+    all.insert(files.begin(), files.end());
+  }
+  EXPECT_EQ(all.size(), 24u);
+  EXPECT_EQ(std::set<std::string>(all.begin(), all.end()).size(), 24u) << "a shot in two shards";
+}
+
+TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
+{
+  TempDir dir;
+  const std::string mesh = SharedMesh("spot.obj").string();
+  WriteText(dir / "scene.json",
+    R"({ "output": ")" + (dir / "{name}.png").string() + R"(", "size": [64, 48], "mesh": ")" +
+      mesh +
+      R"(", "shots": [ { "name": "a" }, { "name": "b", "mesh": "missing.obj" }, { "name": "c" }, )" +
+      R"({ "name": "d", "output": "/proc/no/such/d.png" }, { "name": "e" } ] })");
+  const RunResult r = RunShadelab({ "render", "--scene", (dir / "scene.json").string() });
+  EXPECT_EQ(r.ExitCode, 1);
+  const std::string scene = (dir / "scene.json").string();
+  EXPECT_NE(r.Stderr.find("shadelab: error: " + scene +
+              " shots[1]: " + (dir / "missing.obj").string() + ": cannot open"),
+    std::string::npos)
+    << r.Stderr;
+  EXPECT_NE(r.Stderr.find("shadelab: error: " + scene + " shots[3]: /proc/no/such/d.png: "),
+    std::string::npos)
+    << r.Stderr;
+  EXPECT_NE(r.Stderr.find("shadelab: 2 of 5 shots failed"), std::string::npos) << r.Stderr;
+  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 3) << r.Stderr;
+  EXPECT_EQ(Names(dir.Files()), (std::set<std::string>{ "scene.json", "a.png", "c.png", "e.png" }));
+}
+
+TEST(Batch, CommandLineMistakes)
+{
+  TempDir dir;
+  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  const std::string scene = (dir / "scene.json").string();
+  struct Case
+  {
+    std::vector<std::string> Args;
+    int Code;
+    std::string Text;
+  };
+  const std::vector<Case> cases{
+    { { "render", "--scene", scene, "--shading", "flat" }, 2, "--shading excludes --scene" },
+    { { "render", "--scene", scene, "--shard", "5/5" }, 2,
+      "'5/5' is not a shard I/N with 0 <= I < N" },
+    { { "render", SharedMesh("spot.obj").string(), "-o", (dir / "x.png").string(), "--shard",
+        "0/2" },
+      2, "--shard requires --scene" },
+    { { "render", SharedMesh("spot.obj").string() }, 2, "--output is required unless --scene" },
+    { { "render", "-o", (dir / "x.png").string() }, 2, "MESH is required unless --scene" },
+    { { "render", "--scene", (dir / "none.json").string() }, 1,
+      "shadelab: error: " + (dir / "none.json").string() +
+        ": cannot read: No such file or directory" },
+  };
+  for (const Case& c : cases)
+  {
+    const RunResult r = RunShadelab(c.Args);
+    EXPECT_EQ(r.ExitCode, c.Code) << c.Text << ": " << r.Stderr;
+    EXPECT_NE(r.Stderr.find(c.Text), std::string::npos) << r.Stderr;
+    EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 1) << r.Stderr;
+  }
+  EXPECT_EQ(Names(dir.Files()), (std::set<std::string>{ "scene.json" }));
+  const RunResult schema = RunShadelab({ "render", "--print-schema" });
+  EXPECT_EQ(schema.ExitCode, 0);
+  EXPECT_NE(schema.Stdout.find("\"title\": \"shadelab scene file\""), std::string::npos);
+}

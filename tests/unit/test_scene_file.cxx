@@ -1,0 +1,225 @@
+// Scene files (issue 7): what a valid file gives, each kind of invalid one
+// with its message, output templates, and the schema held to the parser.
+#include "scene_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+using namespace shadelab;
+
+namespace
+{
+class SceneFile : public testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    this->Folder = std::filesystem::temp_directory_path() /
+      ("shadelab-scene-" + std::to_string(getpid()) + "-" +
+        testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(this->Folder / "meshes");
+  }
+  void TearDown() override { std::filesystem::remove_all(this->Folder); }
+
+  // Reads text as a scene file; the problem, or "" with this->Shots filled.
+  std::string Read(const std::string& text, const std::string& outputTemplate = "")
+  {
+    const auto path = this->Folder / "scene.json";
+    std::ofstream(path) << text;
+    return ReadSceneFile(path.string(), outputTemplate, this->Shots);
+  }
+
+  std::filesystem::path Folder;
+  std::vector<Shot> Shots;
+};
+}
+
+TEST_F(SceneFile, DefaultsAndShotsMerge)
+{
+  ASSERT_EQ(Read(R"({
+    // comments are allowed
+    "mesh": "meshes/spot.obj",
+    "output": "out/{mesh}_{shading}_{material}_{index}.png",
+    "size": [320, 240],
+    "camera": { "position": [1, 2, 3], "view_angle": 40 },
+    "lights": [ { "kind": "directional", "direction": [0, 0, -1] } ],
+    "shots": [
+      { "shading": "flat", "material": "gold" },
+      { "material": { "base": "gold", "ns": 5 }, "camera": { "view_angle": 20 } },
+      { "material": { "name": "red", "ka": [0.1, 0, 0], "kd": [0.8, 0, 0], "ks": [0, 0, 0], "ns": 1 },
+        "lights": [ { "kind": "spot", "position": [0, 0, 5], "direction": [0, 0, -1],
+                      "half_angle": 30, "exponent": 2, "color": [1, 0.5, 0.5] } ],
+        "reflection": "phong", "orient": true, "feature_angle": 30, "weighting": "max",
+        "normals": "compute", "background": [0.1, 0.2, 0.3], "ambient": [0, 0, 0],
+        "pixel_type": "uint16", "name": "third" }
+    ] })"),
+    "");
+  ASSERT_EQ(this->Shots.size(), 3u);
+  const std::string mesh = (this->Folder / "meshes/spot.obj").lexically_normal().string();
+  for (const Shot& s : this->Shots)
+  {
+    EXPECT_EQ(s.Scene.Mesh, mesh) << "relative to the scene file's folder";
+    EXPECT_EQ(s.Scene.Size.Width, 320);
+  }
+  const SceneOptions& a = this->Shots[0].Scene;
+  EXPECT_EQ(this->Shots[0].Output, "out/spot_flat_gold_0.png");
+  EXPECT_EQ(this->Shots[0].Label, (this->Folder / "scene.json").string() + " shots[0]");
+  EXPECT_EQ(a.ShadingRule, Shading::Flat);
+  EXPECT_EQ(a.CameraPosition, (Vec3{ 1, 2, 3 }));
+  EXPECT_EQ(a.ViewAngle, 40);
+  ASSERT_EQ(a.Lights.size(), 1u);
+  EXPECT_EQ(a.Lights[0].Kind, LightKind::Directional);
+
+  const SceneOptions& b = this->Shots[1].Scene;
+  EXPECT_EQ(b.ShadingRule, Shading::Phong) << "the default, not the other shot's";
+  EXPECT_EQ(b.CameraPosition, (Vec3{ 1, 2, 3 })) << "camera merged key by key";
+  EXPECT_EQ(b.ViewAngle, 20);
+  EXPECT_EQ(b.EffectiveMaterial().Kd, FindLectureMaterial("gold")->Kd);
+  EXPECT_EQ(b.EffectiveMaterial().Ns, 5);
+  EXPECT_EQ(this->Shots[1].Output, "out/spot_phong_gold-custom_1.png");
+
+  const Shot& c = this->Shots[2];
+  EXPECT_EQ(c.Output, "out/spot_phong_red_2.png");
+  EXPECT_EQ(c.Scene.EffectiveMaterial().Kd, (Rgb{ 0.8, 0, 0 }));
+  ASSERT_EQ(c.Scene.Lights.size(), 1u);
+  EXPECT_EQ(c.Scene.Lights[0].Kind, LightKind::Spot);
+  EXPECT_EQ(c.Scene.Lights[0].HalfAngleDeg, 30);
+  EXPECT_EQ(c.Scene.Lights[0].Exponent, 2);
+  EXPECT_EQ(c.Scene.Lights[0].Color, (Rgb{ 1, 0.5, 0.5 }));
+  EXPECT_EQ(c.Scene.ReflectionModel, Reflection::Phong);
+  EXPECT_TRUE(c.Scene.Computed.Orient);
+  EXPECT_EQ(c.Scene.Computed.FeatureAngle, 30);
+  EXPECT_EQ(c.Scene.Computed.Weighting, "max");
+  EXPECT_EQ(c.Scene.Normals, NormalsMode::Compute);
+  EXPECT_EQ(c.Scene.Background, (Rgb{ 0.1, 0.2, 0.3 }));
+  EXPECT_EQ(c.Pixels, PixelType::UInt16);
+}
+
+TEST_F(SceneFile, WithoutShotsTheTopLevelIsTheShotAndOutputCanComeFromTheCommandLine)
+{
+  ASSERT_EQ(Read(R"({ "mesh": "/abs/cow.obj" })", "pictures/{name}-{mesh}.exr"), "");
+  ASSERT_EQ(this->Shots.size(), 1u);
+  EXPECT_EQ(this->Shots[0].Scene.Mesh, "/abs/cow.obj");
+  EXPECT_EQ(this->Shots[0].Output, "pictures/0-cow.exr");
+  EXPECT_EQ(this->Shots[0].Label, (this->Folder / "scene.json").string());
+}
+
+TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
+{
+  const std::string head = R"({ "mesh": "m.obj", "output": "{index}.png", "shots": [ {}, {}, {}, )";
+  const std::vector<std::pair<std::string, std::string>> cases{
+    { R"({ "mesh": )", "not JSON: line 1, column 11: syntax error while parsing value" },
+    { R"([1, 2])", "expected an object, not [1,2]" },
+    { R"({ "colour": [1, 0, 0] })", "colour: unknown key (known: name, mesh, output" },
+    { head + R"({ "lights": [ { "kind": "laser" } ] } ] })",
+      "shots[3].lights[0].kind: unknown kind \"laser\" (known: point, directional, spot)" },
+    { head + R"({ "lights": [ { "kind": "point" } ] } ] })",
+      "shots[3].lights[0].position: missing for a point light" },
+    { head + R"({ "lights": [ { "kind": "point", "position": [0, 0], "colour": 1 } ] } ] })",
+      "shots[3].lights[0].colour: unknown key" },
+    { head + R"({ "lights": [ { "kind": "directional", "direction": [0, 0, 0] } ] } ] })",
+      "shots[3].lights[0]: direction '0,0,0' has zero length" },
+    { head +
+        R"({ "lights": [ { "kind": "spot", "position": [0, 0, 1], "direction": [0, 0, -1], "half_angle": 120 } ] } ] })",
+      "shots[3].lights[0]: spot half-angle '120' is outside (0, 90] degrees" },
+    { head + R"({ "camera": { "view_angle": 200 } } ] })",
+      "shots[3].camera.view_angle: '200' is outside (0, 180) degrees" },
+    { head + R"({ "camera": { "zoom": 2 } } ] })", "shots[3].camera.zoom: unknown key" },
+    { head + R"({ "camera": { "orthographic": "yes" } } ] })",
+      "shots[3].camera.orthographic: expected true or false, not \"yes\"" },
+    { head + R"({ "size": [100000, 10] } ] })", "shots[3].size: '100000x10' is outside 1x1 to" },
+    { head + R"({ "size": "640x480" } ] })", "shots[3].size: expected [width, height] in pixels" },
+    { head + R"({ "shading": "toon" } ] })",
+      "shots[3].shading: unknown shading \"toon\" (known: none, flat, gouraud, phong)" },
+    { head + R"({ "material": "silver" } ] })", "shots[3].material: unknown material \"silver\"" },
+    { head + R"({ "material": { "ka": [0, 0, 0], "kd": [1, 1, 1], "ks": [0, 0, 0] } } ] })",
+      "shots[3].material.ns: missing (a material without \"base\"" },
+    { head + R"({ "material": { "base": "gold", "kd": [1, -1, 1] } } ] })",
+      "shots[3].material.kd: '1,-1,1' is negative" },
+    { head + R"({ "ambient": [1, 2] } ] })", "shots[3].ambient: expected three numbers [x, y, z]" },
+    { head + R"({ "feature_angle": 270 } ] })", "shots[3].feature_angle: " },
+    { head + R"({ "output": "{colour}.png" } ] })",
+      "shots[3].output: unknown field {colour} in \"{colour}.png\" (known: {index}, {material}" },
+    { head + R"({ "output": "1.png" } ] })",
+      "shots[3].output: \"1.png\" is also shots[1]'s output" },
+    { R"({ "mesh": "m.obj", "output": "a.png", "shots": [ {}, {} ] })",
+      "shots[1].output: \"a.png\" is also shots[0]'s output" },
+    { R"({ "output": "a.png" })", "mesh: missing: every shot needs a mesh" },
+    { R"({ "mesh": "m.obj" })", "output: missing: every shot needs an output (or give -o)" },
+    { R"({ "mesh": "m.obj", "output": "a.png", "shots": [] })",
+      "shots: expected a non-empty array" },
+    { R"({ "mesh": "m.obj", "output": "a.png", "lights": {} })",
+      "lights: expected an array of lights" },
+    { R"({ "mesh": 7, "output": "a.png" })", "mesh: expected a string, not 7" },
+  };
+  for (const auto& [text, message] : cases)
+  {
+    const std::string problem = Read(text);
+    EXPECT_EQ(problem.rfind(message, 0), 0u) << "scene: " << text << "\ngot: " << problem;
+    EXPECT_TRUE(this->Shots.empty());
+  }
+  EXPECT_EQ(ReadSceneFile((this->Folder / "none.json").string(), "", this->Shots),
+    "cannot read: No such file or directory");
+}
+
+TEST(OutputTemplate, FillsEveryFieldAndSaysWhatIsWrong)
+{
+  Shot shot;
+  shot.Scene.Mesh = "/data/stanford-bunny.ply";
+  shot.Scene.ShadingRule = Shading::Gouraud;
+  shot.Scene.MaterialName = "gold";
+  shot.Scene.Size = { 640, 480 };
+  std::string out;
+  ASSERT_EQ(ExpandOutputTemplate("{mesh}/{shading}-{reflection}-{material}-{weighting}-{size}-"
+                                 "{index}-{name}-{{x}}.png",
+              shot, "", 7, 1000, out),
+    "");
+  EXPECT_EQ(out, "stanford-bunny/gouraud-blinn-gold-angle-640x480-007-007-{x}.png");
+  ASSERT_EQ(ExpandOutputTemplate("{name}.png", shot, "front", 7, 10, out), "");
+  EXPECT_EQ(out, "front.png");
+  EXPECT_EQ(ExpandOutputTemplate("{mesh.png", shot, "", 0, 1, out),
+    "unmatched '{' in \"{mesh.png\" (write {{ for a brace)");
+  EXPECT_EQ(ExpandOutputTemplate("mesh}.png", shot, "", 0, 1, out),
+    "unmatched '}' in \"mesh}.png\" (write }} for a brace)");
+}
+
+TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
+{
+  const auto schema = nlohmann::json::parse(SceneSchema());
+  const auto& shot = schema["$defs"]["shot"]["properties"];
+  std::vector<std::string> keys;
+  for (const auto& item : shot.items())
+  {
+    keys.push_back(item.key());
+  }
+  std::vector<std::string> parser = SceneShotKeys();
+  std::sort(keys.begin(), keys.end());
+  std::sort(parser.begin(), parser.end());
+  EXPECT_EQ(keys, parser);
+  std::set<std::string> camera, light;
+  for (const auto& item : shot["camera"]["properties"].items())
+  {
+    camera.insert(item.key());
+  }
+  for (const auto& item : shot["lights"]["items"]["properties"].items())
+  {
+    light.insert(item.key());
+  }
+  EXPECT_EQ(camera,
+    (std::set<std::string>{
+      "position", "focal_point", "view_up", "view_angle", "orthographic", "parallel_scale" }));
+  EXPECT_EQ(light,
+    (std::set<std::string>{ "kind", "position", "direction", "color", "half_angle", "exponent" }));
+  // The example scenes use only what the schema describes (the parser reads them all).
+  for (const auto& entry : std::filesystem::directory_iterator(SHADELAB_SOURCE_DIR "/data/scenes"))
+  {
+    std::vector<Shot> shots;
+    EXPECT_EQ(ReadSceneFile(entry.path().string(), "", shots), "") << entry.path();
+    EXPECT_FALSE(shots.empty()) << entry.path();
+  }
+}

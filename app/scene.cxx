@@ -47,11 +47,13 @@ BuiltScene BuildScene(
   scene.Shading = vtkSmartPointer<vtkShadelabShading>::New();
   scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
     options.EffectiveMaterial(), options.Ambient, EffectiveLights(options, eye));
+  const vtkShadelabShading* previous = nullptr;
   if (reuse && reuse->Actor && reuse->Mesh == mesh &&
     reuse->Shading->GetFeatures().Rule == options.ShadingRule)
   {
     scene.Actor = reuse->Actor;
     scene.Actor->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
+    previous = reuse->Shading;
   }
   else
   {
@@ -62,7 +64,7 @@ BuiltScene BuildScene(
     scene.Actor->SetMapper(mapper);
   }
   renderer->AddActor(scene.Actor);
-  scene.Shading->Attach(scene.Actor, renderer);
+  scene.Shading->Attach(scene.Actor, renderer, previous);
   return scene;
 }
 }

@@ -84,7 +84,8 @@ vtkSmartPointer<vtkPolyData> vtkShadelabShading::PrepareMesh(vtkPolyData* mesh) 
   return copy;
 }
 
-void vtkShadelabShading::Attach(vtkActor* actor, vtkRenderer* renderer)
+void vtkShadelabShading::Attach(
+  vtkActor* actor, vtkRenderer* renderer, const vtkShadelabShading* previous)
 {
   if (this->Actor && this->Actor->GetMapper())
   {
@@ -93,25 +94,30 @@ void vtkShadelabShading::Attach(vtkActor* actor, vtkRenderer* renderer)
   this->Actor = actor;
   this->Renderer = renderer;
 
-  auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty());
-  shaders->ClearAllShaderReplacements();
-  for (const ShaderReplacement& r : GenerateShaderReplacements(this->Features))
-  {
-    if (r.Vertex)
-    {
-      shaders->AddVertexShaderReplacement(r.Tag, true, r.Code, false);
-    }
-    else
-    {
-      shaders->AddFragmentShaderReplacement(r.Tag, true, r.Code, false);
-    }
-  }
   auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-  mapper->RemoveAllVertexAttributeMappings();
-  if (this->Features.Rule == Shading::Flat)
+  // The same code on the same actor: touching the replacements or the
+  // attribute mapping would make VTK rebuild the program and the buffers.
+  if (!previous || previous->Actor != actor || !(previous->Features == this->Features))
   {
-    mapper->MapDataArrayToVertexAttribute(
-      FaceNormalAttributeName, FaceNormalArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty());
+    shaders->ClearAllShaderReplacements();
+    for (const ShaderReplacement& r : GenerateShaderReplacements(this->Features))
+    {
+      if (r.Vertex)
+      {
+        shaders->AddVertexShaderReplacement(r.Tag, true, r.Code, false);
+      }
+      else
+      {
+        shaders->AddFragmentShaderReplacement(r.Tag, true, r.Code, false);
+      }
+    }
+    mapper->RemoveAllVertexAttributeMappings();
+    if (this->Features.Rule == Shading::Flat)
+    {
+      mapper->MapDataArrayToVertexAttribute(
+        FaceNormalAttributeName, FaceNormalArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
   }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
   actor->GetProperty()->LightingOn();

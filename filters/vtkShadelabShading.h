@@ -52,8 +52,13 @@ public:
    */
   vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
 
-  /** Installs the replacements on actor; renderer gives the camera and lights. */
-  void Attach(vtkActor* actor, vtkRenderer* renderer);
+  /**
+   * Installs the replacements on actor; renderer gives the camera and lights.
+   * `previous`, the shading that last drew actor, lets an actor whose code
+   * stays the same (another material, other light positions) keep its
+   * compiled program and uploaded buffers.
+   */
+  void Attach(vtkActor* actor, vtkRenderer* renderer, const vtkShadelabShading* previous = nullptr);
 
 protected:
   vtkShadelabShading();

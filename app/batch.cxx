@@ -14,7 +14,10 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include <signal.h>
+
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -25,6 +28,31 @@ namespace shadelab
 {
 namespace
 {
+volatile std::sig_atomic_t Interrupted = 0; // the signal that asked us to stop
+
+// SIGINT and SIGTERM set Interrupted while it lives; the old handlers come back after.
+class InterruptCatcher
+{
+public:
+  InterruptCatcher()
+  {
+    Interrupted = 0;
+    struct sigaction action = {};
+    action.sa_handler = [](int signal) { Interrupted = signal; };
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &this->OldInt);
+    sigaction(SIGTERM, &action, &this->OldTerm);
+  }
+  ~InterruptCatcher()
+  {
+    sigaction(SIGINT, &this->OldInt, nullptr);
+    sigaction(SIGTERM, &this->OldTerm, nullptr);
+  }
+
+private:
+  struct sigaction OldInt = {}, OldTerm = {};
+};
+
 class PhaseTimer
 {
 public:
@@ -88,6 +116,7 @@ int RenderShots(
     }
   }
 
+  const InterruptCatcher catcher;
   ImageWriterProcess writer;     // started first: it binds OpenImageIO while we render
   const Shot* writing = nullptr; // submitted to the writer, not yet collected
   const auto collect = [&]()
@@ -112,10 +141,17 @@ int RenderShots(
   std::map<std::pair<int, int>, Context> contexts;
   std::map<MeshKey, LoadedMesh> meshes;
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
-  for (std::size_t n = 0; n < mine.size(); ++n)
+  std::size_t done = 0, skipped = 0;
+  for (; done < mine.size() && !Interrupted; ++done)
   {
-    const Shot& shot = *mine[n];
-    progress.Show(static_cast<long long>(n), shot.Output);
+    const Shot& shot = *mine[done];
+    progress.Show(static_cast<long long>(done), shot.Output);
+    std::error_code exists;
+    if (o.SkipExisting && std::filesystem::exists(shot.Output, exists))
+    {
+      ++skipped;
+      continue;
+    }
     // A scene file's output template may name folders per mesh or rule:
     // they are made as needed. A single render's folder must exist.
     std::error_code made;
@@ -204,6 +240,15 @@ int RenderShots(
   }
   collect();
   progress.Finish();
+  if (Interrupted)
+  {
+    std::cerr << "shadelab: interrupted (" << (Interrupted == SIGINT ? "SIGINT" : "SIGTERM")
+              << ") after " << done << " of " << mine.size()
+              << " shots: " << done - failed - skipped << " written, " << skipped << " skipped, "
+              << failed << " failed; every picture there is whole; --skip-existing renders the rest"
+              << std::endl;
+    return 128 + Interrupted;
+  }
   if (failed > 0 && mine.size() > 1)
   {
     std::cerr << "shadelab: " << failed << " of " << mine.size() << " shots failed" << std::endl;

@@ -20,12 +20,15 @@ struct BatchOptions
   bool Quiet = false;      // no progress bar
   int ShardIndex = 0;      // render the shots whose index mod ShardCount is ShardIndex
   int ShardCount = 1;
+  bool SkipExisting = false; // a shot whose output exists is done (outputs appear whole, by rename)
 };
 
 /**
  * Renders shots (this shard's), writing each to its Output through a
  * temporary name. Returns 0 when every one was written, else ExitFailure,
- * each failure reported as one line on stderr.
+ * each failure reported as one line on stderr. SIGINT or SIGTERM stops it
+ * between shots: the picture being written is finished, it says how far it
+ * got, and returns 128 + the signal's number.
  */
 int RenderShots(
   const std::vector<Shot>& shots, const BatchOptions& options, const std::string& commandLine);

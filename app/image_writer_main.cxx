@@ -8,10 +8,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <string>
 
 int main()
 {
+  // Ctrl-C reaches the whole process group: the writer finishes the picture
+  // it has (whole, renamed into place) and ends when shadelab closes the pipe.
+  std::signal(SIGINT, SIG_IGN);
+  std::signal(SIGTERM, SIG_IGN);
   // Until shadelab closes the pipe (or sends something malformed).
   shadelab::ImageRequest request;
   while (shadelab::ReceiveImageRequest(STDIN_FILENO, request))

@@ -83,6 +83,7 @@ struct RenderOptions
   std::string SceneFile; // --scene: the shots come from this JSON file
   bool PrintSchema = false;
   bool Quiet = false;
+  bool SkipExisting = false;
   int ShardIndex = 0; // --shard I/N
   int ShardCount = 1;
 };

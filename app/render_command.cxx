@@ -67,6 +67,9 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
       "share a batch")
     ->option_text("I/N")
     ->needs(scene);
+  render->add_flag("--skip-existing", o.SkipExisting,
+    "Leave shots whose output file exists (outputs appear whole, by rename): finishes an "
+    "interrupted batch");
   render->add_flag(
     "-q,--quiet", o.Quiet, "No progress bar (none either when output is not a terminal)");
   render->footer(CameraHelp);
@@ -86,6 +89,7 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
   batch.Quiet = o.Quiet;
   batch.ShardIndex = o.ShardIndex;
   batch.ShardCount = o.ShardCount;
+  batch.SkipExisting = o.SkipExisting;
   std::vector<Shot> shots;
   if (!o.SceneFile.empty())
   {

@@ -8,12 +8,15 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <new>
 
@@ -52,6 +55,51 @@ FilePointer Open(const char* fileName, std::size_t& size)
   size = S_ISREG(info.st_mode) ? static_cast<std::size_t>(info.st_size) : 0;
   return file;
 }
+
+// The memory this process can still get: the system's MemAvailable, or
+// less where a resource limit says so. 0 when nothing can be learnt.
+std::uint64_t AvailableMemory()
+{
+  std::uint64_t available = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string key; meminfo >> key;)
+  {
+    std::uint64_t kib = 0;
+    meminfo >> kib;
+    if (key == "MemAvailable:")
+    {
+      available = kib * 1024;
+      break;
+    }
+    meminfo.ignore(1 << 10, '\n');
+  }
+  for (int resource : { RLIMIT_AS, RLIMIT_DATA })
+  {
+    rlimit limit{};
+    if (getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      (available == 0 || limit.rlim_cur < available))
+    {
+      available = limit.rlim_cur;
+    }
+  }
+  return available;
+}
+
+// Reading needs the file's bytes and, for the mesh made from them, about as
+// many again (points and faces in double and 64-bit ids). A file bigger than
+// half of what the process can get fails here with a message, rather than
+// overcommitted memory meeting the kernel's OOM killer halfway through.
+void CheckMemoryFor(std::uint64_t fileBytes)
+{
+  const std::uint64_t available = AvailableMemory();
+  if (available > 0 && fileBytes > available / 2)
+  {
+    throw shadelab::MeshReadError("is " + std::to_string(fileBytes >> 20) +
+        " MiB; reading it needs more than the " + std::to_string(available >> 20) +
+        " MiB of memory available",
+      vtkErrorCode::UnknownError);
+  }
+}
 }
 
 vtkShadelabFileReader::vtkShadelabFileReader()
@@ -68,6 +116,7 @@ std::string vtkShadelabFileReader::ReadFileBytes(const char* fileName)
 {
   std::size_t size = 0;
   FilePointer file = Open(fileName, size);
+  CheckMemoryFor(size);
   std::string bytes(size, '\0');
   std::size_t used = std::fread(bytes.data(), 1, bytes.size(), file.get());
   // A file without a size (or one that grew) is read on to its end.

@@ -2,12 +2,18 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
+
+extern char** environ;
 
 namespace shadelab_test
 {
@@ -48,6 +54,48 @@ RunResult RunShadelab(const std::vector<std::string>& args)
   r.Stdout = Slurp(capture / "out");
   r.Stderr = Slurp(capture / "err");
   return r;
+}
+
+int StartShadelab(const std::vector<std::string>& args, const std::filesystem::path& stdoutFile,
+  const std::filesystem::path& stderrFile)
+{
+  std::vector<std::string> words{ SHADELAB_BINARY };
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words)
+  {
+    argv.push_back(w.data());
+  }
+  argv.push_back(nullptr);
+  std::vector<char*> envp; // ours, less DISPLAY
+  for (char** e = environ; *e; ++e)
+  {
+    if (std::string(*e).rfind("DISPLAY=", 0) != 0)
+    {
+      envp.push_back(*e);
+    }
+  }
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(
+    &actions, STDOUT_FILENO, stdoutFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(
+    &actions, STDERR_FILENO, stderrFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  return error == 0 ? pid : -1;
+}
+
+int WaitShadelab(int pid)
+{
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 TempDir::TempDir()

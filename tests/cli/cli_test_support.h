@@ -18,6 +18,16 @@ struct RunResult
 /** Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI). */
 RunResult RunShadelab(const std::vector<std::string>& args);
 
+/**
+ * Starts `shadelab ARGS...` as RunShadelab does, without waiting, its
+ * stdout and stderr into the given files; returns its process id.
+ */
+int StartShadelab(const std::vector<std::string>& args, const std::filesystem::path& stdoutFile,
+  const std::filesystem::path& stderrFile);
+
+/** Waits for a process StartShadelab started; its exit code (128 + signal when killed). */
+int WaitShadelab(int pid);
+
 /** A fresh empty folder under the system's temporary folder, removed by the destructor. */
 class TempDir
 {

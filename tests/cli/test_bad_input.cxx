@@ -215,6 +215,17 @@ const BadCase Cases[] = {
   { "UnknownOption",
     [](const TempDir& d) { return WithMesh(d, "t.obj", Tetrahedron, { "--frobnicate" }); }, 2,
     { "--frobnicate" } },
+  // A binary STL whose header and size agree on 2^31 triangles: 107 GB, sparse
+  // (no disk used), more than any test machine's memory. It must be refused
+  // before anything is allocated, not meet the OOM killer.
+  { "MeshTooLargeForMemory",
+    [](const TempDir& d) {
+      const std::uint32_t count = 1u << 31;
+      WriteText(d / "huge.stl", std::string(80, 'x') + Binary(&count, sizeof count));
+      std::filesystem::resize_file(d / "huge.stl", 84 + 50 * std::uintmax_t{ count });
+      return std::vector<std::string>{ (d / "huge.stl").string(), "-o", "OUT" };
+    },
+    1, { "huge.stl", "is 102400 MiB; reading it needs more than the", "MiB of memory available" } },
 };
 
 class BadInput : public testing::TestWithParam<BadCase>

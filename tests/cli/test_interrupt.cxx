@@ -1,0 +1,101 @@
+// Nothing lost (issue 8): a batch stopped by SIGINT or SIGTERM leaves only
+// whole pictures and says how far it got; --skip-existing then renders the
+// rest and leaves the others alone.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <thread>
+
+using namespace shadelab_test;
+
+namespace
+{
+constexpr int Shots = 120;
+
+std::size_t Pictures(const std::filesystem::path& folder)
+{
+  std::size_t n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+  {
+    n += entry.path().extension() == ".png";
+  }
+  return n;
+}
+
+void InterruptAndFinish(int signal, const std::string& name)
+{
+  TempDir dir;
+  std::ostringstream scene;
+  scene << R"({ "mesh": ")" << SharedMesh("spot.obj").string() << R"(", "output": ")"
+        << (dir / "out/{index}.png").string() << R"(", "size": [320, 240], "shots": [)";
+  for (int i = 0; i < Shots; ++i)
+  {
+    scene << (i ? "," : "") << R"({ "shading": ")" << (i % 2 ? "flat" : "phong") << R"(" })";
+  }
+  scene << "] }";
+  WriteText(dir / "scene.json", scene.str());
+  const std::vector<std::string> args{ "render", "--scene", (dir / "scene.json").string() };
+
+  const int pid = StartShadelab(args, dir / "stdout", dir / "stderr");
+  ASSERT_GT(pid, 0);
+  // Stop it once some pictures are out, well before the end.
+  const auto start = std::chrono::steady_clock::now();
+  while (!std::filesystem::exists(dir / "out") || Pictures(dir / "out") < 5)
+  {
+    ASSERT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, signal);
+  EXPECT_EQ(WaitShadelab(pid), 128 + signal);
+  std::ifstream err(dir / "stderr");
+  const std::string message(
+    (std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("shadelab: interrupted (" + name + ") after "), std::string::npos)
+    << message;
+  EXPECT_NE(message.find("--skip-existing renders the rest"), std::string::npos) << message;
+
+  // Only whole pictures, and no temporary files: the writer finished the
+  // one it had (it ignores the signals), shadelab stopped between shots.
+  std::map<std::string, std::filesystem::file_time_type> first;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
+  {
+    const std::string file = entry.path().filename().string();
+    ASSERT_EQ(entry.path().extension(), ".png") << "left behind: " << file;
+    const Image image = ReadImage(entry.path());
+    EXPECT_EQ(image.Width, 320) << file << " is not a whole picture";
+    EXPECT_GT(CountCovered(image), 1000u) << file;
+    first[file] = entry.last_write_time();
+  }
+  ASSERT_GE(first.size(), 5u);
+  ASSERT_LT(first.size(), static_cast<std::size_t>(Shots)) << "it ran to the end: nothing tested";
+
+  std::vector<std::string> again = args;
+  again.push_back("--skip-existing");
+  const RunResult rest = RunShadelab(again);
+  ASSERT_EQ(rest.ExitCode, 0) << rest.Stderr;
+  EXPECT_EQ(Pictures(dir / "out"), static_cast<std::size_t>(Shots));
+  for (const auto& [file, time] : first)
+  {
+    EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / file), time)
+      << file << " was rendered again";
+  }
+}
+}
+
+TEST(Interrupt, SigintLeavesWholePicturesAndSkipExistingFinishes)
+{
+  InterruptAndFinish(SIGINT, "SIGINT");
+}
+
+TEST(Interrupt, SigtermLeavesWholePicturesAndSkipExistingFinishes)
+{
+  InterruptAndFinish(SIGTERM, "SIGTERM");
+}

@@ -460,12 +460,19 @@ std::string ReadSceneFile(
   {
     scene = json::parse(in, nullptr, true, /*ignore_comments=*/true);
   }
-  catch (const json::parse_error& e)
+  catch (const json::exception& e)
   {
-    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-    const std::string what = e.what();
+    // A syntax error ("[json.exception.parse_error.101] parse error at line
+    // 3, column 5: ..."), or a number too large for a double
+    // ("[json.exception.out_of_range.406] number overflow parsing '7e999'":
+    // a finding of fuzz_scene_file).
+    std::string what = e.what();
     const auto at = what.find("at line ");
-    return "not JSON: " + (at == std::string::npos ? what : what.substr(at + 3));
+    const auto close = what.find("] ");
+    what = at != std::string::npos ? what.substr(at + 3)
+      : close != std::string::npos ? what.substr(close + 2)
+                                   : what;
+    return "not JSON: " + what;
   }
   shots.clear();
   try

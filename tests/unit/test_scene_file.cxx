@@ -115,6 +115,9 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
   const std::vector<std::pair<std::string, std::string>> cases{
     { R"({ "mesh": )", "not JSON: line 1, column 11: syntax error while parsing value" },
     { R"([1, 2])", "expected an object, not [1,2]" },
+    // Found by fuzz_scene_file: nlohmann's parser throws out_of_range, not
+    // parse_error, for a number beyond double's range.
+    { R"({ "size": [7e999, 1] })", "not JSON: number overflow parsing '7e999'" },
     { R"({ "colour": [1, 0, 0] })", "colour: unknown key (known: name, mesh, output" },
     { head + R"({ "lights": [ { "kind": "laser" } ] } ] })",
       "shots[3].lights[0].kind: unknown kind \"laser\" (known: point, directional, spot)" },

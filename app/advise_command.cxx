@@ -156,24 +156,6 @@ private:
   using Curves = std::map<std::string, std::vector<std::pair<double, double>>>;
   std::map<std::string, Curves> Errors, Times;
 };
-
-std::string Triangles(double n)
-{
-  char text[32];
-  if (n >= 1e6)
-  {
-    std::snprintf(text, sizeof text, "%.1fM", n / 1e6);
-  }
-  else if (n >= 1e4)
-  {
-    std::snprintf(text, sizeof text, "%.0fk", n / 1e3);
-  }
-  else
-  {
-    std::snprintf(text, sizeof text, "%.0f", n);
-  }
-  return text;
-}
 }
 
 int RunAdvise(const AdviseOptions& o)
@@ -240,7 +222,7 @@ int RunAdvise(const AdviseOptions& o)
     }
   }
   std::printf("%s: %s triangles, edges turn by %.2f degrees on average (%s normals)\n",
-    o.Mesh.c_str(), Triangles(triangles).c_str(), angle,
+    o.Mesh.c_str(), TriangleCountText(triangles).c_str(), angle,
     loaded.NormalsFromFile ? "the file's" : o.Normals.Weighting.c_str());
   std::printf("predicted from %s at %dx%d (RMSE: the worse of sphere and torus; ms/frame: "
               "OSMesa llvmpipe)\n\n",
@@ -250,7 +232,7 @@ int RunAdvise(const AdviseOptions& o)
   for (const Option& c : options)
   {
     std::printf("| %s | %s | %.2g | %.1f | %s |\n",
-      Triangles(triangles * (1 << (2 * c.Level))).c_str(), c.Rule.c_str(), c.P.Rmse, c.P.Ms,
+      TriangleCountText(triangles * (1 << (2 * c.Level))).c_str(), c.Rule.c_str(), c.P.Rmse, c.P.Ms,
       c.P.Rmse <= o.MaxError ? "yes" : "no");
   }
 

@@ -141,6 +141,24 @@ std::vector<std::string> CheckSpeedAccuracyOrder(const std::vector<SpeedAccuracy
   return exceptions;
 }
 
+std::string TriangleCountText(double n)
+{
+  char text[32];
+  if (n >= 1e6)
+  {
+    std::snprintf(text, sizeof text, "%.1fM", n / 1e6);
+  }
+  else if (n >= 1e4)
+  {
+    std::snprintf(text, sizeof text, "%.0fk", n / 1e3);
+  }
+  else
+  {
+    std::snprintf(text, sizeof text, "%.0f", n);
+  }
+  return text;
+}
+
 AccuracyMetrics CompareWithExact(const FloatImage& rendered, const ExactImage& exact)
 {
   AccuracyMetrics m;

@@ -45,6 +45,9 @@ AccuracyMetrics CompareWithExact(const FloatImage& rendered, const ExactImage& e
  */
 double MeanEdgeNormalAngle(vtkPolyData* meshWithNormals);
 
+/** A triangle count as the chart and `advise` print it: 640, 20k, 1.3M. */
+std::string TriangleCountText(double triangles);
+
 /** One row of speed_accuracy.csv. */
 struct SpeedAccuracyRow
 {

@@ -74,24 +74,6 @@ public:
   }
 };
 vtkStandardNewMacro(PointLabels);
-
-std::string Count(long long triangles)
-{
-  char text[32];
-  if (triangles >= 1000000)
-  {
-    std::snprintf(text, sizeof text, "%.1fM", triangles / 1e6);
-  }
-  else if (triangles >= 1000)
-  {
-    std::snprintf(text, sizeof text, "%.0fk", triangles / 1e3);
-  }
-  else
-  {
-    std::snprintf(text, sizeof text, "%lld", triangles);
-  }
-  return text;
-}
 }
 
 ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int width, int height)
@@ -140,7 +122,8 @@ ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int
     {
       ms->InsertNextValue(std::log10(p->MsPerFrame));
       rmse->InsertNextValue(std::log10(p->Rmse));
-      labels->Labels.push_back({ p->MsPerFrame, p->Rmse, Count(p->Triangles) });
+      labels->Labels.push_back(
+        { p->MsPerFrame, p->Rmse, TriangleCountText(static_cast<double>(p->Triangles)) });
       msValues.push_back(p->MsPerFrame);
       rmseValues.push_back(p->Rmse);
     }

@@ -104,10 +104,9 @@ vtkSmartPointer<vtkPolyData> Icosphere(int times)
   return MakePolyData(points, triangles);
 }
 
-// The torus over a grid of 2n steps around the axis by n around the tube.
-vtkSmartPointer<vtkPolyData> TorusGrid(int n)
+// The torus over a grid of nu steps around the axis by nv around the tube.
+vtkSmartPointer<vtkPolyData> TorusGrid(int nu, int nv)
 {
-  const int nu = 2 * n, nv = n;
   std::vector<Vec3> points;
   points.reserve(static_cast<std::size_t>(nu) * nv);
   for (int i = 0; i < nu; ++i)
@@ -236,12 +235,11 @@ long long AnalyticSurface::TriangleCount(int level) const
   {
     return 80LL << (2 * level);
   }
-  const long long n = 5LL << level;
-  return 4 * n * n;
+  return 2 * (12LL << level) * (5LL << level);
 }
 
 vtkSmartPointer<vtkPolyData> AnalyticSurface::Tessellate(int level) const
 {
-  return this->Shape == Kind::Sphere ? Icosphere(level + 1) : TorusGrid(5 << level);
+  return this->Shape == Kind::Sphere ? Icosphere(level + 1) : TorusGrid(12 << level, 5 << level);
 }
 }

@@ -49,10 +49,12 @@ public:
 
   /**
    * A closed, consistently oriented triangle mesh with float points on the
-   * surface and no normals. Level 0 has about 100 triangles and each level
-   * about four times as many: the sphere is an icosahedron subdivided
+   * surface and no normals. Level 0 has about 100 triangles and each
+   * level four times as many: the sphere is an icosahedron subdivided
    * level + 1 times (80 * 4^level triangles), the torus a grid of
-   * 2n x n quads (n = 5 * 2^level; 4 n^2 triangles).
+   * 12 * 2^level steps around its axis by 5 * 2^level around the tube
+   * (120 * 4^level triangles), whose cells are as near square as such a
+   * grid gets (12:5 against the radii's 2.5:1).
    */
   vtkSmartPointer<vtkPolyData> Tessellate(int level) const;
 

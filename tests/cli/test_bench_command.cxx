@@ -26,6 +26,8 @@ std::string ReadAll(const std::filesystem::path& path)
 }
 }
 
+// phong < gouraud < flat at every level: the expectation, and what
+// the full run shows too (BENCHMARKS.md).
 TEST(BenchCommand, QuickRunWritesTheFilesAndErrorFallsWithTessellation)
 {
   TempDir dir;
@@ -59,9 +61,9 @@ TEST(BenchCommand, QuickRunWritesTheFilesAndErrorFallsWithTessellation)
       ASSERT_EQ(rmse.size(), 4u);
       // Each level halves the edges: flat's error is first order in the
       // edge length (about x0.5 a level), Gouraud's and Phong's second
-      // order (about x0.25-0.5 here). 0.75 leaves room for how unevenly the
-      // coarsest levels' highlights fall, and fails a rule that does not
-      // converge at all (as flat under a rotated camera once did).
+      // order (about x0.25-0.5 here). 0.75 (0.95 from the coarsest level,
+      // whose highlights fall unevenly) fails a rule that does not converge
+      // at all, as flat under a rotated camera once did.
       for (std::size_t k = 1; k < rmse.size(); ++k)
       {
         EXPECT_LT(rmse[k], (k == 1 ? 0.95 : 0.75) * rmse[k - 1])
@@ -74,14 +76,7 @@ TEST(BenchCommand, QuickRunWritesTheFilesAndErrorFallsWithTessellation)
       for (std::size_t k = 0; k < rmse.size(); ++k)
       {
         EXPECT_LT(rmse[k], byRule.at("gouraud")[k]) << surface << " level " << k;
-        EXPECT_LT(rmse[k], byRule.at("flat")[k]) << surface << " level " << k;
-        // At ~100 triangles the torus's tube is a pentagon and Gouraud's
-        // highlight vanishes between vertices: it ties with flat there
-        // (BENCHMARKS.md), so its order with flat is asserted from level 1.
-        if (k > 0)
-        {
-          EXPECT_LT(byRule.at("gouraud")[k], byRule.at("flat")[k]) << surface << " level " << k;
-        }
+        EXPECT_LT(byRule.at("gouraud")[k], byRule.at("flat")[k]) << surface << " level " << k;
       }
     }
   }

@@ -37,7 +37,7 @@ CLI::App* AddBenchCommand(CLI::App& program, BenchOptions& o)
     ->option_text("DIR")
     ->capture_default_str();
   bench->add_flag("--quick", o.Quick,
-    "Four levels (about 100 to 6400 triangles), 640x480, angle weighting: under a minute");
+    "Four levels (80 to 7680 triangles), 640x480, angle weighting: under a minute");
   bench->add_option("--frames", o.Frames, "Timed frames per measurement, after the first")
     ->check(CLI::Range(1, 1000))
     ->capture_default_str();

@@ -26,6 +26,14 @@ using Scalar = shadelab::ScalarType;
 using shadelab::IsInteger;
 using shadelab::SizeOf;
 
+// Every PLY scalar is read as a double; a count or an index converts to an
+// integer only where int64 holds it (a uint64 can say 1.8e19, and the cast
+// of a double beyond the range is undefined: a finding of fuzz_ply).
+bool FitsInt64(double value)
+{
+  return value >= -0x1p63 && value < 0x1p63;
+}
+
 struct ScalarName
 {
   std::string_view Name;
@@ -394,9 +402,10 @@ public:
     {
       for (const Property& property : element.Properties)
       {
-        const bool ok = property.IsList ? this->Read(property.CountType, length) && length >= 0 &&
+        const bool ok = property.IsList
+          ? this->Read(property.CountType, length) && FitsInt64(length) && length >= 0 &&
             this->Skip(property.Type, static_cast<std::uint64_t>(length))
-                                        : this->Skip(property.Type, 1);
+          : this->Skip(property.Type, 1);
         if (!ok)
         {
           Truncated(element, i);
@@ -516,6 +525,10 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
       {
         throw MeshReadError(element.Name + " " + std::to_string(i) + " has a negative list length");
       }
+      if (!FitsInt64(value))
+      {
+        Truncated(element, i); // a list that long cannot be in the file
+      }
       const auto length = static_cast<std::uint64_t>(value);
       if (property.Role != Use::Indices)
       {
@@ -537,7 +550,8 @@ void ReadElement(Source& source, const Element& element, shadelab::PolygonMesh& 
         }
         else
         {
-          ids.push_back(static_cast<vtkIdType>(value));
+          // Beyond int64 (a uint64 index can say 1.8e19): out of range as -1 is.
+          ids.push_back(FitsInt64(value) ? static_cast<vtkIdType>(value) : vtkIdType{ -1 });
         }
       }
     }

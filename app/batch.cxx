@@ -3,7 +3,7 @@
 #include "errors.h"
 #include "headless_renderer.h"
 #include "image_writer_process.h"
-#include "mesh_input.h"
+#include "mesh_cache.h"
 #include "metadata.h"
 #include "progress_bar.h"
 #include "scene.h"
@@ -22,7 +22,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <tuple>
 
 namespace shadelab
 {
@@ -75,17 +74,6 @@ private:
   bool Enabled;
   std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
-
-// What makes two shots' meshes the same: the file and how its normals are
-// got (LoadMesh computes them only for the lit rules).
-using MeshKey = std::tuple<std::string, NormalsMode, std::string, double, bool, bool>;
-
-MeshKey KeyOf(const SceneOptions& o)
-{
-  const bool lit = o.ShadingRule == Shading::Gouraud || o.ShadingRule == Shading::Phong;
-  return { o.Mesh, o.Normals, o.Computed.Weighting, o.Computed.FeatureAngle.value_or(-1),
-    o.Computed.Orient, lit };
-}
 }
 
 int RenderShots(
@@ -139,7 +127,7 @@ int RenderShots(
     std::map<Shading, BuiltScene> Scenes;
   };
   std::map<std::pair<int, int>, Context> contexts;
-  std::map<MeshKey, LoadedMesh> meshes;
+  MeshCache meshes;
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
   std::size_t done = 0, skipped = 0;
   for (; done < mine.size() && !Interrupted; ++done)
@@ -164,13 +152,8 @@ int RenderShots(
       fail(shot, shot.Output, error);
       continue;
     }
-    auto cached = meshes.find(KeyOf(shot.Scene));
-    if (cached == meshes.end())
-    {
-      cached = meshes.emplace(KeyOf(shot.Scene), LoadMesh(shot.Scene)).first;
-      timer.Lap("mesh");
-    }
-    const LoadedMesh& loaded = cached->second;
+    const LoadedMesh& loaded = meshes.Get(shot.Scene);
+    timer.Lap("mesh");
     if (!loaded.Mesh)
     {
       fail(shot, shot.Scene.Mesh, loaded.Error);

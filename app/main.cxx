@@ -2,6 +2,7 @@
 // meshes, through VTK. Each command lives in its own file.
 #include "advise_command.h"
 #include "bench_command.h"
+#include "compare_command.h"
 #include "errors.h"
 #include "metadata.h"
 #include "normals_command.h"
@@ -36,6 +37,8 @@ int main(int argc, char** argv)
 
   shadelab::RenderOptions render;
   CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
+  shadelab::CompareOptions compare;
+  CLI::App* compareCommand = shadelab::AddCompareCommand(program, compare);
   shadelab::NormalsOptions normals;
   CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
   shadelab::BenchOptions bench;
@@ -75,6 +78,10 @@ int main(int argc, char** argv)
       vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
     }
     return shadelab::RunRender(render, commandLine);
+  }
+  if (compareCommand->parsed())
+  {
+    return shadelab::RunCompare(compare, commandLine);
   }
   if (normalsCommand->parsed())
   {

@@ -61,8 +61,9 @@ nlohmann::ordered_json LightJson(const Light& light)
 }
 }
 
-std::vector<std::pair<std::string, std::string>> DescribePicture(
-  const std::string& commandLine, const SceneOptions& o, vtkCamera* camera, const std::string& shot)
+std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
+  const SceneOptions& o, vtkCamera* camera, const std::string& shot,
+  const std::vector<std::string>& panels)
 {
   const Material m = o.EffectiveMaterial();
   Vec3 position, focal, up;
@@ -76,6 +77,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(
   if (!shot.empty())
   {
     j["shot"] = shot;
+  }
+  if (!panels.empty())
+  {
+    j["panels"] = panels;
   }
   j["mesh"] = o.Mesh;
   j["shading"] = ToString(o.ShadingRule);

@@ -19,11 +19,12 @@ std::string QuoteCommandLine(int argc, const char* const* argv);
 /**
  * The image attributes: "Software" and "ImageDescription" (JSON of every
  * parameter, the camera as rendered; `shot`, when given, names the scene
- * file and shot it comes from). No time stamps: the same scene gives
- * the same bytes.
+ * file and shot it comes from; `panels`, a comparison's panel labels). No
+ * time stamps: the same scene gives the same bytes.
  */
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
-  const SceneOptions& options, vtkCamera* camera, const std::string& shot = "");
+  const SceneOptions& options, vtkCamera* camera, const std::string& shot = "",
+  const std::vector<std::string>& panels = {});
 }
 
 #endif

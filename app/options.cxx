@@ -315,7 +315,9 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
     ->option_text("SPEC")
     ->take_all();
 
-  AddParsed(command, "--size", o.Size, ParseSize, "Image size in pixels (default 1024x768)")
+  AddParsed(command, "--size", o.Size, ParseSize,
+    "Image size in pixels (default " + std::to_string(o.Size.Width) + "x" +
+      std::to_string(o.Size.Height) + ")")
     ->option_text("WxH");
   AddParsed(command, "--camera-position", o.CameraPosition, ParseVec3, "Camera position")
     ->option_text("X,Y,Z");
@@ -363,6 +365,28 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
     ->transform(CLI::CheckedTransformer(modes))
     ->option_text("auto|file|compute");
   AddNormalsSettings(command, o.Computed);
+}
+
+void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args)
+{
+  CLI::App app;
+  AddSceneOptions(app, o);
+  std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 takes them backwards
+  try
+  {
+    app.parse(reversed);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    std::string message = e.what();
+    // "--view-angle: '200' is outside ...": the caller names the setting.
+    const auto colon = message.find(": ");
+    if (message.rfind("--", 0) == 0 && colon != std::string::npos)
+    {
+      message = message.substr(colon + 2);
+    }
+    throw std::invalid_argument(message);
+  }
 }
 
 void AddNormalsSettings(CLI::App& command, NormalsSettings& s)

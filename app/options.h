@@ -94,6 +94,13 @@ std::pair<int, int> ParseShard(const std::string& text);
 /** Declares the scene options on a command. */
 void AddSceneOptions(CLI::App& command, SceneOptions& options);
 
+/**
+ * Sets on o what args (command-line words, such as {"--shading", "flat"})
+ * say, through the scene options' own parsers. Throws std::invalid_argument
+ * with CLI11's message, less its leading "--option: ".
+ */
+void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
+
 /** Declares --weighting, --feature-angle and --orient on command. */
 void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 

@@ -2,7 +2,6 @@
 
 #include "shadelabSceneSchema.h" // generated from data/scene.schema.json
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -180,23 +179,13 @@ std::string LightText(const json& light, const std::string& path)
 // problem becomes a SceneError at path.
 void Apply(SceneOptions& o, const std::vector<std::string>& args, const std::string& path)
 {
-  CLI::App app;
-  AddSceneOptions(app, o);
-  std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 takes them backwards
   try
   {
-    app.parse(reversed);
+    ApplySceneArguments(o, args);
   }
-  catch (const CLI::ParseError& e)
+  catch (const std::invalid_argument& e)
   {
-    std::string message = e.what();
-    // "--view-angle: '200' is outside ...": the option is the JSON key here.
-    const auto colon = message.find(": ");
-    if (message.rfind("--", 0) == 0 && colon != std::string::npos)
-    {
-      message = message.substr(colon + 2);
-    }
-    throw SceneError{ path, message };
+    throw SceneError{ path, e.what() };
   }
 }
 

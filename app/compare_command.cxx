@@ -1,0 +1,143 @@
+#include "compare_command.h"
+
+#include "camera.h"
+#include "comparison_panels.h"
+#include "comparison_picture.h"
+#include "errors.h"
+#include "headless_renderer.h"
+#include "image_writer_process.h"
+#include "mesh_cache.h"
+#include "metadata.h"
+#include "scene.h"
+#include "vtkShadelabShading.h"
+
+#include <vtkActor.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace shadelab
+{
+CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
+{
+  CLI::App* compare = program.add_subcommand("compare",
+    "Render MESH headless once per mode into one picture: panels side by side, one camera, a "
+    "label each; --diff adds |A - B| as a heat map");
+  // A panel of 1024x768 makes a three-panel picture 3 k wide: smaller by default.
+  o.Scene.Size = { 512, 512 };
+  AddSceneOptions(*compare, o.Scene);
+  compare->get_option("MESH")->required();
+  compare->get_option("--size")->description("Each panel's size in pixels (default 512x512)");
+  compare->add_option("-o,--output", o.Output, "Image file; its extension picks the format")
+    ->required()
+    ->option_text("OUT");
+  compare->add_option("--modes", o.Modes, ModesHelp)->option_text("MODE,...");
+  compare
+    ->add_option("--diff", o.Difference,
+      "Add a panel of |A - B| per pixel (the largest over R, G, B of what 8-bit pictures show), "
+      "as a heat map scaled to its largest value, with a colour bar; A and B are modes as "
+      "written in --modes or their numbers from 1")
+    ->option_text("A,B");
+  compare->add_flag("--components", o.Components,
+    "Show each mode as its ambient | diffuse | specular terms and their total, a row per mode");
+  compare->footer(CameraHelp);
+  return compare;
+}
+
+int RunCompare(const CompareOptions& o, const std::string& commandLine)
+{
+  std::vector<Panel> modes;
+  std::pair<int, int> difference{ -1, -1 };
+  try
+  {
+    modes = ParseModes(o.Modes, o.Scene);
+    if (!o.Difference.empty())
+    {
+      difference = ParseDifference(o.Difference, modes);
+    }
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::cerr << "shadelab: error: compare: "
+              << (o.Difference.empty() ? "--modes" : "--modes/--diff") << ": " << e.what()
+              << " (see shadelab compare --help)" << std::endl;
+    return ExitUsage;
+  }
+  const std::vector<Panel> panels = o.Components ? SplitIntoTerms(modes) : modes;
+  if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
+  {
+    return ReportError(o.Output, error);
+  }
+  ImageWriterProcess writer; // started first: it binds OpenImageIO while we render
+
+  MeshCache meshes;
+  HeadlessRenderer renderer;
+  if (const std::string error = renderer.Start(o.Scene.Size.Width, o.Scene.Size.Height);
+      !error.empty())
+  {
+    return ReportError("render", error);
+  }
+  // One actor per rule and mesh: panels that differ only in material or
+  // terms keep its compiled program and uploaded buffers.
+  std::map<std::pair<Shading, vtkPolyData*>, BuiltScene> scenes;
+  std::vector<FloatImage> pictures;
+  for (const Panel& panel : panels)
+  {
+    const LoadedMesh& loaded = meshes.Get(panel.Scene);
+    if (!loaded.Mesh)
+    {
+      return ReportError(panel.Scene.Mesh, loaded.Error);
+    }
+    renderer.Clear();
+    const auto key = std::make_pair(panel.Scene.ShadingRule, loaded.Mesh.GetPointer());
+    const auto before = scenes.find(key);
+    BuiltScene scene = BuildScene(panel.Scene, loaded.Mesh, renderer.GetRenderer(),
+      before == scenes.end() ? nullptr : &before->second);
+    if (!scene.Error.empty())
+    {
+      return ReportError("camera", scene.Error);
+    }
+    scenes[key] = scene;
+    pictures.push_back(renderer.Render());
+  }
+
+  std::vector<ComparisonCell> cells;
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < panels.size(); ++i)
+  {
+    cells.push_back({ &pictures[i], panels[i].Label });
+    labels.push_back(panels[i].Label);
+  }
+  std::unique_ptr<Difference> heat;
+  if (difference.first >= 0)
+  {
+    // With --components a mode's total is the last of its four panels.
+    const auto total = [&o](int mode) { return o.Components ? 4 * mode + 3 : mode; };
+    heat = std::make_unique<Difference>(
+      CompareImages(pictures[total(difference.first)], pictures[total(difference.second)]));
+    const std::string label =
+      "|" + modes[difference.first].Label + " - " + modes[difference.second].Label + "|";
+    cells.push_back({ &heat->Heat, label });
+    labels.push_back(label);
+    std::cout << "difference " << label << ": largest " << heat->Largest << ", mean " << heat->Mean
+              << ", " << heat->Differing << " of "
+              << static_cast<long long>(heat->Heat.Width) * heat->Heat.Height << " pixels differ"
+              << std::endl;
+  }
+  const FloatImage picture =
+    ComposeComparison(cells, o.Components ? 4 : 0, heat.get(), static_cast<int>(cells.size()) - 1);
+  const auto metadata =
+    DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera(), "", labels);
+  if (const std::string error = writer.Write(o.Output, picture, PixelType::Auto, metadata);
+      !error.empty())
+  {
+    return ReportError(o.Output, error);
+  }
+  return 0;
+}
+}

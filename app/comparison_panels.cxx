@@ -96,9 +96,16 @@ std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base)
   return panels;
 }
 
-std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels)
+void ShowTerms(SceneOptions& s, bool ambient, bool diffuse, bool specular)
 {
   constexpr Rgb Zero{ 0, 0, 0 };
+  s.Ka = ambient ? s.Ka : Zero;
+  s.Kd = diffuse ? s.Kd : Zero;
+  s.Ks = specular ? s.Ks : Zero;
+}
+
+std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels)
+{
   std::vector<Panel> split;
   for (const Panel& panel : panels)
   {
@@ -107,22 +114,9 @@ std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels)
       Panel p = panel;
       p.Shown = terms;
       p.Label += std::string(": ") + ToString(terms);
-      SceneOptions& s = p.Scene;
-      // A term is shown alone by zeroing the others' coefficients: the
-      // shaders then hold no code for them (DESIGN.md, generated for what
-      // the scene needs).
-      if (terms != Terms::All && terms != Terms::Ambient)
-      {
-        s.Ka = Zero;
-      }
-      if (terms != Terms::All && terms != Terms::Diffuse)
-      {
-        s.Kd = Zero;
-      }
-      if (terms != Terms::All && terms != Terms::Specular)
-      {
-        s.Ks = Zero;
-      }
+      const bool all = terms == Terms::All;
+      ShowTerms(p.Scene, all || terms == Terms::Ambient, all || terms == Terms::Diffuse,
+        all || terms == Terms::Specular);
       split.push_back(p);
     }
   }

@@ -39,6 +39,13 @@ struct Panel
  */
 std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base);
 
+/**
+ * Leaves only the chosen terms of the illumination in scene, by zeroing the
+ * others' coefficients: the shaders then hold no code for them (DESIGN.md,
+ * generated for what the scene needs).
+ */
+void ShowTerms(SceneOptions& scene, bool ambient, bool diffuse, bool specular);
+
 /** Each panel as four: its ambient, diffuse and specular terms and their total. */
 std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels);
 

@@ -2,6 +2,7 @@
 
 #include "image_writer_protocol.h"
 #include "output_path.h"
+#include "sibling_executable.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -19,14 +20,6 @@ namespace shadelab
 {
 namespace
 {
-// The writer sits beside the shadelab executable.
-std::string WriterPath()
-{
-  std::error_code error;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  return (exe.parent_path() / "shadelab-image-writer").string();
-}
-
 void Close(int& fd)
 {
   if (fd >= 0)
@@ -56,7 +49,7 @@ ImageWriterProcess::ImageWriterProcess()
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, toChild[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fromChild[1], STDOUT_FILENO);
-  const std::string path = WriterPath();
+  const std::string path = SiblingExecutable("shadelab-image-writer");
   char* const argv[] = { const_cast<char*>(path.c_str()), nullptr };
   const int spawned = posix_spawn(&this->Child, path.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);

@@ -8,6 +8,7 @@
 #include "normals_command.h"
 #include "render_command.h"
 #include "shadelabVersion.h"
+#include "view_command.h"
 #include "vtkShadelabOutputWindow.h"
 
 #include <vtkLogger.h>
@@ -39,6 +40,8 @@ int main(int argc, char** argv)
   CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
   shadelab::CompareOptions compare;
   CLI::App* compareCommand = shadelab::AddCompareCommand(program, compare);
+  shadelab::ViewOptions view;
+  CLI::App* viewCommand = shadelab::AddViewCommand(program, view);
   shadelab::NormalsOptions normals;
   CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
   shadelab::BenchOptions bench;
@@ -82,6 +85,10 @@ int main(int argc, char** argv)
   if (compareCommand->parsed())
   {
     return shadelab::RunCompare(compare, commandLine);
+  }
+  if (viewCommand->parsed())
+  {
+    return shadelab::ExecViewer(argc, argv);
   }
   if (normalsCommand->parsed())
   {

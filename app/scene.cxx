@@ -43,10 +43,17 @@ BuiltScene BuildScene(
   renderer->ResetCameraClippingRange(bounds);
   Vec3 eye;
   camera->GetPosition(eye.data());
+  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse);
+}
 
+BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
+{
+  BuiltScene scene;
+  scene.Mesh = mesh;
   scene.Shading = vtkSmartPointer<vtkShadelabShading>::New();
   scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
-    options.EffectiveMaterial(), options.Ambient, EffectiveLights(options, eye));
+    options.EffectiveMaterial(), options.Ambient, lights);
   const vtkShadelabShading* previous = nullptr;
   if (reuse && reuse->Actor && reuse->Mesh == mesh &&
     reuse->Shading->GetFeatures().Rule == options.ShadingRule)

@@ -34,6 +34,13 @@ struct BuiltScene
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
   const BuiltScene* reuse = nullptr);
 
+/**
+ * The actor part of BuildScene: mesh lit as options say by `lights` (world
+ * coordinates), under the renderer's camera as it is; `reuse` as there.
+ */
+BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr);
+
 /** The lights the scene uses: the given ones, or the lecture's default. */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
 }

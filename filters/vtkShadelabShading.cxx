@@ -60,6 +60,19 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   this->Modified();
 }
 
+void vtkShadelabShading::SetLightPlacement(const std::vector<Light>& lights)
+{
+  const bool sameKinds = lights.size() == this->Lights.size() &&
+    std::equal(lights.begin(), lights.end(), this->Lights.begin(),
+      [](const Light& a, const Light& b) { return a.Kind == b.Kind; });
+  if (!sameKinds)
+  {
+    vtkErrorMacro("SetLightPlacement: other kinds of lights need SetIllumination");
+    return;
+  }
+  this->Lights = lights;
+}
+
 void vtkShadelabShading::SetAllFeatures(bool all)
 {
   this->Features.AllFeatures = all;

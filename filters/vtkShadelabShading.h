@@ -39,6 +39,12 @@ public:
     const shadelab::Material& material, const shadelab::Rgb& ambient,
     const std::vector<shadelab::Light>& lights);
 
+  /**
+   * Moves the lights without changing the code: `lights` are of the kinds
+   * and number SetIllumination gave (a light that follows the camera).
+   */
+  void SetLightPlacement(const std::vector<shadelab::Light>& lights);
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 

@@ -190,6 +190,8 @@ int Inspector::Run(void* display)
 
   this->Window->SetDisplayId(display);
   this->Window->SetSize(scene.Size.Width, scene.Size.Height);
+  // No multisampling: the pixels are the shading rule's alone, as headless.
+  this->Window->SetMultiSamples(0);
   this->Window->SetWindowName(
     ("shadelab - " + std::filesystem::path(scene.Mesh).filename().string()).c_str());
   this->Window->SetNumberOfLayers(2);

@@ -219,7 +219,8 @@ const BadCase Cases[] = {
   // (no disk used), more than any test machine's memory. It must be refused
   // before anything is allocated, not meet the OOM killer.
   { "MeshTooLargeForMemory",
-    [](const TempDir& d) {
+    [](const TempDir& d)
+    {
       const std::uint32_t count = 1u << 31;
       WriteText(d / "huge.stl", std::string(80, 'x') + Binary(&count, sizeof count));
       std::filesystem::resize_file(d / "huge.stl", 84 + 50 * std::uintmax_t{ count });
@@ -276,4 +277,17 @@ TEST(AwkwardInput, NonManifoldAndDegenerateFacesRender)
     { "render", (dir / "fin.obj").string(), "-o", (dir / "fin.png").string(), "--size", "64x64" });
   EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(ReadImage(dir / "fin.png").Width, 64);
+}
+
+TEST(AwkwardInput, ViewWithoutADisplayIsAOneLineError)
+{
+  // RunShadelab unsets DISPLAY: no X server to open a window on.
+  const RunResult run = RunShadelab({ "view", SharedMesh("spot.obj").string() });
+  EXPECT_EQ(run.ExitCode, 1);
+  EXPECT_NE(run.Stderr.find("shadelab: error: view: cannot open the display"), std::string::npos)
+    << run.Stderr;
+  EXPECT_EQ(std::count(run.Stderr.begin(), run.Stderr.end(), '\n'), 1) << run.Stderr;
+  const RunResult bad =
+    RunShadelab({ "view", SharedMesh("spot.obj").string(), "--interactive-shading", "fast" });
+  EXPECT_EQ(bad.ExitCode, 2) << bad.Stderr;
 }

@@ -1,0 +1,406 @@
+// `shadelab view` in a real window (issue 5): an X server of its own (Xvfb),
+// keys sent to the window as X events (xdotool), and what the window shows
+// read back through the inspector's own screenshot key `p`.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+using namespace shadelab_test;
+using namespace std::chrono_literals;
+
+namespace
+{
+constexpr int W = 480;
+constexpr int H = 360;
+// The HUD's three lines at the bottom left; its ms/frame changes frame to
+// frame, so pictures are compared above it.
+constexpr int HudHeight = 70;
+
+std::string Slurp(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// An X server for this test program: Xvfb on the first free display,
+// which it names through -displayfd once it accepts connections.
+class XServer : public ::testing::Environment
+{
+public:
+  void SetUp() override
+  {
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
+    this->Pid = fork();
+    if (this->Pid == 0)
+    {
+      close(fds[0]);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
+        "tcp", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    std::string number;
+    char c;
+    while (read(fds[0], &c, 1) == 1 && c != '\n')
+    {
+      number += c;
+    }
+    close(fds[0]);
+    ASSERT_FALSE(number.empty()) << "Xvfb did not start (is the xvfb package installed?)";
+    setenv("DISPLAY", (":" + number).c_str(), 1);
+  }
+  void TearDown() override
+  {
+    if (this->Pid > 0)
+    {
+      kill(this->Pid, SIGTERM);
+      waitpid(this->Pid, nullptr, 0);
+    }
+  }
+
+private:
+  pid_t Pid = -1;
+};
+
+const auto* const Server = ::testing::AddGlobalTestEnvironment(new XServer);
+
+int Run(const std::string& command)
+{
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A running `shadelab view MESH ARGS...` in a temporary folder (where its
+// screenshots go).
+class Viewer
+{
+public:
+  explicit Viewer(const std::vector<std::string>& args, const std::string& mesh = "spot.obj")
+    : Title("shadelab - " + mesh)
+  {
+    std::vector<std::string> words{ SHADELAB_BINARY, "view", SharedMesh(mesh).string(), "--size",
+      std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" };
+    words.insert(words.end(), args.begin(), args.end());
+    this->Pid = fork();
+    if (this->Pid == 0)
+    {
+      if (chdir(this->Dir.path().c_str()) != 0 ||
+        !freopen((this->Dir / "stdout").c_str(), "w", stdout) ||
+        !freopen((this->Dir / "stderr").c_str(), "w", stderr))
+      {
+        _exit(127);
+      }
+      std::vector<char*> argv;
+      for (std::string& w : words)
+      {
+        argv.push_back(w.data());
+      }
+      argv.push_back(nullptr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    // The window exists once xdotool finds it by its title.
+    const std::string search =
+      "timeout 60 xdotool search --sync --name '^" + this->Title + "$' 2>/dev/null | head -1";
+    FILE* found = popen(search.c_str(), "r");
+    char line[64] = {};
+    if (found && fgets(line, sizeof line, found))
+    {
+      this->Window = std::string(line, std::strcspn(line, "\n"));
+    }
+    if (found)
+    {
+      pclose(found);
+    }
+  }
+
+  ~Viewer()
+  {
+    if (this->Pid > 0 && !this->Exited)
+    {
+      kill(this->Pid, SIGKILL);
+      waitpid(this->Pid, nullptr, 0);
+    }
+  }
+
+  bool HasWindow() const { return !this->Window.empty(); }
+
+  /** Sends keys (xdotool names) to the window, one X event each. */
+  void Keys(const std::vector<std::string>& keys)
+  {
+    for (const std::string& key : keys)
+    {
+      Run("xdotool key --window " + this->Window + " " + key + " 2>/dev/null");
+    }
+  }
+
+  /** The mouse: press at (x, y) in the window, move by dx, and release unless `hold`. */
+  void Drag(int x, int y, int dx, bool hold)
+  {
+    const std::string w = " --window " + this->Window;
+    Run("xdotool mousemove" + w + " " + std::to_string(x) + " " + std::to_string(y) +
+      " mousedown 1 mousemove_relative -- " + std::to_string(dx) + " 0 2>/dev/null");
+    if (!hold)
+    {
+      Run("xdotool mouseup 1 2>/dev/null");
+    }
+  }
+
+  void Release() { Run("xdotool mouseup 1 2>/dev/null"); }
+
+  /** Presses p and reads the screenshot the viewer names on its stdout. */
+  Image Screenshot()
+  {
+    const std::size_t before = this->Shots;
+    this->Keys({ "p" });
+    const auto deadline = std::chrono::steady_clock::now() + 30s;
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+      std::istringstream out(Slurp(this->Dir / "stdout"));
+      std::vector<std::string> paths;
+      for (std::string line; std::getline(out, line);)
+      {
+        const std::string tag = "shadelab: screenshot ";
+        if (line.rfind(tag, 0) == 0)
+        {
+          paths.push_back(line.substr(tag.size()));
+        }
+      }
+      if (paths.size() > before)
+      {
+        this->Shots = paths.size();
+        return ReadImage(paths.back());
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    return {};
+  }
+
+  /** Waits up to 20 s for the viewer to end; its exit code, or -1 if it did not. */
+  int Wait()
+  {
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    int status = 0;
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+      if (waitpid(this->Pid, &status, WNOHANG) == this->Pid)
+      {
+        this->Exited = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    return -1;
+  }
+
+  std::string Stderr() const { return Slurp(this->Dir / "stderr"); }
+
+  const std::string Title;
+
+private:
+  TempDir Dir;
+  pid_t Pid = -1;
+  bool Exited = false;
+  std::string Window;
+  std::size_t Shots = 0;
+};
+
+// The largest difference of two screenshots above the HUD, and how many
+// pixels differ there by more than `by`.
+struct Change
+{
+  float Largest = 0;
+  long long Pixels = 0;
+};
+
+Change Compare(const Image& a, const Image& b, float by = 2, int top = 0,
+  int bottom = H - HudHeight, int left = 0, int right = W)
+{
+  Change change;
+  for (int y = top; y < bottom; ++y)
+  {
+    for (int x = left; x < right; ++x)
+    {
+      float d = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const size_t i = (static_cast<size_t>(y) * a.Width + x) * a.Channels + c;
+        d = std::max(d, std::fabs(a.Pixels[i] - b.Pixels[i]));
+      }
+      change.Largest = std::max(change.Largest, d);
+      change.Pixels += d > by;
+    }
+  }
+  return change;
+}
+}
+
+TEST(View, TheWindowShowsWhatRenderRenders)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << "no window titled '" << viewer.Title << "'; "
+                                  << viewer.Stderr();
+  const Image shown = viewer.Screenshot();
+  ASSERT_EQ(shown.Width, W);
+  ASSERT_EQ(shown.Height, H);
+  TempDir dir;
+  const RunResult render =
+    RunShadelab({ "render", SharedMesh("spot.obj").string(), "-o", (dir / "r.png").string(),
+      "--size", std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" });
+  ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
+  const Image rendered = ReadImage(dir / "r.png");
+  // The same shaders on the same Mesa (llvmpipe through GLX here, through
+  // OSMesa there): the same pixels but for rounding, at most 1 step.
+  const Change change = Compare(shown, rendered, 1);
+  EXPECT_LE(change.Largest, 1);
+  EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
+}
+
+TEST(View, RuleKeysSwitchTheRule)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image phong = viewer.Screenshot();
+  viewer.Keys({ "1" });
+  const Image flat = viewer.Screenshot();
+  viewer.Keys({ "2" });
+  const Image gouraud = viewer.Screenshot();
+  viewer.Keys({ "3" });
+  const Image phongAgain = viewer.Screenshot();
+  viewer.Keys({ "0" });
+  const Image none = viewer.Screenshot();
+  ASSERT_EQ(none.Width, W);
+  EXPECT_GT(Compare(phong, flat).Pixels, 1000) << "flat's facets";
+  EXPECT_GT(Compare(phong, gouraud).Pixels, 100) << "gouraud's highlights";
+  EXPECT_EQ(Compare(phong, phongAgain, 0).Pixels, 0) << "3 brings phong back exactly";
+  EXPECT_GT(Compare(phong, none).Pixels, 1000) << "none: one colour, unlit";
+}
+
+TEST(View, TermKeysTurnTheIlluminationOff)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image lit = viewer.Screenshot();
+  viewer.Keys({ "s" });
+  const Image noSpecular = viewer.Screenshot();
+  viewer.Keys({ "a", "d" });
+  const Image dark = viewer.Screenshot();
+  ASSERT_EQ(dark.Width, W);
+  EXPECT_GT(Compare(lit, noSpecular).Pixels, 100) << "the highlights go";
+  float brightest = 0;
+  for (int y = 0; y < H - HudHeight; ++y)
+  {
+    for (int x = 0; x < W * 3; ++x)
+    {
+      brightest = std::max(brightest, dark.Pixels[static_cast<size_t>(y) * W * 3 + x]);
+    }
+  }
+  EXPECT_EQ(brightest, 0) << "no term left: the mesh is black on black";
+}
+
+TEST(View, MaterialReflectionLightAndShininessKeysChangeThePicture)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  Image before = viewer.Screenshot();
+  for (const std::string key : { "m", "M", "b", "l", "plus", "minus", "w" })
+  {
+    viewer.Keys({ key });
+    const Image after = viewer.Screenshot();
+    ASSERT_EQ(after.Width, W) << key;
+    // M undoes m: the picture is chrome's again, which differs from the
+    // one before it (brass).
+    EXPECT_GT(Compare(before, after).Pixels, 20) << "key " << key;
+    before = after;
+  }
+}
+
+TEST(View, HelpOverlayAppearsAndGoes)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image plain = viewer.Screenshot();
+  viewer.Keys({ "h" });
+  const Image help = viewer.Screenshot();
+  viewer.Keys({ "h" });
+  const Image again = viewer.Screenshot();
+  ASSERT_EQ(again.Width, W);
+  // The key list covers the middle of the window.
+  EXPECT_GT(Compare(plain, help, 2, H / 4, H * 3 / 4, W / 4, W * 3 / 4).Pixels, W * H / 16);
+  EXPECT_EQ(Compare(plain, again, 0).Pixels, 0);
+}
+
+TEST(View, EdgesGlyphsAndComparisonLayout)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image plain = viewer.Screenshot();
+  viewer.Keys({ "e" });
+  const Image edges = viewer.Screenshot();
+  viewer.Keys({ "e", "n" });
+  const Image glyphs = viewer.Screenshot();
+  viewer.Keys({ "n", "c" });
+  const Image compare = viewer.Screenshot();
+  ASSERT_EQ(compare.Width, W);
+  EXPECT_GT(Compare(plain, edges).Pixels, 1000);
+  EXPECT_GT(Compare(plain, glyphs).Pixels, 1000);
+  // Three panels, flat | gouraud | phong, under one camera: the left and
+  // right thirds show the same silhouette with other shading.
+  long long differ = 0, covered = 0;
+  for (int y = 30; y < H - HudHeight; ++y)
+  {
+    for (int x = 0; x < W / 3; ++x)
+    {
+      const float* flat = &compare.Pixels[(static_cast<size_t>(y) * W + x) * 3];
+      const float* phong = &compare.Pixels[(static_cast<size_t>(y) * W + x + 2 * W / 3) * 3];
+      covered += (flat[0] + flat[1] + flat[2] > 0) && (phong[0] + phong[1] + phong[2] > 0);
+      differ += std::fabs(flat[0] - phong[0]) > 2;
+    }
+  }
+  EXPECT_GT(covered, 1000) << "the mesh in both panels";
+  EXPECT_GT(differ, 200) << "flat's facets against phong";
+}
+
+TEST(View, DragTimeRuleHoldsWhileTheMouseIsDown)
+{
+  Viewer viewer({ "--interactive-shading", "flat" });
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  viewer.Drag(W / 2, H / 2, 40, true);
+  const Image dragging = viewer.Screenshot();
+  viewer.Release();
+  std::this_thread::sleep_for(500ms);
+  const Image released = viewer.Screenshot();
+  viewer.Keys({ "1" });
+  const Image flat = viewer.Screenshot();
+  ASSERT_EQ(flat.Width, W);
+  EXPECT_EQ(Compare(dragging, flat, 0).Pixels, 0) << "flat while dragging";
+  EXPECT_GT(Compare(released, flat).Pixels, 1000) << "phong again on release";
+}
+
+TEST(View, QAndEscapeQuitWithZero)
+{
+  for (const std::string key : { "q", "Escape" })
+  {
+    Viewer viewer({});
+    ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+    viewer.Keys({ key });
+    EXPECT_EQ(viewer.Wait(), 0) << key << ": " << viewer.Stderr();
+  }
+}

@@ -36,39 +36,25 @@ CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
   compare->add_option("-o,--output", o.Output, "Image file; its extension picks the format")
     ->required()
     ->option_text("OUT");
-  compare->add_option("--modes", o.Modes, ModesHelp)->option_text("MODE,...");
-  compare
-    ->add_option("--diff", o.Difference,
-      "Add a panel of |A - B| per pixel (the largest over R, G, B of what 8-bit pictures show), "
-      "as a heat map scaled to its largest value, with a colour bar; A and B are modes as "
-      "written in --modes or their numbers from 1")
-    ->option_text("A,B");
-  compare->add_flag("--components", o.Components,
-    "Show each mode as its ambient | diffuse | specular terms and their total, a row per mode");
+  AddComparisonOptions(*compare, o.Panels);
   compare->footer(CameraHelp);
   return compare;
 }
 
 int RunCompare(const CompareOptions& o, const std::string& commandLine)
 {
-  std::vector<Panel> modes;
-  std::pair<int, int> difference{ -1, -1 };
+  Comparison plan;
   try
   {
-    modes = ParseModes(o.Modes, o.Scene);
-    if (!o.Difference.empty())
-    {
-      difference = ParseDifference(o.Difference, modes);
-    }
+    plan = PlanComparison(o.Panels, o.Scene);
   }
   catch (const std::invalid_argument& e)
   {
-    std::cerr << "shadelab: error: compare: "
-              << (o.Difference.empty() ? "--modes" : "--modes/--diff") << ": " << e.what()
-              << " (see shadelab compare --help)" << std::endl;
+    std::cerr << "shadelab: error: compare: " << e.what() << " (see shadelab compare --help)"
+              << std::endl;
     return ExitUsage;
   }
-  const std::vector<Panel> panels = o.Components ? SplitIntoTerms(modes) : modes;
+  const std::vector<Panel>& panels = plan.Panels;
   if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
   {
     return ReportError(o.Output, error);
@@ -114,23 +100,19 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
     labels.push_back(panels[i].Label);
   }
   std::unique_ptr<Difference> heat;
-  if (difference.first >= 0)
+  if (plan.DifferenceA >= 0)
   {
-    // With --components a mode's total is the last of its four panels.
-    const auto total = [&o](int mode) { return o.Components ? 4 * mode + 3 : mode; };
     heat = std::make_unique<Difference>(
-      CompareImages(pictures[total(difference.first)], pictures[total(difference.second)]));
-    const std::string label =
-      "|" + modes[difference.first].Label + " - " + modes[difference.second].Label + "|";
-    cells.push_back({ &heat->Heat, label });
-    labels.push_back(label);
-    std::cout << "difference " << label << ": largest " << heat->Largest << ", mean " << heat->Mean
-              << ", " << heat->Differing << " of "
+      CompareImages(pictures[plan.DifferenceA], pictures[plan.DifferenceB]));
+    cells.push_back({ &heat->Heat, plan.DifferenceLabel });
+    labels.push_back(plan.DifferenceLabel);
+    std::cout << "difference " << plan.DifferenceLabel << ": largest " << heat->Largest << ", mean "
+              << heat->Mean << ", " << heat->Differing << " of "
               << static_cast<long long>(heat->Heat.Width) * heat->Heat.Height << " pixels differ"
               << std::endl;
   }
   const FloatImage picture =
-    ComposeComparison(cells, o.Components ? 4 : 0, heat.get(), static_cast<int>(cells.size()) - 1);
+    ComposeComparison(cells, plan.Columns, heat.get(), static_cast<int>(cells.size()) - 1);
   const auto metadata =
     DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera(), "", labels);
   if (const std::string error = writer.Write(o.Output, picture, PixelType::Auto, metadata);

@@ -4,6 +4,7 @@
 #ifndef shadelab_compare_command_h
 #define shadelab_compare_command_h
 
+#include "comparison_panels.h"
 #include "options.h"
 
 #include <string>
@@ -19,9 +20,7 @@ struct CompareOptions
 {
   SceneOptions Scene; // every panel's, before its mode's changes; Size is a panel's
   std::string Output;
-  std::string Modes = "flat,gouraud,phong";
-  std::string Difference; // "A,B" or empty
-  bool Components = false;
+  ComparisonOptions Panels;
 };
 
 /** Declares the compare command and its options on the program. */

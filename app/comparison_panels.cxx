@@ -1,5 +1,7 @@
 #include "comparison_panels.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -85,6 +87,36 @@ const char* const ModesHelp =
   "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong, KEY "
   "shading|reflection|material|weighting|ns|normals; e.g. phong,phong:material=gold,"
   "gouraud:weighting=area (default flat,gouraud,phong)";
+
+void AddComparisonOptions(CLI::App& command, ComparisonOptions& o)
+{
+  command.add_option("--modes", o.Modes, ModesHelp)->option_text("MODE,...");
+  command
+    .add_option("--diff", o.Difference,
+      "Add a panel of |A - B| per pixel (the largest over R, G, B of what 8-bit pictures show), "
+      "as a heat map scaled to its largest value, with a colour bar; A and B are modes as "
+      "written in --modes or their numbers from 1")
+    ->option_text("A,B");
+  command.add_flag("--components", o.Components,
+    "Show each mode as its ambient | diffuse | specular terms and their total, a row per mode");
+}
+
+Comparison PlanComparison(const ComparisonOptions& o, const SceneOptions& base)
+{
+  Comparison c;
+  c.Modes = ParseModes(o.Modes, base);
+  c.Panels = o.Components ? SplitIntoTerms(c.Modes) : c.Modes;
+  c.Columns = o.Components ? 4 : 0;
+  if (!o.Difference.empty())
+  {
+    const auto [a, b] = ParseDifference(o.Difference, c.Modes);
+    // With --components a mode's total is the last of its four panels.
+    c.DifferenceA = o.Components ? 4 * a + 3 : a;
+    c.DifferenceB = o.Components ? 4 * b + 3 : b;
+    c.DifferenceLabel = "|" + c.Modes[a].Label + " - " + c.Modes[b].Label + "|";
+  }
+  return c;
+}
 
 std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base)
 {

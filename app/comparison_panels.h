@@ -12,6 +12,11 @@
 #include <utility>
 #include <vector>
 
+namespace CLI
+{
+class App;
+}
+
 namespace shadelab
 {
 /** The terms of the illumination that a panel shows (--components). */
@@ -55,8 +60,30 @@ std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels);
  */
 std::pair<int, int> ParseDifference(const std::string& text, const std::vector<Panel>& modes);
 
-/** The help text of --modes. */
-extern const char* const ModesHelp;
+/** What a comparison shows: --modes, --diff and --components of compare and view. */
+struct ComparisonOptions
+{
+  std::string Modes = "flat,gouraud,phong";
+  std::string Difference; // "A,B" or empty
+  bool Components = false;
+};
+
+/** Declares --modes, --diff and --components on command. */
+void AddComparisonOptions(CLI::App& command, ComparisonOptions& options);
+
+/** The panels of a comparison, in layout order. */
+struct Comparison
+{
+  std::vector<Panel> Modes;  // one per mode
+  std::vector<Panel> Panels; // the modes, or with --components four per mode
+  int Columns = 0;           // 4 with --components (a row per mode), else 0: LayOut's choice
+  int DifferenceA = -1;      // the panels whose difference is shown, or -1
+  int DifferenceB = -1;
+  std::string DifferenceLabel; // "|A - B|"
+};
+
+/** The comparison options ask for on base. Throws std::invalid_argument. */
+Comparison PlanComparison(const ComparisonOptions& options, const SceneOptions& base);
 
 const char* ToString(Terms terms);
 }

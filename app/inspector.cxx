@@ -4,6 +4,7 @@
 // key; the comparison layout shows compare's panels with one camera.
 #include "camera.h"
 #include "comparison_panels.h"
+#include "comparison_picture.h"
 #include "errors.h"
 #include "image_writer_process.h"
 #include "mesh_cache.h"
@@ -21,6 +22,7 @@
 #include <vtkCommand.h>
 #include <vtkExtractEdges.h>
 #include <vtkHedgeHog.h>
+#include <vtkImageActor.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
 #include <vtkNew.h>
@@ -40,6 +42,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <filesystem>
@@ -123,7 +126,8 @@ private:
 
   void OnKey(const std::string& key);
   void Apply();
-  void MakeSlots(std::size_t count);
+  void MakeSlots(std::size_t count, int columns, bool difference);
+  void RefreshDifference();
   std::vector<Light> CameraLights(const SceneOptions& scene) const;
   void FollowCamera();
   void UpdateHud();
@@ -152,6 +156,11 @@ private:
   vtkNew<vtkTextActor> Hud;
   vtkNew<vtkTextActor> Help;
   std::vector<Slot> Slots;
+  Comparison Plan;             // what the comparison layout shows
+  int Columns = 1, Rows = 1;   // the panels' grid
+  bool DifferenceCell = false; // the last cell holds the difference of two panels
+  vtkNew<vtkRenderer> DifferenceRenderer;
+  vtkNew<vtkImageActor> DifferenceImage;
   Clock::time_point FrameStart;
   std::deque<double> FrameMs; // the last frames' times
   std::unique_ptr<ImageWriterProcess> Writer;
@@ -165,17 +174,15 @@ int Inspector::Run(void* display)
   {
     return ReportError(scene.Mesh, loaded.Error);
   }
-  if (this->CompareOn || !this->Options.Modes.empty())
+  try
   {
-    try
-    {
-      ParseModes(this->Options.Modes, scene);
-    }
-    catch (const std::invalid_argument& e)
-    {
-      std::cerr << "shadelab: error: view: --modes: " << e.what() << std::endl;
-      return ExitUsage;
-    }
+    PlanComparison(this->Options.Panels, scene);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::cerr << "shadelab: error: view: " << e.what() << " (see shadelab view --help)"
+              << std::endl;
+    return ExitUsage;
   }
   loaded.Mesh->GetBounds(this->Bounds);
   this->Triangles = loaded.Mesh->GetNumberOfPolys();
@@ -256,6 +263,7 @@ int Inspector::Run(void* display)
     {
       auto* inspector = static_cast<Inspector*>(self);
       inspector->Dragging = true;
+      inspector->DifferenceImage->VisibilityOff(); // until the release: it would lag
       if (inspector->Options.InteractiveShading)
       {
         inspector->Apply();
@@ -273,12 +281,19 @@ int Inspector::Run(void* display)
         inspector->Apply();
         inspector->Window->Render();
       }
+      inspector->RefreshDifference();
     },
     this);
 
+  this->DifferenceRenderer->AddActor(this->DifferenceImage);
+  this->DifferenceRenderer->GetActiveCamera()->ParallelProjectionOn();
+  this->DifferenceRenderer->InteractiveOff();
+  this->DifferenceImage->InterpolateOff(); // its pixels as computed
   this->Apply();
+  this->ResetCamera(); // the panels' aspect
   this->Interactor->Initialize();
   this->Window->Render();
+  this->RefreshDifference();
   if (this->Options.MeasureDrag > 0)
   {
     return this->MeasureDrag();
@@ -325,9 +340,12 @@ void Inspector::FollowCamera()
   }
 }
 
-void Inspector::MakeSlots(std::size_t count)
+void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
 {
-  if (this->Slots.size() == count)
+  const int cells = static_cast<int>(count) + (difference ? 1 : 0);
+  const ComparisonLayout grid = LayOut(cells, 1, 1, columns, false);
+  if (this->Slots.size() == count && this->Columns == grid.Columns && this->Rows == grid.Rows &&
+    this->DifferenceCell == difference)
   {
     return;
   }
@@ -335,14 +353,24 @@ void Inspector::MakeSlots(std::size_t count)
   {
     this->Window->RemoveRenderer(slot.Renderer);
   }
+  this->Window->RemoveRenderer(this->DifferenceRenderer);
   this->Slots.clear();
   this->Slots.resize(count);
+  this->Columns = grid.Columns;
+  this->Rows = grid.Rows;
+  this->DifferenceCell = difference;
+  const auto place = [&grid](vtkRenderer* renderer, int cell)
+  {
+    const int column = cell % grid.Columns, row = cell / grid.Columns;
+    renderer->SetViewport(static_cast<double>(column) / grid.Columns,
+      1 - static_cast<double>(row + 1) / grid.Rows, static_cast<double>(column + 1) / grid.Columns,
+      1 - static_cast<double>(row) / grid.Rows);
+  };
   for (std::size_t i = 0; i < count; ++i)
   {
     Slot& slot = this->Slots[i];
     slot.Renderer = vtkSmartPointer<vtkRenderer>::New();
-    slot.Renderer->SetViewport(
-      static_cast<double>(i) / count, 0, static_cast<double>(i + 1) / count, 1);
+    place(slot.Renderer, static_cast<int>(i));
     slot.Renderer->SetActiveCamera(this->Camera);
     slot.Renderer->SetBackground(this->Options.Scene.Background.data());
     slot.Label = vtkSmartPointer<vtkTextActor>::New();
@@ -353,8 +381,92 @@ void Inspector::MakeSlots(std::size_t count)
     slot.Renderer->AddActor2D(slot.Label);
     this->Window->AddRenderer(slot.Renderer);
   }
+  if (difference)
+  {
+    place(this->DifferenceRenderer, cells - 1);
+    this->DifferenceImage->VisibilityOff(); // until RefreshDifference
+    this->Window->AddRenderer(this->DifferenceRenderer);
+  }
   // The panels' aspect changes with their number.
   this->Slots.front().Renderer->ResetCameraClippingRange(this->Bounds);
+}
+
+void Inspector::RefreshDifference()
+{
+  if (!this->DifferenceCell || this->Dragging)
+  {
+    return;
+  }
+  // The two panels as rendered, without the texts drawn over them.
+  std::vector<vtkProp*> texts{ this->Hud, this->Help };
+  for (Slot& slot : this->Slots)
+  {
+    texts.push_back(slot.Label);
+  }
+  std::vector<int> visible;
+  for (vtkProp* text : texts)
+  {
+    visible.push_back(text->GetVisibility());
+    text->VisibilityOff();
+  }
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  for (std::size_t i = 0; i < texts.size(); ++i)
+  {
+    texts[i]->SetVisibility(visible[i]);
+  }
+  vtkImageData* window = grab->GetOutput();
+  const int windowWidth = window->GetDimensions()[0];
+  const auto* rgb = static_cast<const unsigned char*>(window->GetScalarPointer());
+  vtkRenderer* a = this->Slots[this->Plan.DifferenceA].Renderer;
+  vtkRenderer* b = this->Slots[this->Plan.DifferenceB].Renderer;
+  const int width = std::min(a->GetSize()[0], b->GetSize()[0]);
+  const int height = std::min(a->GetSize()[1], b->GetSize()[1]);
+  const auto cut = [&](vtkRenderer* renderer)
+  {
+    FloatImage panel{ width, height,
+      std::vector<float>(static_cast<size_t>(width) * height * 4, 1) };
+    const int* origin = renderer->GetOrigin(); // its lower left, in the window's pixels
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const unsigned char* p =
+          rgb + 3 * (static_cast<size_t>(origin[1] + y) * windowWidth + origin[0] + x);
+        for (int c = 0; c < 3; ++c)
+        {
+          panel.Rgba[4 * (static_cast<size_t>(y) * width + x) + c] = p[c] / 255.0f;
+        }
+      }
+    }
+    return panel;
+  };
+  const Difference difference = CompareImages(cut(a), cut(b));
+  // The comparison picture's own difference cell: label, heat map, colour bar.
+  const FloatImage cell =
+    ComposeComparison({ { &difference.Heat, this->Plan.DifferenceLabel } }, 1, &difference, 0);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(cell.Width, cell.Height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  const std::vector<std::uint8_t> topDown = Quantise<std::uint8_t>(cell, 255);
+  for (int y = 0; y < cell.Height; ++y) // VTK's images are bottom row first
+  {
+    std::copy_n(topDown.data() + static_cast<size_t>(cell.Height - 1 - y) * cell.Width * 3,
+      cell.Width * 3, out + static_cast<size_t>(y) * cell.Width * 3);
+  }
+  this->DifferenceImage->SetInputData(image);
+  this->DifferenceImage->VisibilityOn();
+  // Fit the picture into the cell.
+  this->DifferenceRenderer->ResetCamera();
+  const int* cellSize = this->DifferenceRenderer->GetSize();
+  this->DifferenceRenderer->GetActiveCamera()->SetParallelScale(0.5 *
+    std::max(static_cast<double>(cell.Height),
+      static_cast<double>(cell.Width) * cellSize[1] / std::max(cellSize[0], 1)));
+  this->Window->Render();
 }
 
 vtkActor* Inspector::GlyphsOf(Slot& slot, vtkPolyData* mesh)
@@ -411,7 +523,8 @@ void Inspector::Apply()
   std::vector<Panel> panels;
   if (this->CompareOn)
   {
-    panels = ParseModes(this->Options.Modes, base); // checked at start
+    this->Plan = PlanComparison(this->Options.Panels, base); // checked at start
+    panels = this->Plan.Panels;
   }
   else
   {
@@ -422,7 +535,8 @@ void Inspector::Apply()
     }
     panels.push_back({ base, "", "", Terms::All });
   }
-  this->MakeSlots(panels.size());
+  this->MakeSlots(panels.size(), this->CompareOn ? this->Plan.Columns : 0,
+    this->CompareOn && this->Plan.DifferenceA >= 0);
   this->Problem.clear();
   for (std::size_t i = 0; i < panels.size(); ++i)
   {
@@ -474,7 +588,7 @@ void Inspector::UpdateHud()
   const SceneOptions& s = this->Options.Scene;
   const Material m = s.EffectiveMaterial();
   std::ostringstream hud;
-  hud << (this->CompareOn ? "compare: " + this->Options.Modes
+  hud << (this->CompareOn ? "compare: " + this->Options.Panels.Modes
                           : std::string(ToString(s.ShadingRule)))
       << " shading | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong")
       << " | " << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << ToString(this->Lights) << "\n";
@@ -505,7 +619,8 @@ void Inspector::UpdateHud()
 void Inspector::ResetCamera()
 {
   const int* size = this->Window->GetSize();
-  const double aspect = static_cast<double>(size[0]) / this->Slots.size() / std::max(size[1], 1);
+  const double aspect = (static_cast<double>(size[0]) / this->Columns) /
+    (static_cast<double>(std::max(size[1], 1)) / this->Rows);
   ApplyCamera(this->Options.Scene, this->Bounds, aspect, this->Camera); // checked at start
   this->Slots.front().Renderer->ResetCameraClippingRange(this->Bounds);
 }
@@ -612,6 +727,7 @@ void Inspector::OnKey(const std::string& key)
   }
   this->Apply();
   this->Window->Render();
+  this->RefreshDifference();
 }
 
 void Inspector::Screenshot()

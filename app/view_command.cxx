@@ -14,22 +14,23 @@
 
 namespace shadelab
 {
-const char* const ViewKeysHelp = "Keys:\n"
-                                 "  0 1 2 3   shading none, flat, gouraud, phong\n"
-                                 "  b         Blinn-Phong / Phong reflection\n"
-                                 "  m M       next / previous material\n"
-                                 "  l         lights: point at camera, directional, spot\n"
-                                 "  + -       shininess up / down\n"
-                                 "  a d s     ambient, diffuse, specular term on / off\n"
-                                 "  w         normal weighting (computed once each)\n"
-                                 "  n         normal glyphs\n"
-                                 "  e         edges\n"
-                                 "  c         comparison layout (--modes), linked cameras\n"
-                                 "  r         reset the camera\n"
-                                 "  p         screenshot (its name is printed)\n"
-                                 "  h         this help\n"
-                                 "  q Esc     quit\n"
-                                 "Mouse: left rotate, middle pan, right or wheel zoom.";
+const char* const ViewKeysHelp =
+  "Keys:\n"
+  "  0 1 2 3   shading none, flat, gouraud, phong\n"
+  "  b         Blinn-Phong / Phong reflection\n"
+  "  m M       next / previous material\n"
+  "  l         lights: point at camera, directional, spot\n"
+  "  + -       shininess up / down\n"
+  "  a d s     ambient, diffuse, specular term on / off\n"
+  "  w         normal weighting (computed once each)\n"
+  "  n         normal glyphs\n"
+  "  e         edges\n"
+  "  c         comparison layout (as compare's options), linked cameras\n"
+  "  r         reset the camera\n"
+  "  p         screenshot (its name is printed)\n"
+  "  h         this help\n"
+  "  q Esc     quit\n"
+  "Mouse: left rotate, middle pan, right or wheel zoom.";
 
 CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
 {
@@ -46,7 +47,7 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
     ->transform(CLI::CheckedTransformer(rules))
     ->option_text("none|flat|gouraud|phong");
   view->add_flag("--compare", o.Compare, "Start in the comparison layout (key c)");
-  view->add_option("--modes", o.Modes, ModesHelp)->option_text("MODE,...");
+  AddComparisonOptions(*view, o.Panels);
   view
     ->add_option("--measure-drag", o.MeasureDrag,
       "Time N frames of a simulated mouse drag and N still frames, print them and exit "

@@ -6,6 +6,7 @@
 #ifndef shadelab_view_command_h
 #define shadelab_view_command_h
 
+#include "comparison_panels.h"
 #include "options.h"
 
 #include <optional>
@@ -23,7 +24,7 @@ struct ViewOptions
   SceneOptions Scene;
   std::optional<Shading> InteractiveShading; // the rule while the mouse drags
   bool Compare = false;                      // start in the comparison layout
-  std::string Modes = "flat,gouraud,phong";  // its panels, as compare's --modes
+  ComparisonOptions Panels;                  // its panels, as compare's
   int MeasureDrag = 0; // frames of a simulated drag to time, then exit (scripts/bench-view)
 };
 

@@ -92,11 +92,12 @@ int Run(const std::string& command)
 class Viewer
 {
 public:
-  explicit Viewer(const std::vector<std::string>& args, const std::string& mesh = "spot.obj")
-    : Title("shadelab - " + mesh)
+  explicit Viewer(const std::vector<std::string>& args,
+    const std::string& size = std::to_string(W) + "x" + std::to_string(H))
+    : Title("shadelab - spot.obj")
   {
-    std::vector<std::string> words{ SHADELAB_BINARY, "view", SharedMesh(mesh).string(), "--size",
-      std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" };
+    std::vector<std::string> words{ SHADELAB_BINARY, "view", SharedMesh("spot.obj").string(),
+      "--size", size, "--camera-position", "3.9,1.5,-2.2" };
     words.insert(words.end(), args.begin(), args.end());
     this->Pid = fork();
     if (this->Pid == 0)
@@ -403,4 +404,36 @@ TEST(View, QAndEscapeQuitWithZero)
     viewer.Keys({ key });
     EXPECT_EQ(viewer.Wait(), 0) << key << ": " << viewer.Stderr();
   }
+}
+
+TEST(View, DifferencePanelInTheComparisonLayout)
+{
+  // 1200x400 in four cells of 300x400: the difference cell's picture
+  // (label strip, 300x400 heat map, colour bar: 304x474) fits by height,
+  // its heat map between 30 and 355 from the top, 900+30 to 1200-30 across.
+  const auto hot = [](const Image& shot)
+  {
+    int count = 0;
+    for (int y = 30; y < 355; ++y)
+    {
+      for (int x = 930; x < 1170; ++x)
+      {
+        const float* p = &shot.Pixels[(static_cast<size_t>(y) * shot.Width + x) * 3];
+        count += p[0] > 60 && p[2] < 30; // red to yellow: the heat map's lower two thirds
+      }
+    }
+    return count;
+  };
+  { // one window at a time: xdotool finds them by their common title
+    Viewer same({ "--compare", "--modes", "phong,phong,flat", "--diff", "1,2" }, "1200x400");
+    ASSERT_TRUE(same.HasWindow()) << same.Stderr();
+    const Image identical = same.Screenshot();
+    ASSERT_EQ(identical.Width, 1200);
+    EXPECT_EQ(hot(identical), 0) << "phong against phong: all black";
+  }
+  Viewer other({ "--compare", "--modes", "phong,phong,flat", "--diff", "1,3" }, "1200x400");
+  ASSERT_TRUE(other.HasWindow()) << other.Stderr();
+  const Image differing = other.Screenshot();
+  ASSERT_EQ(differing.Width, 1200);
+  EXPECT_GT(hot(differing), 500) << "phong against flat";
 }

@@ -35,7 +35,6 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -128,6 +127,7 @@ private:
   void Apply();
   void MakeSlots(std::size_t count, int columns, bool difference);
   void RefreshDifference();
+  FloatImage GrabWindow();
   std::vector<Light> CameraLights(const SceneOptions& scene) const;
   void FollowCamera();
   void UpdateHud();
@@ -409,42 +409,29 @@ void Inspector::RefreshDifference()
     visible.push_back(text->GetVisibility());
     text->VisibilityOff();
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  for (std::size_t i = 0; i < texts.size(); ++i)
-  {
-    texts[i]->SetVisibility(visible[i]);
-  }
-  vtkImageData* window = grab->GetOutput();
-  const int windowWidth = window->GetDimensions()[0];
-  const auto* rgb = static_cast<const unsigned char*>(window->GetScalarPointer());
   vtkRenderer* a = this->Slots[this->Plan.DifferenceA].Renderer;
   vtkRenderer* b = this->Slots[this->Plan.DifferenceB].Renderer;
   const int width = std::min(a->GetSize()[0], b->GetSize()[0]);
   const int height = std::min(a->GetSize()[1], b->GetSize()[1]);
-  const auto cut = [&](vtkRenderer* renderer)
+  const FloatImage window = this->GrabWindow();
+  // GetOrigin: the panel's lower left in the window's pixels.
+  const auto crop = [&window, width, height](vtkRenderer* panel)
   {
-    FloatImage panel{ width, height,
-      std::vector<float>(static_cast<size_t>(width) * height * 4, 1) };
-    const int* origin = renderer->GetOrigin(); // its lower left, in the window's pixels
+    FloatImage cut{ width, height, {} };
     for (int y = 0; y < height; ++y)
     {
-      for (int x = 0; x < width; ++x)
-      {
-        const unsigned char* p =
-          rgb + 3 * (static_cast<size_t>(origin[1] + y) * windowWidth + origin[0] + x);
-        for (int c = 0; c < 3; ++c)
-        {
-          panel.Rgba[4 * (static_cast<size_t>(y) * width + x) + c] = p[c] / 255.0f;
-        }
-      }
+      const auto row = window.Rgba.begin() +
+        4 * (static_cast<size_t>(panel->GetOrigin()[1] + y) * window.Width + panel->GetOrigin()[0]);
+      cut.Rgba.insert(cut.Rgba.end(), row, row + 4 * width);
     }
-    return panel;
+    return cut;
   };
-  const Difference difference = CompareImages(cut(a), cut(b));
+  const FloatImage pictureA = crop(a), pictureB = crop(b);
+  for (std::size_t i = 0; i < texts.size(); ++i)
+  {
+    texts[i]->SetVisibility(visible[i]);
+  }
+  const Difference difference = CompareImages(pictureA, pictureB);
   // The comparison picture's own difference cell: label, heat map, colour bar.
   const FloatImage cell =
     ComposeComparison({ { &difference.Heat, this->Plan.DifferenceLabel } }, 1, &difference, 0);
@@ -730,6 +717,29 @@ void Inspector::OnKey(const std::string& key)
   this->RefreshDifference();
 }
 
+// The window's pixels as rendered now: 8-bit values as floats, which an
+// 8-bit file gets back exactly.
+FloatImage Inspector::GrabWindow()
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* window = grab->GetOutput();
+  const auto* rgb = static_cast<const unsigned char*>(window->GetScalarPointer());
+  FloatImage image{ window->GetDimensions()[0], window->GetDimensions()[1], {} };
+  image.Rgba.resize(static_cast<size_t>(image.Width) * image.Height * 4, 1);
+  for (size_t i = 0; i < static_cast<size_t>(image.Width) * image.Height; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      image.Rgba[4 * i + c] = rgb[3 * i + c] / 255.0f;
+    }
+  }
+  return image;
+}
+
 void Inspector::Screenshot()
 {
   const std::string stem = std::filesystem::path(this->Options.Scene.Mesh).stem().string();
@@ -740,26 +750,7 @@ void Inspector::Screenshot()
     std::snprintf(number, sizeof number, "%03d", n);
     path = "shadelab-" + stem + "-" + number + ".png";
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* pixels = grab->GetOutput();
-  int dims[3];
-  pixels->GetDimensions(dims);
-  FloatImage image;
-  image.Width = dims[0];
-  image.Height = dims[1];
-  auto* rgb = vtkUnsignedCharArray::SafeDownCast(pixels->GetPointData()->GetScalars());
-  image.Rgba.resize(static_cast<size_t>(dims[0]) * dims[1] * 4, 1.0f);
-  for (vtkIdType i = 0; i < static_cast<vtkIdType>(dims[0]) * dims[1]; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      image.Rgba[4 * i + c] = rgb->GetValue(3 * i + c) / 255.0f; // back exactly on quantising
-    }
-  }
+  const FloatImage image = this->GrabWindow();
   if (!this->Writer)
   {
     this->Writer = std::make_unique<ImageWriterProcess>();

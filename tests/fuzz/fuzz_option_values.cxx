@@ -1,7 +1,8 @@
 // libFuzzer target (issue 8): the command line's value parsers (colours,
-// points, lights, sizes, numbers, shards). The first byte picks the parser,
-// the rest is the text. They may only answer or throw
-// std::invalid_argument; what they accept must be in range.
+// points, lights, sizes, numbers, shards, comparison modes and --diff). The first byte picks the
+// parser, the rest is the text. They may only answer or throw std::invalid_argument; what they
+// accept must be in range.
+#include "comparison_panels.h"
 #include "options.h"
 
 #include <cmath>
@@ -30,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try
   {
-    switch (data[0] % 6)
+    switch (data[0] % 7)
     {
       case 0:
       {
@@ -78,6 +79,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           std::abort();
         }
         break;
+      case 6:
+      {
+        // "MODES" or "MODES|DIFF": every panel a mode's, the difference's two in range.
+        shadelab::ComparisonOptions o;
+        const auto bar = text.find('|');
+        o.Modes = text.substr(0, bar);
+        o.Difference = bar == std::string::npos ? "" : text.substr(bar + 1);
+        o.Components = data[0] & 0x80;
+        const shadelab::Comparison c = shadelab::PlanComparison(o, shadelab::SceneOptions{});
+        const int n = static_cast<int>(c.Panels.size());
+        if (c.Modes.empty() || n != static_cast<int>(c.Modes.size()) * (o.Components ? 4 : 1) ||
+          (!o.Difference.empty() &&
+            (c.DifferenceA < 0 || c.DifferenceA >= n || c.DifferenceB < 0 || c.DifferenceB >= n)))
+        {
+          std::abort();
+        }
+        break;
+      }
       default:
       {
         const auto [index, count] = shadelab::ParseShard(text);

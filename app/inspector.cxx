@@ -576,9 +576,9 @@ void Inspector::UpdateHud()
   const Material m = s.EffectiveMaterial();
   std::ostringstream hud;
   hud << (this->CompareOn ? "compare: " + this->Options.Panels.Modes
-                          : std::string(ToString(s.ShadingRule)))
-      << " shading | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong")
-      << " | " << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << ToString(this->Lights) << "\n";
+                          : std::string(ToString(s.ShadingRule)) + " shading")
+      << " | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") << " | "
+      << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << ToString(this->Lights) << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
                                                                  : s.Computed.Weighting.c_str())

@@ -11,21 +11,6 @@ namespace shadelab
 {
 namespace
 {
-std::vector<std::string> Split(const std::string& text, char separator)
-{
-  std::vector<std::string> parts;
-  std::string::size_type start = 0;
-  for (auto end = text.find(separator);; end = text.find(separator, start))
-  {
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string::npos)
-    {
-      return parts;
-    }
-    start = end + 1;
-  }
-}
-
 // The settings a mode may change: those whose values hold no ',' or ':'
 // (the separators). The camera, size and lights are the comparison's own,
 // shared by every panel.

@@ -10,22 +10,6 @@ namespace shadelab
 {
 namespace
 {
-std::vector<std::string> Split(const std::string& text, char separator)
-{
-  std::vector<std::string> parts;
-  std::string::size_type start = 0;
-  while (true)
-  {
-    const auto end = text.find(separator, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string::npos)
-    {
-      return parts;
-    }
-    start = end + 1;
-  }
-}
-
 std::array<double, 3> ParseTriple(const std::string& text, const char* what)
 {
   const auto parts = Split(text, ',');
@@ -76,6 +60,22 @@ CLI::Option* AddParsed(
     },
     help);
 }
+}
+
+std::vector<std::string> Split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts;
+  std::string::size_type start = 0;
+  while (true)
+  {
+    const auto end = text.find(separator, start);
+    parts.push_back(text.substr(start, end - start));
+    if (end == std::string::npos)
+    {
+      return parts;
+    }
+    start = end + 1;
+  }
 }
 
 double ParseNumber(const std::string& text)

@@ -104,6 +104,9 @@ void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
 /** Declares --weighting, --feature-angle and --orient on command. */
 void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 
+/** text's parts between the separators (one empty part for empty text). */
+std::vector<std::string> Split(const std::string& text, char separator);
+
 // Value parsers, exposed for tests. Each throws std::invalid_argument with a
 // message that names what is wrong with the text.
 Vec3 ParseVec3(const std::string& text);

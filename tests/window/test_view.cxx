@@ -395,6 +395,20 @@ TEST(View, DragTimeRuleHoldsWhileTheMouseIsDown)
   EXPECT_GT(Compare(released, flat).Pixels, 1000) << "phong again on release";
 }
 
+TEST(View, RResetsTheCamera)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image start = viewer.Screenshot();
+  viewer.Drag(W / 2, H / 2, 60, false);
+  const Image turned = viewer.Screenshot();
+  viewer.Keys({ "r" });
+  const Image reset = viewer.Screenshot();
+  ASSERT_EQ(reset.Width, W);
+  EXPECT_GT(Compare(start, turned).Pixels, 1000) << "the drag turned the camera";
+  EXPECT_EQ(Compare(start, reset, 0).Pixels, 0) << "r: the command line's camera again";
+}
+
 TEST(View, QAndEscapeQuitWithZero)
 {
   for (const std::string key : { "q", "Escape" })

@@ -5,6 +5,7 @@
 #include "image_writer_process.h"
 #include "mesh_cache.h"
 #include "metadata.h"
+#include "milliseconds.h"
 #include "progress_bar.h"
 #include "scene.h"
 #include "shader_dump.h"
@@ -64,8 +65,7 @@ public:
     const auto now = std::chrono::steady_clock::now();
     if (this->Enabled)
     {
-      std::cerr << "shadelab: " << phase << " "
-                << std::chrono::duration<double, std::milli>(now - this->Last).count() << " ms\n";
+      std::cerr << "shadelab: " << phase << " " << Milliseconds(this->Last, now) << " ms\n";
     }
     this->Last = now;
   }

@@ -4,6 +4,7 @@
 #include "headless_renderer.h"
 #include "image_writer_process.h"
 #include "mesh_input.h"
+#include "milliseconds.h"
 #include "output_path.h"
 #include "progress_bar.h"
 #include "scene.h"
@@ -47,12 +48,6 @@ CLI::App* AddBenchCommand(CLI::App& program, BenchOptions& o)
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double Milliseconds(Clock::time_point a, Clock::time_point b)
-{
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 // What each surface is seen with: a camera that shows all of it with room
 // to spare, and a point light above and to the left, so that the highlight

@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "headless_renderer.h"
 #include "mesh_input.h"
+#include "milliseconds.h"
 #include "options.h"
 #include "scene.h"
 #include "vtkShadelabOutputWindow.h"
@@ -70,12 +71,6 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
   light->SetConeAngle(180);
   light->SetPosition(renderer->GetActiveCamera()->GetPosition());
   renderer->AddLight(light);
-}
-
-double Milliseconds(
-  std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
-{
-  return std::chrono::duration<double, std::milli>(b - a).count();
 }
 }
 

@@ -12,6 +12,7 @@
 // configuration's runs, with the input mesh already in memory. Markdown to
 // stdout, progress to stderr.
 #include "mesh_input.h"
+#include "milliseconds.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
@@ -49,9 +50,10 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
 using Vec = shadelab::Vec3;
 using namespace shadelab::vec3;
+using shadelab::Clock;
+using shadelab::Milliseconds;
 
 const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
 
@@ -134,7 +136,7 @@ Measured Measure(int runs, const std::function<void()>& prepare, const std::func
     const double before = StatusMiB("VmRSS:");
     const auto start = Clock::now();
     run();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    ms.push_back(Milliseconds(start));
     peak = reset ? std::max(peak, StatusMiB("VmHWM:") - before)
                  : std::numeric_limits<double>::quiet_NaN();
   }

@@ -9,6 +9,7 @@
 #include "image_writer_process.h"
 #include "mesh_cache.h"
 #include "metadata.h"
+#include "milliseconds.h"
 #include "scene.h"
 #include "view_command.h"
 #include "vtkShadelabInteractorStyle.h"
@@ -61,8 +62,6 @@ namespace shadelab
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
 // The `l` key's cycle. Lights other than the given ones follow the camera,
 // as the lecture's light "at the viewpoint" does.
 enum class LightMode
@@ -247,8 +246,7 @@ int Inspector::Run(void* display)
     [](vtkObject*, unsigned long, void* self, void*)
     {
       auto* inspector = static_cast<Inspector*>(self);
-      inspector->FrameMs.push_back(
-        std::chrono::duration<double, std::milli>(Clock::now() - inspector->FrameStart).count());
+      inspector->FrameMs.push_back(Milliseconds(inspector->FrameStart));
       if (inspector->FrameMs.size() > 10)
       {
         inspector->FrameMs.pop_front();
@@ -782,7 +780,7 @@ int Inspector::MeasureDrag()
       this->Interactor->SetEventInformationFlipY(x + 2 * i, y);
       this->Interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
     }
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    const double ms = Milliseconds(start);
     this->Interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
     return ms / moves;
   };
@@ -793,8 +791,7 @@ int Inspector::MeasureDrag()
   {
     this->Window->Render();
   }
-  const double still =
-    std::chrono::duration<double, std::milli>(Clock::now() - start).count() / frames;
+  const double still = Milliseconds(start) / frames;
   const SceneOptions& s = this->Options.Scene;
   std::cout << "size " << size[0] << "x" << size[1] << ", " << this->Triangles << " triangles, "
             << ToString(s.ShadingRule) << ": dragging ("

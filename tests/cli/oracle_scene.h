@@ -649,6 +649,23 @@ struct Case
   Tolerance Tol = Standard;
 };
 
+/** How the case lists add a case: add(name, scene[, tolerance]). */
+inline auto CaseAdder(std::vector<Case>& cases)
+{
+  return [&cases](const std::string& name, const Scene& s, Tolerance tol = Standard) {
+    cases.push_back({ name, s, tol });
+  };
+}
+
+/** The lit rules, each case list's loop. */
+inline const std::vector<Shading> LitRules{ Shading::Flat, Shading::Gouraud, Shading::Phong };
+
+/** A rule's name for case names. */
+inline std::string RuleText(Shading rule)
+{
+  return RuleName(rule);
+}
+
 inline void PrintTo(const Case& c, std::ostream* os)
 {
   *os << c.Name;

@@ -17,11 +17,7 @@ namespace
 std::vector<Case> Cases()
 {
   std::vector<Case> cases;
-  const auto add = [&cases](const std::string& name, Scene s, Tolerance tol = Standard) {
-    cases.push_back({ name, s, tol });
-  };
-  const std::vector<Shading> rules{ Shading::Flat, Shading::Gouraud, Shading::Phong };
-  const auto rule = [](Shading r) { return std::string(RuleName(r)); };
+  const auto add = CaseAdder(cases);
 
   // `none`: one fixed colour, kd, exactly; with the background check this
   // also pins down the pixel mapping.
@@ -32,26 +28,26 @@ std::vector<Case> Cases()
   }
 
   // Each rule x each reflection model: a tilted bowl, one point light.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     for (Reflection m : { Reflection::BlinnPhong, Reflection::Phong })
     {
       Scene s;
       s.Rule = r;
       s.Model = m;
-      add(rule(r) + "_" + ModelName(m), s);
+      add(RuleText(r) + "_" + ModelName(m), s);
     }
   }
 
   // Each light kind (point is above); a spot whose cone holds the whole mesh.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Lights = { Directional({ -0.3, -0.2, -1 }) };
-    add("directional_" + rule(r), s);
+    add("directional_" + RuleText(r), s);
     s.Lights = { Spot({ 0.2, 0.1, 3 }, { -0.05, 0, -1 }, 40, 3) };
-    add("spot_" + rule(r), s);
+    add("spot_" + RuleText(r), s);
   }
 
   // Several coloured lights at once, of every kind; their sum exceeds 1 in
@@ -61,13 +57,13 @@ std::vector<Case> Cases()
     Directional({ 0.4, -0.3, -1 }, { 0.1, 0.9, 0.2 }),
     Spot({ 0.5, -0.5, 2 }, { 0, 0, -1 }, 35, 2, { 0.2, 0.3, 1 }),
     Point({ 0.9, 0.9, 0.8 }, { 0.6, 0.6, 0.6 }) };
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s = coloured;
     s.Rule = r;
-    add("coloured_lights_" + rule(r), s);
+    add("coloured_lights_" + RuleText(r), s);
     s.EightBit = true;
-    add("coloured_lights_" + rule(r) + "_png", s);
+    add("coloured_lights_" + RuleText(r) + "_png", s);
   }
   {
     Scene s;
@@ -80,14 +76,14 @@ std::vector<Case> Cases()
 
   // A spot cone whose boundary crosses the mesh: pixels inside and outside,
   // a hard edge (exponent 0) and a soft fall-off.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     for (double exponent : { 0.0, 4.0 })
     {
       Scene s;
       s.Rule = r;
       s.Lights = { Spot({ 0.1, -0.2, 2 }, { 0, 0, -1 }, 15, exponent) };
-      add("spot_cone_" + std::string(exponent == 0 ? "hard_" : "soft_") + rule(r), s);
+      add("spot_cone_" + std::string(exponent == 0 ? "hard_" : "soft_") + RuleText(r), s);
     }
   }
 
@@ -105,7 +101,7 @@ std::vector<Case> Cases()
         s.Model = m;
         s.Surface = TestMaterial(ns);
         s.Lights = { Point({ 0.1, 0.2, 3 }) };
-        add(std::string(ns == 0 ? "ns0_" : "ns0p001_") + rule(r) + "_" + ModelName(m), s);
+        add(std::string(ns == 0 ? "ns0_" : "ns0p001_") + RuleText(r) + "_" + ModelName(m), s);
       }
     }
   }
@@ -114,7 +110,7 @@ std::vector<Case> Cases()
   // the centre, under a directional light mirrored about the normal at
   // (-0.25, -0.125) (so that H and R meet N there): the highlight's 1%
   // contour is some 60 (Blinn) and 30 (Phong) pixels across.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     for (Reflection m : { Reflection::BlinnPhong, Reflection::Phong })
     {
@@ -125,12 +121,12 @@ std::vector<Case> Cases()
       s.Geometry.Bump = -2e-3;
       const Vec3 n = GridNormal(s.Geometry, -0.25, -0.125);
       s.Lights = { Directional(Vec3{ 0, 0, 1 } - 2 * n[2] * n) }; // -(2(N.V)N - V)
-      add("ns1e6_" + rule(r) + "_" + ModelName(m), s, HighExponent);
+      add("ns1e6_" + RuleText(r) + "_" + ModelName(m), s, HighExponent);
     }
   }
 
   // Grazing light: N.L = 1e-4 on a flat plane with the face normal.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     for (Reflection m : { Reflection::BlinnPhong, Reflection::Phong })
     {
@@ -140,40 +136,40 @@ std::vector<Case> Cases()
       s.Surface = TestMaterial(2);
       s.Geometry.SlopeX = s.Geometry.SlopeY = s.Geometry.Bump = 0;
       s.Lights = { Directional({ -std::sqrt(1 - 1e-8), 0, -1e-4 }) };
-      add("grazing_" + rule(r) + "_" + ModelName(m), s);
+      add("grazing_" + RuleText(r) + "_" + ModelName(m), s);
     }
   }
 
   // Lights in the surface's plane (N.L = 0 exactly): ambient only, no
   // specular, for a point and a directional light.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Geometry.SlopeX = s.Geometry.SlopeY = s.Geometry.Bump = 0;
     s.Lights = { Point({ 1.5, 0.25, 0 }), Directional({ -1, 0.5, 0 }) };
-    add("light_in_plane_" + rule(r), s);
+    add("light_in_plane_" + RuleText(r), s);
   }
 
   // The same on the tilted plane, whose normal (-0.25, 0.125, 1) is not an
   // axis: N.L = 0 is no longer exact in floating point.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Geometry.Bump = 0;
     s.Lights = { Point({ 1.5, 0.25, 0.25 * 1.5 - 0.125 * 0.25 }), Directional({ -1, 0, -0.25 }) };
-    add("light_in_tilted_plane_" + rule(r), s);
+    add("light_in_tilted_plane_" + RuleText(r), s);
   }
 
   // A point light exactly at a grid vertex, (0.5, 0.5) on the tilted bowl:
   // it adds nothing there (no direction), and lights the bowl around it.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Lights = { Point({ 0.5, 0.5, 0.25 * 0.5 - 0.125 * 0.5 }) };
-    add("light_at_vertex_" + rule(r), s);
+    add("light_at_vertex_" + RuleText(r), s);
   }
 
   // Zero-length vertex normals: one lone vertex, a corner, and the four
@@ -182,11 +178,11 @@ std::vector<Case> Cases()
   // vertices; flat: unaffected).
   Scene zeroNormals;
   zeroNormals.Geometry.ZeroNormals = { { 1, 2 }, { 0, 0 }, { 3, 3 }, { 4, 3 }, { 3, 4 }, { 4, 4 } };
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s = zeroNormals;
     s.Rule = r;
-    add("zero_normals_" + rule(r), s, r == Shading::Phong ? DerivativeNormal : Standard);
+    add("zero_normals_" + RuleText(r), s, r == Shading::Phong ? DerivativeNormal : Standard);
   }
   // The same, the camera ten times farther away: where the geometric normal
   // is used it must not lose accuracy with the distance (orthographic: the
@@ -199,27 +195,27 @@ std::vector<Case> Cases()
 
   // Back faces: the same bowl wound clockwise with normals pointing away;
   // two-sided lighting lights them as the front.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Geometry.BackFaces = true;
-    add("back_faces_" + rule(r), s);
+    add("back_faces_" + RuleText(r), s);
   }
 
   // The coloured scene at 1e-6 and 1e6 and offset by 1e5 from the origin
   // lights as at unit scale (the oracle's answers agree to double precision).
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s = coloured;
     s.Rule = r;
     s.Scale = 1e-6;
-    add("scale_1em6_" + rule(r), s);
+    add("scale_1em6_" + RuleText(r), s);
     s.Scale = 1e6;
-    add("scale_1e6_" + rule(r), s);
+    add("scale_1e6_" + RuleText(r), s);
     s.Scale = 1;
     s.Offset = { 1e5, 1e5, 1e5 };
-    add("offset_1e5_" + rule(r), s);
+    add("offset_1e5_" + RuleText(r), s);
   }
   return cases;
 }

@@ -34,17 +34,13 @@ namespace
 std::vector<Case> Cases()
 {
   std::vector<Case> cases;
-  const auto add = [&cases](const std::string& name, Scene s, Tolerance tol = Standard) {
-    cases.push_back({ name, s, tol });
-  };
-  const std::vector<Shading> rules{ Shading::Flat, Shading::Gouraud, Shading::Phong };
-  const auto rule = [](Shading r) { return std::string(RuleName(r)); };
+  const auto add = CaseAdder(cases);
 
   // Slivers of aspect ratio 1e6, faces of no area (repeated vertices,
   // collinear ones) and nearly coincident vertices (1e-12 apart) in a plane, normals computed by
   // shadelab with each weighting: every vertex normal must come out as the plane's, so the picture
   // is the plane's (the oracle lights it with the plane's normal).
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     for (const char* weighting : { "uniform", "area", "angle", "max", "loop" })
     {
@@ -59,39 +55,39 @@ std::vector<Case> Cases()
       s.Geometry.Degenerate = true;
       s.Normals = "compute";
       s.Weighting = weighting;
-      add("slivers_degenerate_" + rule(r) + "_" + weighting, s);
+      add("slivers_degenerate_" + RuleText(r) + "_" + weighting, s);
     }
   }
 
   // The bowl at 1e-8 and 1e8 and offset by 1e6 lights as at unit scale.
   // The grid's coordinates are multiples of 1/16, so float holds them at
   // 1e6 (ulp 1/16) and at 1e8 (multiples of 6.25e6, ulp 8) exactly.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Scale = 1e-8;
-    add("scale_1em8_" + rule(r), s);
+    add("scale_1em8_" + RuleText(r), s);
     s.Scale = 1e8;
-    add("scale_1e8_" + rule(r), s);
+    add("scale_1e8_" + RuleText(r), s);
     s.Scale = 1;
     s.Offset = { 1e6, -1e6, 1e6 };
-    add("offset_1e6_" + rule(r), s);
+    add("offset_1e6_" + RuleText(r), s);
   }
 
   // Light within 1e-6 of the surface's plane: a directional light with
   // N.L = 1e-6, and a point light 1e-6 above the plane beside the mesh. The
   // lecture's case N.L <= 0 decides (the oracle takes N.L <= 1e-5 as 0, so
   // that float rounding of N.L cannot flip it); ambient only, no NaN.
-  for (Shading r : rules)
+  for (Shading r : LitRules)
   {
     Scene s;
     s.Rule = r;
     s.Geometry.SlopeX = s.Geometry.SlopeY = s.Geometry.Bump = 0;
     s.Lights = { Directional({ -std::sqrt(1 - 1e-12), 0, -1e-6 }) };
-    add("grazing_directional_1em6_" + rule(r), s);
+    add("grazing_directional_1em6_" + RuleText(r), s);
     s.Lights = { Point({ -3, 0.5, 1e-6 }) };
-    add("grazing_point_1em6_" + rule(r), s);
+    add("grazing_point_1em6_" + RuleText(r), s);
   }
 
   // Shininess from 1e-3 to 1e6, per fragment (phong) with both reflection

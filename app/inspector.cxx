@@ -150,7 +150,8 @@ private:
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderWindowInteractor> Interactor;
   vtkNew<vtkShadelabInteractorStyle> Style;
-  vtkNew<vtkCamera> Camera; // every panel's: linked cameras
+  vtkNew<vtkCamera> Camera;     // every panel's: linked cameras
+  vtkNew<vtkRenderer> Backdrop; // the whole window, beneath the panels
   vtkNew<vtkRenderer> Overlay;
   vtkNew<vtkTextActor> Hud;
   vtkNew<vtkTextActor> Help;
@@ -201,6 +202,10 @@ int Inspector::Run(void* display)
   this->Window->SetWindowName(
     ("shadelab - " + std::filesystem::path(scene.Mesh).filename().string()).c_str());
   this->Window->SetNumberOfLayers(2);
+  // Cleared first each frame: a grid's empty cells would keep stale pixels.
+  this->Backdrop->SetBackground(scene.Background.data());
+  this->Backdrop->InteractiveOff();
+  this->Window->AddRenderer(this->Backdrop);
   this->Overlay->SetLayer(1);
   this->Overlay->InteractiveOff(); // the mouse goes to the panel beneath
   this->Window->AddRenderer(this->Overlay);
@@ -381,7 +386,8 @@ void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
   }
   if (difference)
   {
-    place(this->DifferenceRenderer, cells - 1);
+    // The grid's last cell, bottom right: away from the HUD at the bottom left.
+    place(this->DifferenceRenderer, grid.Columns * grid.Rows - 1);
     this->DifferenceImage->VisibilityOff(); // until RefreshDifference
     this->Window->AddRenderer(this->DifferenceRenderer);
   }

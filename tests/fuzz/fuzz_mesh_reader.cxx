@@ -27,7 +27,8 @@ namespace
 // One file per fuzzing process, rewritten for every input.
 const std::string& InputPath()
 {
-  static const std::string path = "/tmp/shadelab-fuzz-" + std::to_string(getpid()) + SHADELAB_FUZZ_EXTENSION;
+  static const std::string path =
+    "/tmp/shadelab-fuzz-" + std::to_string(getpid()) + SHADELAB_FUZZ_EXTENSION;
   return path;
 }
 }

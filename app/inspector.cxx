@@ -18,6 +18,7 @@
 
 #include <vtkActor.h>
 #include <vtkAutoInit.h>
+#include <vtkBoundingBox.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -333,12 +334,13 @@ void Inspector::FollowCamera()
   {
     return;
   }
+  const std::vector<Light> lights = CameraLights(this->Options.Scene);
   for (Slot& slot : this->Slots)
   {
     const auto shown = slot.Scenes.find(slot.Shown);
     if (shown != slot.Scenes.end())
     {
-      shown->second.Shading->SetLightPlacement(CameraLights(this->Options.Scene));
+      shown->second.Shading->SetLightPlacement(lights);
     }
   }
 }
@@ -460,6 +462,20 @@ void Inspector::RefreshDifference()
   this->Window->Render();
 }
 
+// An unlit actor of lines' output, added to renderer.
+vtkSmartPointer<vtkActor> AddLines(vtkRenderer* renderer, vtkAlgorithm* lines, const Rgb& colour)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(lines->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  renderer->AddActor(actor);
+  return actor;
+}
+
 vtkActor* Inspector::GlyphsOf(Slot& slot, vtkPolyData* mesh)
 {
   auto& actor = slot.Glyphs[mesh];
@@ -468,22 +484,13 @@ vtkActor* Inspector::GlyphsOf(Slot& slot, vtkPolyData* mesh)
     vtkNew<vtkHedgeHog> hedgehog;
     hedgehog->SetInputData(mesh);
     hedgehog->SetVectorModeToUseNormal();
-    const double diagonal = std::sqrt(std::pow(this->Bounds[1] - this->Bounds[0], 2) +
-      std::pow(this->Bounds[3] - this->Bounds[2], 2) +
-      std::pow(this->Bounds[5] - this->Bounds[4], 2));
     // About twice the vertices' spacing (n points spread over the mesh's
     // extent), so that neighbours' glyphs barely overlap.
+    const double diagonal = vtkBoundingBox(this->Bounds).GetDiagonalLength();
     const double spacing =
       diagonal / std::sqrt(static_cast<double>(std::max<vtkIdType>(mesh->GetNumberOfPoints(), 1)));
     hedgehog->SetScaleFactor(std::clamp(2 * spacing, 0.004 * diagonal, 0.05 * diagonal));
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(hedgehog->GetOutputPort());
-    mapper->ScalarVisibilityOff();
-    actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    actor->GetProperty()->SetColor(0.2, 0.9, 1.0);
-    slot.Renderer->AddActor(actor);
+    actor = AddLines(slot.Renderer, hedgehog, { 0.2, 0.9, 1.0 });
   }
   return actor;
 }
@@ -495,14 +502,7 @@ vtkActor* Inspector::EdgesOf(Slot& slot, vtkPolyData* mesh)
   {
     vtkNew<vtkExtractEdges> edges;
     edges->SetInputData(mesh);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(edges->GetOutputPort());
-    mapper->ScalarVisibilityOff();
-    actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    actor->GetProperty()->SetColor(0.05, 0.05, 0.05);
-    slot.Renderer->AddActor(actor);
+    actor = AddLines(slot.Renderer, edges, { 0.05, 0.05, 0.05 });
   }
   return actor;
 }
@@ -548,10 +548,6 @@ void Inspector::Apply()
     {
       built.Actor->SetVisibility(other == key);
     }
-    // Glyphs and edges of the vertex normals that gouraud and phong use.
-    SceneOptions lit = scene;
-    lit.ShadingRule = Shading::Phong;
-    vtkPolyData* normals = this->Meshes.Get(lit).Mesh;
     for (auto* extras : { &slot.Glyphs, &slot.Edges })
     {
       for (auto& [mesh, actor] : *extras)
@@ -559,13 +555,19 @@ void Inspector::Apply()
         actor->VisibilityOff();
       }
     }
-    if (normals && this->GlyphsOn)
+    if (this->GlyphsOn)
     {
-      this->GlyphsOf(slot, normals)->VisibilityOn();
+      // The vertex normals that gouraud and phong use, whatever this rule.
+      SceneOptions lit = scene;
+      lit.ShadingRule = Shading::Phong;
+      if (vtkPolyData* normals = this->Meshes.Get(lit).Mesh)
+      {
+        this->GlyphsOf(slot, normals)->VisibilityOn();
+      }
     }
-    if (normals && this->EdgesOn)
+    if (this->EdgesOn)
     {
-      this->EdgesOf(slot, normals)->VisibilityOn();
+      this->EdgesOf(slot, loaded.Mesh)->VisibilityOn();
     }
     slot.Label->SetInput(panels[i].Label.c_str());
     slot.Label->SetVisibility(this->CompareOn);

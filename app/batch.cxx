@@ -204,9 +204,14 @@ int RenderShots(
     }
     const FloatImage image = renderer.Render();
     timer.Lap("frame");
+    if (!renderer.GetError().empty())
+    {
+      fail(shot, "render", renderer.GetError());
+      continue;
+    }
     if (dump && !dump->GetError().empty())
     {
-      fail(shot, o.DumpShaders, dump->GetError());
+      fail(shot, dump->GetErrorFile(), dump->GetError());
       continue;
     }
     const auto metadata = DescribePicture(

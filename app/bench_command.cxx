@@ -5,6 +5,7 @@
 #include "image_writer_process.h"
 #include "mesh_input.h"
 #include "milliseconds.h"
+#include "output_file.h"
 #include "output_path.h"
 #include "progress_bar.h"
 #include "scene.h"
@@ -42,7 +43,7 @@ CLI::App* AddBenchCommand(CLI::App& program, BenchOptions& o)
   bench->add_option("--frames", o.Frames, "Timed frames per measurement, after the first")
     ->check(CLI::Range(1, 1000))
     ->capture_default_str();
-  bench->add_flag("-q,--quiet", o.Quiet, "No progress bar");
+  bench->add_flag("-q,--quiet", o.Quiet, "No warnings and no progress bar");
   return bench;
 }
 
@@ -329,12 +330,13 @@ int RunBench(const BenchOptions& o, const std::string& commandLine)
             NormalsSettings settings;
             settings.Weighting = c.Weighting;
             const auto t0 = Clock::now();
-            computed = ComputeNormals(tessellation, settings).Mesh;
+            const ComputedNormals normals = ComputeNormals(tessellation, settings);
             ms = Milliseconds(t0, Clock::now());
-            if (!computed)
+            if (!normals.Mesh)
             {
-              return ReportError(row.Surface, FirstVtkError("the normals failed"));
+              return ReportError(row.Surface, "normals: " + normals.Error);
             }
+            computed = normals.Mesh;
           }
           mesh = computed;
           row.NormalsMs = ms;
@@ -372,17 +374,28 @@ int RunBench(const BenchOptions& o, const std::string& commandLine)
     return ReportError("chart", chart.Error);
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  // Each output is tried and each failure reported: one that fits may
+  // follow one that does not.
   const std::filesystem::path out(o.Out);
-  for (const std::string& problem : { WriteSpeedAccuracyCsv(csv, rows),
-         WriteSpeedAccuracyJson((out / "speed_accuracy.json").string(), rows),
-         WriteTextFile((out / "speed_accuracy.md").string(), Summary(rows, commandLine, seconds)),
-         writer.Write((out / "speed_accuracy.png").string(), chart.Image, PixelType::UInt8,
-           { { "ImageDescription", "shadelab bench: RMSE against ms/frame" } }) })
+  const std::string json = (out / "speed_accuracy.json").string();
+  const std::string md = (out / "speed_accuracy.md").string();
+  const std::string png = (out / "speed_accuracy.png").string();
+  int status = 0;
+  for (const auto& [path, problem] : { std::pair{ csv, WriteSpeedAccuracyCsv(csv, rows) },
+         std::pair{ json, WriteSpeedAccuracyJson(json, rows) },
+         std::pair{ md, WriteFile(md, Summary(rows, commandLine, seconds)) },
+         std::pair{ png,
+           writer.Write(png, chart.Image, PixelType::UInt8,
+             { { "ImageDescription", "shadelab bench: RMSE against ms/frame" } }) } })
   {
     if (!problem.empty())
     {
-      return ReportError(o.Out, problem);
+      status = ReportError(path, problem);
     }
+  }
+  if (status != 0)
+  {
+    return status;
   }
   std::printf("%s: %zu measurements in %.0f s; speed_accuracy.{csv,json,png,md}\n", o.Out.c_str(),
     rows.size(), seconds);

@@ -37,6 +37,7 @@ CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
     ->required()
     ->option_text("OUT");
   AddComparisonOptions(*compare, o.Panels);
+  compare->add_flag("-q,--quiet", o.Quiet, "No warnings");
   compare->footer(CameraHelp);
   return compare;
 }
@@ -90,6 +91,10 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
     }
     scenes[key] = scene;
     pictures.push_back(renderer.Render());
+    if (!renderer.GetError().empty())
+    {
+      return ReportError("render", renderer.GetError());
+    }
   }
 
   std::vector<ComparisonCell> cells;

@@ -21,6 +21,7 @@ struct CompareOptions
   SceneOptions Scene; // every panel's, before its mode's changes; Size is a panel's
   std::string Output;
   ComparisonOptions Panels;
+  bool Quiet = false; // no warnings
 };
 
 /** Declares the compare command and its options on the program. */

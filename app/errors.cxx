@@ -1,22 +1,36 @@
 #include "errors.h"
 
-#include "vtkShadelabOutputWindow.h"
-
-#include <vtkOutputWindow.h>
-
 #include <iostream>
+#include <set>
+#include <utility>
 
 namespace shadelab
 {
+namespace
+{
+bool Silenced = false;
+}
+
 int ReportError(const std::string& input, const std::string& problem)
 {
   std::cerr << "shadelab: error: " << input << ": " << problem << std::endl;
   return ExitFailure;
 }
 
-std::string FirstVtkError(const char* fallback)
+void ReportWarnings(const std::string& input, const std::vector<std::string>& warnings)
 {
-  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-  return window && !window->GetFirstError().empty() ? window->GetFirstError() : fallback;
+  static std::set<std::pair<std::string, std::string>> reported;
+  for (const std::string& warning : warnings)
+  {
+    if (!Silenced && reported.emplace(input, warning).second)
+    {
+      std::cerr << "shadelab: warning: " << input << ": " << warning << std::endl;
+    }
+  }
+}
+
+void SilenceWarnings()
+{
+  Silenced = true;
 }
 }

@@ -1,8 +1,10 @@
-// The one-line error of the contract: "shadelab: error: INPUT: PROBLEM".
+// The one-line messages of the contract: "shadelab: error: INPUT: PROBLEM"
+// and "shadelab: warning: INPUT: PROBLEM".
 #ifndef shadelab_errors_h
 #define shadelab_errors_h
 
 #include <string>
+#include <vector>
 
 namespace shadelab
 {
@@ -13,8 +15,14 @@ constexpr int ExitUsage = 2;
 /** Prints the error line on stderr and returns ExitFailure. */
 int ReportError(const std::string& input, const std::string& problem);
 
-/** The first error VTK reported (through vtkShadelabOutputWindow), or `fallback`. */
-std::string FirstVtkError(const char* fallback);
+/**
+ * Prints each warning about input on stderr, one line each, once per run
+ * (a mesh read again for other normals warns once), unless silenced.
+ */
+void ReportWarnings(const std::string& input, const std::vector<std::string>& warnings);
+
+/** --quiet: no warnings from here on. */
+void SilenceWarnings();
 }
 
 #endif

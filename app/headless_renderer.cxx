@@ -1,11 +1,11 @@
 #include "headless_renderer.h"
 
+#include "errors.h"
 #include "vtkShadelabFloatCapturePass.h"
 #include "vtkShadelabOSMesaRenderWindow.h"
 #include "vtkShadelabOutputWindow.h"
 
 #include <vtkAutoInit.h>
-#include <vtkOutputWindow.h>
 #include <vtkProp.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
@@ -36,13 +36,11 @@ std::string HeadlessRenderer::Start(int width, int height)
   vtkShadelabOSMesaRenderWindow::ChooseRasterizerThreads();
   this->Window->SetMultiSamples(0); // exact, repeatable pixels
   this->Window->SetSize(width, height);
+  const MessageScope messages;
   this->Window->Initialize();
   if (!this->Window->GetContextReady())
   {
-    auto* output = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-    return "headless OpenGL: " +
-      (output && !output->GetFirstError().empty() ? output->GetFirstError()
-                                                  : std::string("no OSMesa context"));
+    return "headless OpenGL: " + messages.ErrorOr("no OSMesa context");
   }
   return {};
 }
@@ -59,7 +57,10 @@ void HeadlessRenderer::Release(vtkProp* prop)
 
 FloatImage HeadlessRenderer::Render()
 {
+  const MessageScope messages;
   this->Window->Render();
+  this->Error = messages.FirstError();
+  ReportWarnings("render", messages.Warnings());
   return { this->Capture->GetWidth(), this->Capture->GetHeight(), this->Capture->GetPixels() };
 }
 }

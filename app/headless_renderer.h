@@ -34,13 +34,19 @@ public:
   /** Frees prop's OpenGL resources (buffers; the compiled programs stay for others). */
   void Release(vtkProp* prop);
 
-  /** Renders one frame and returns it. */
+  /**
+   * Renders one frame and returns it. VTK's first error during the frame (a
+   * shader that does not compile, say) is then GetError(), else "";
+   * its warnings are reported.
+   */
   FloatImage Render();
+  const std::string& GetError() const { return this->Error; }
 
 private:
   vtkSmartPointer<vtkShadelabOSMesaRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkShadelabFloatCapturePass> Capture;
+  std::string Error;
 };
 }
 

@@ -1,14 +1,12 @@
 #include "image_output.h"
 
-#include "output_path.h"
+#include "output_file.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <memory>
 
@@ -41,11 +39,13 @@ std::string OneLine(std::string s)
   return s;
 }
 
-// Creates the writer for path's format and opens it on the temporary name.
-std::unique_ptr<OIIO::ImageOutput> Open(
-  const std::string& path, const OIIO::ImageSpec& spec, std::string& error)
+// The writer for path's format, encoding into memory: OpenImageIO's PNG and
+// JPEG writers do not report a failed write to a file of their own, so the
+// bytes are written by OutputFile, which checks every step.
+std::unique_ptr<OIIO::ImageOutput> Open(const std::string& path, const OIIO::ImageSpec& spec,
+  OIIO::Filesystem::IOProxy& memory, std::string& error)
 {
-  auto out = OIIO::ImageOutput::create(path);
+  auto out = OIIO::ImageOutput::create(path, &memory);
   if (!out)
   {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -54,23 +54,18 @@ std::unique_ptr<OIIO::ImageOutput> Open(
       : "no image format for \"" + ext + "\" (OpenImageIO: " + OneLine(OIIO::geterror()) + ")";
     return nullptr;
   }
-  const std::string temporary = TemporaryName(path);
-  if (!out->open(temporary, spec))
+  if (!out->supports("ioproxy"))
   {
-    const int saved = errno;
-    std::remove(temporary.c_str());
-    error = CheckWritableFolder(path);
-    if (error.empty())
-    {
-      const std::string why = OneLine(out->geterror());
-      error = "cannot write: " + (why.empty() ? std::string(std::strerror(saved)) : why);
-    }
+    error = std::string("the ") + out->format_name() + " writer cannot encode into memory";
+    return nullptr;
+  }
+  if (!out->open(path, spec))
+  {
+    error = "cannot encode: " + OneLine(out->geterror());
     return nullptr;
   }
   if (out->spec().format != spec.format)
   {
-    out->close();
-    std::remove(temporary.c_str());
     error = std::string("the ") + out->format_name() + " format cannot store " +
       spec.format.c_str() + " pixels (float output: .exr, or .tif with --pixel-type float)";
     return nullptr;
@@ -89,8 +84,10 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
   {
     spec.attribute(key, value);
   }
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
   std::string error;
-  auto out = Open(path, spec, error);
+  auto out = Open(path, spec, memory, error);
   if (!out)
   {
     return error;
@@ -111,19 +108,11 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
         OIIO::TypeDesc::UINT8, rgb8 ? rgb8->data() : Quantise<uint8_t>(image, 255).data());
       break;
   }
-  const std::string temporary = TemporaryName(path);
   if (!written || !out->close())
   {
-    error = "cannot write: " + OneLine(out->geterror());
-    std::remove(temporary.c_str());
-    return error;
+    return "cannot encode: " + OneLine(out->geterror());
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    error = std::string("cannot rename the finished image into place: ") + std::strerror(errno);
-    std::remove(temporary.c_str());
-    return error;
-  }
-  return {};
+  return WriteFile(
+    path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 }

@@ -1,7 +1,7 @@
 // Pictures out through OpenImageIO: the format from the file's extension,
-// written to a temporary name in the same folder and renamed, so a reader of
-// OUT never sees a partial file. Runs in the shadelab-image-writer process
-// (image_writer_process.h), away from the renderer.
+// encoded in memory and written by OutputFile (output_file.h), so a reader
+// of OUT never sees a partial file. Runs in the shadelab-image-writer
+// process (image_writer_process.h), away from the renderer.
 #ifndef shadelab_image_output_h
 #define shadelab_image_output_h
 

@@ -17,6 +17,8 @@ int main()
   // it has (whole, renamed into place) and ends when shadelab closes the pipe.
   std::signal(SIGINT, SIG_IGN);
   std::signal(SIGTERM, SIG_IGN);
+  // A file-size limit (ulimit -f) makes the write fail with EFBIG, reported.
+  std::signal(SIGXFSZ, SIG_IGN);
   // Until shadelab closes the pipe (or sends something malformed).
   shadelab::ImageRequest request;
   while (shadelab::ReceiveImageRequest(STDIN_FILENO, request))

@@ -25,8 +25,10 @@ int main(int argc, char** argv)
   vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   // A writer process that died must not take shadelab with it through
-  // SIGPIPE: the write fails and the error is reported instead.
+  // SIGPIPE, nor a file-size limit (ulimit -f) through SIGXFSZ: the write
+  // fails (EPIPE, EFBIG) and the error is reported instead.
   std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
 
   CLI::App program("shadelab: triangle meshes under the classic illumination model "
                    "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
@@ -72,6 +74,10 @@ int main(int argc, char** argv)
     return shadelab::ExitUsage;
   }
 
+  if (render.Quiet || compare.Quiet || normals.Quiet || bench.Quiet)
+  {
+    shadelab::SilenceWarnings();
+  }
   const std::string commandLine = shadelab::QuoteCommandLine(argc, argv);
   if (renderCommand->parsed())
   {

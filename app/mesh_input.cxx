@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
+#include "vtkShadelabOutputWindow.h"
 
 #include <vtkCleanPolyData.h>
 #include <vtkDoubleArray.h>
@@ -22,11 +23,19 @@ ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& setting
   normals->SetSplitting(settings.FeatureAngle.has_value());
   normals->SetFeatureAngle(settings.FeatureAngle.value_or(0));
   normals->SetConsistency(settings.Orient);
-  if (!normals->GetExecutive()->Update())
+  const MessageScope messages;
+  ComputedNormals result;
+  if (normals->GetExecutive()->Update())
   {
-    return {};
+    result.Mesh = normals->GetOutput();
+    result.DuplicatedFaces = normals->GetNumberOfDuplicatedFaces();
   }
-  return { normals->GetOutput(), normals->GetNumberOfDuplicatedFaces() };
+  else
+  {
+    result.Error = messages.ErrorOr("cannot be computed");
+  }
+  result.Warnings = messages.Warnings();
+  return result;
 }
 
 vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
@@ -58,10 +67,15 @@ LoadedMesh LoadMesh(const SceneOptions& options)
   // Computed normals are smooth across an OBJ's vn seams only if the
   // vertices are not split by the file's normals in the first place.
   reader->SetReadNormals(options.Normals != NormalsMode::Compute);
-  if (!reader->GetExecutive()->Update())
   {
-    result.Error = FirstVtkError("cannot be read");
-    return result;
+    const MessageScope messages;
+    const bool read = reader->GetExecutive()->Update();
+    ReportWarnings(options.Mesh, messages.Warnings());
+    if (!read)
+    {
+      result.Error = messages.ErrorOr("cannot be read");
+      return result;
+    }
   }
   vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
   result.NormalsFromFile = mesh->GetPointData()->GetNormals() != nullptr;
@@ -76,12 +90,15 @@ LoadedMesh LoadMesh(const SceneOptions& options)
     (options.Normals == NormalsMode::Auto && !result.NormalsFromFile);
   if (lit && compute)
   {
-    mesh = ComputeNormals(mesh, options.Computed).Mesh;
-    if (!mesh)
+    const ComputedNormals normals = ComputeNormals(mesh, options.Computed);
+    ReportWarnings(options.Mesh, normals.Warnings);
+    if (!normals.Mesh)
     {
-      result.Error = "normals: " + FirstVtkError("cannot be computed");
+      result.Error = "normals: " + normals.Error;
       return result;
     }
+    mesh = normals.Mesh;
+    result.DuplicatedFaces = normals.DuplicatedFaces;
     result.NormalsFromFile = false;
   }
   result.Mesh = mesh;

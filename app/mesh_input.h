@@ -9,6 +9,7 @@
 #include <vtkType.h>
 
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -19,13 +20,17 @@ struct LoadedMesh
   vtkSmartPointer<vtkPolyData> Mesh; // null on error
   std::string Error;                 // one line, without the file name
   bool NormalsFromFile = false;
+  vtkIdType DuplicatedFaces = 0; // ComputedNormals's, when they were computed
 };
 
+/** Reads options.Mesh and computes its normals as asked; warnings are reported. */
 LoadedMesh LoadMesh(const SceneOptions& options);
 
 struct ComputedNormals
 {
-  vtkSmartPointer<vtkPolyData> Mesh; // null on failure (the error in VTK's output window)
+  vtkSmartPointer<vtkPolyData> Mesh; // null on failure
+  std::string Error;                 // why it failed: one line
+  std::vector<std::string> Warnings; // what the filter warned of
   vtkIdType DuplicatedFaces = 0;     // faces OpenMesh refused, given vertices of their own
 };
 

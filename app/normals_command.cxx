@@ -2,23 +2,18 @@
 
 #include "errors.h"
 #include "mesh_input.h"
+#include "output_file.h"
 #include "output_path.h"
-#include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYWriter.h"
 
-#include <vtkExecutive.h>
 #include <vtkOBJWriter.h>
-#include <vtkOutputWindow.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <CLI/CLI.hpp>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <iostream>
 
 namespace shadelab
@@ -32,20 +27,25 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
     ->required()
     ->option_text("OUT");
   AddNormalsSettings(*normals, o.Settings);
+  normals->add_flag("-q,--quiet", o.Quiet, "No warnings");
   return normals;
 }
 
 namespace
 {
-// Writes mesh to path in the format that ext names; errors go to VTK's
-// output window.
+// Writes mesh as Writer does, into a file that WriteFileThroughMemory names:
+// VTK's writers open their files themselves, and vtkOBJWriter checks none
+// of its writes. "" or the writer's first error.
 template <typename Writer>
-void Write(vtkPolyData* mesh, const std::string& path)
+std::string Write(vtkPolyData* mesh, const std::string& fileName)
 {
+  const MessageScope messages;
   auto writer = vtkSmartPointer<Writer>::New();
   writer->SetInputData(mesh);
-  writer->SetFileName(path.c_str());
-  writer->Write();
+  writer->SetFileName(fileName.c_str());
+  const bool written = writer->Write() != 0;
+  return written && messages.FirstError().empty() ? std::string()
+                                                  : "cannot write: " + messages.ErrorOr("failed");
 }
 }
 
@@ -61,49 +61,32 @@ int RunNormals(const NormalsOptions& o)
     return ReportError(o.Output, error);
   }
 
-  auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
-  reader->SetFileName(o.Mesh.c_str());
-  reader->ReadNormalsOff(); // computed, and not split at the file's vn seams
-  if (!reader->GetExecutive()->Update())
+  // The same reading and normals as render's, without the file's normals:
+  // they are computed, and not split at the file's vn seams.
+  SceneOptions input;
+  input.Mesh = o.Mesh;
+  input.Normals = NormalsMode::Compute;
+  input.Computed = o.Settings;
+  const LoadedMesh loaded = LoadMesh(input);
+  if (!loaded.Mesh)
   {
-    return ReportError(o.Mesh, FirstVtkError("cannot be read"));
+    return ReportError(o.Mesh, loaded.Error);
   }
-  const ComputedNormals normals = ComputeNormals(reader->GetOutput(), o.Settings);
-  if (!normals.Mesh)
+  if (loaded.DuplicatedFaces > 0)
   {
-    return ReportError(o.Mesh, "normals: " + FirstVtkError("cannot be computed"));
-  }
-  if (normals.DuplicatedFaces > 0)
-  {
-    std::cerr << "shadelab: note: " << o.Mesh << ": " << normals.DuplicatedFaces
+    std::cerr << "shadelab: note: " << o.Mesh << ": " << loaded.DuplicatedFaces
               << " faces are non-manifold or repeat a vertex: they got vertices of their own"
               << std::endl;
   }
 
-  // Written to a temporary name beside OUT and renamed: no partial file.
-  const std::string temporary = TemporaryName(o.Output);
-  auto* window = vtkShadelabOutputWindow::SafeDownCast(vtkOutputWindow::GetInstance());
-  window->Clear();
-  vtkPolyData* mesh = normals.Mesh;
-  if (ext == ".ply")
-  {
-    Write<vtkShadelabPLYWriter>(mesh, temporary);
-  }
-  else if (ext == ".vtp")
-  {
-    Write<vtkXMLPolyDataWriter>(mesh, temporary);
-  }
-  else
-  {
-    Write<vtkOBJWriter>(mesh, temporary);
-  }
-  if (!window->GetFirstError().empty() || std::rename(temporary.c_str(), o.Output.c_str()) != 0)
-  {
-    const std::string why =
-      window->GetFirstError().empty() ? std::strerror(errno) : window->GetFirstError();
-    std::remove(temporary.c_str());
-    return ReportError(o.Output, "cannot write: " + why);
-  }
-  return 0;
+  vtkPolyData* mesh = loaded.Mesh;
+  const std::string error = WriteFileThroughMemory(o.Output,
+    [&](const std::string& name)
+    {
+      return ext == ".ply" ? Write<vtkShadelabPLYWriter>(mesh, name)
+        : ext == ".vtp"    ? Write<vtkXMLPolyDataWriter>(mesh, name)
+                           : Write<vtkOBJWriter>(mesh, name);
+    });
+  return error.empty() ? 0 : ReportError(o.Output, error);
 }
 }

@@ -19,6 +19,7 @@ struct NormalsOptions
   std::string Mesh;
   std::string Output;
   NormalsSettings Settings;
+  bool Quiet = false; // no warnings
 };
 
 /** Declares the normals command and its options on the program. */

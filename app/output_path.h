@@ -1,5 +1,5 @@
-// Where outputs go. Every command writes a file to a temporary name beside
-// its target and renames it, so that a reader never sees a partial file.
+// Where outputs go: what can be checked of an output's name before any work
+// (output_file.h writes it).
 #ifndef shadelab_output_path_h
 #define shadelab_output_path_h
 
@@ -9,12 +9,6 @@ namespace shadelab
 {
 /** The extension of path in lower case, with its dot (".png"), or "". */
 std::string LowerExtension(const std::string& path);
-
-/** A temporary name beside path: in its folder, so the rename stays on one file system. */
-std::string TemporaryName(const std::string& path);
-
-/** Writes text to path through a temporary name; "" or "cannot write PATH: REASON". */
-std::string WriteTextFile(const std::string& path, const std::string& text);
 
 /** "" when path's folder can be written to, else "cannot write: REASON". */
 std::string CheckWritableFolder(const std::string& path);

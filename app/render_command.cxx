@@ -71,7 +71,8 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
     "Leave shots whose output file exists (outputs appear whole, by rename): finishes an "
     "interrupted batch");
   render->add_flag(
-    "-q,--quiet", o.Quiet, "No progress bar (none either when output is not a terminal)");
+    "-q,--quiet", o.Quiet,
+    "No warnings and no progress bar (none either when output is not a terminal)");
   render->footer(CameraHelp);
   return render;
 }

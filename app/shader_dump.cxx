@@ -1,6 +1,6 @@
 #include "shader_dump.h"
 
-#include "output_path.h"
+#include "output_file.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -11,10 +11,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 namespace shadelab
 {
@@ -61,9 +59,11 @@ std::string ShaderDump::PrepareFolder(const std::string& folder)
 
 void ShaderDump::Write(const std::string& extension, const std::string& source)
 {
-  const std::string error = WriteTextFile(this->Base + extension, source);
-  if (this->Error.empty())
+  const std::string path = this->Base + extension;
+  const std::string error = WriteFile(path, source);
+  if (this->Error.empty() && !error.empty())
   {
+    this->ErrorFile = path;
     this->Error = error;
   }
 }

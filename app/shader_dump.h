@@ -23,7 +23,8 @@ public:
   /** Creates folder if needed; an error text or "". */
   static std::string PrepareFolder(const std::string& folder);
 
-  /** The first write error, or "". */
+  /** The file of the first write error, and the error; both "" when all went well. */
+  const std::string& GetErrorFile() const { return this->ErrorFile; }
   const std::string& GetError() const { return this->Error; }
 
 private:
@@ -34,6 +35,7 @@ private:
 
   vtkMapper* Mapper;
   std::string Base;
+  std::string ErrorFile;
   std::string Error;
   bool Written = false;
   vtkSmartPointer<vtkCallbackCommand> Observer;

@@ -1,6 +1,6 @@
 #include "speed_accuracy.h"
 
-#include "output_path.h"
+#include "output_file.h"
 #include "shadelabVec3.h"
 
 #include <vtkCellArray.h>
@@ -238,7 +238,7 @@ std::string WriteSpeedAccuracyCsv(
     }
     text += "\n";
   }
-  return WriteTextFile(path, text);
+  return WriteFile(path, text);
 }
 
 std::string WriteSpeedAccuracyJson(
@@ -253,7 +253,7 @@ std::string WriteSpeedAccuracyJson(
       { "max_error", r.MaxError }, { "psnr", r.Psnr }, { "normals_ms", r.NormalsMs },
       { "compile_ms", r.CompileMs }, { "edge_angle_deg", r.EdgeAngle }, { "pixels", r.Pixels } });
   }
-  return WriteTextFile(path, all.dump(1) + "\n");
+  return WriteFile(path, all.dump(1) + "\n");
 }
 
 std::string ReadSpeedAccuracyCsv(const std::string& path, std::vector<SpeedAccuracyRow>& rows)

@@ -75,7 +75,7 @@ struct SpeedAccuracyRow
  */
 std::vector<std::string> CheckSpeedAccuracyOrder(const std::vector<SpeedAccuracyRow>& rows);
 
-/** The CSV (a header row, then one line per row), written to a temporary name and renamed. */
+/** The CSV (a header row, then one line per row), written by OutputFile: "" or the error. */
 std::string WriteSpeedAccuracyCsv(
   const std::string& path, const std::vector<SpeedAccuracyRow>& rows);
 /** The same rows as a JSON array of objects with the CSV's column names. */

@@ -47,6 +47,7 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
     ->transform(CLI::CheckedTransformer(rules))
     ->option_text("none|flat|gouraud|phong");
   view->add_flag("--compare", o.Compare, "Start in the comparison layout (key c)");
+  view->add_flag("-q,--quiet", o.Quiet, "No warnings");
   AddComparisonOptions(*view, o.Panels);
   view
     ->add_option("--measure-drag", o.MeasureDrag,

@@ -26,6 +26,7 @@ struct ViewOptions
   bool Compare = false;                      // start in the comparison layout
   ComparisonOptions Panels;                  // its panels, as compare's
   int MeasureDrag = 0; // frames of a simulated drag to time, then exit (scripts/bench-view)
+  bool Quiet = false;  // no warnings
 };
 
 /** Declares the view command and its options on the program. */

@@ -17,6 +17,7 @@ int main(int argc, char** argv)
   vtkShadelabOutputWindow::Install()->SetEcho(true);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   std::signal(SIGPIPE, SIG_IGN); // a dead image writer is reported, not fatal
+  std::signal(SIGXFSZ, SIG_IGN); // a file-size limit is a write error (EFBIG)
 
   CLI::App program("shadelab view", "shadelab");
   program.require_subcommand(1);
@@ -34,6 +35,10 @@ int main(int argc, char** argv)
     }
     std::cerr << "shadelab: error: " << e.what() << " (see shadelab view --help)" << std::endl;
     return shadelab::ExitUsage;
+  }
+  if (view.Quiet)
+  {
+    shadelab::SilenceWarnings();
   }
   return shadelab::RunView(view, shadelab::QuoteCommandLine(argc, argv));
 }

@@ -9,6 +9,10 @@ vtkStandardNewMacro(vtkShadelabOutputWindow);
 
 vtkShadelabOutputWindow* vtkShadelabOutputWindow::Install()
 {
+  if (auto* installed = SafeDownCast(vtkOutputWindow::GetInstance()))
+  {
+    return installed; // open scopes keep pointing at it
+  }
   auto window = vtkSmartPointer<vtkShadelabOutputWindow>::New();
   vtkOutputWindow::SetInstance(window);
   return window; // the global instance holds the reference now
@@ -54,16 +58,19 @@ void vtkShadelabOutputWindow::DisplayText(const char* text)
 
 void vtkShadelabOutputWindow::DisplayErrorText(const char* text)
 {
-  if (this->FirstError.empty())
+  if (this->Scope)
   {
-    this->FirstError = OneLine(text);
+    this->Scope->AddError(OneLine(text));
   }
   this->DisplayText(text);
 }
 
 void vtkShadelabOutputWindow::DisplayWarningText(const char* text)
 {
-  this->Warnings.push_back(OneLine(text));
+  if (this->Scope)
+  {
+    this->Scope->AddWarning(OneLine(text));
+  }
   this->DisplayText(text);
 }
 
@@ -77,16 +84,37 @@ void vtkShadelabOutputWindow::DisplayDebugText(const char* text)
   this->DisplayText(text);
 }
 
-void vtkShadelabOutputWindow::Clear()
-{
-  this->FirstError.clear();
-  this->Warnings.clear();
-}
-
 void vtkShadelabOutputWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FirstError: " << this->FirstError << "\n";
-  os << indent << "Warnings: " << this->Warnings.size() << "\n";
+  os << indent << "Scope: " << this->Scope << "\n";
   os << indent << "Echo: " << this->Echo << "\n";
+}
+
+namespace shadelab
+{
+MessageScope::MessageScope()
+  : Window(vtkShadelabOutputWindow::Install())
+{
+  this->Outer = this->Window->GetScope();
+  this->Window->SetScope(this);
+}
+
+MessageScope::~MessageScope()
+{
+  this->Window->SetScope(this->Outer);
+}
+
+void MessageScope::AddError(const std::string& line)
+{
+  if (this->First.empty())
+  {
+    this->First = line;
+  }
+}
+
+void MessageScope::AddWarning(const std::string& line)
+{
+  this->WarningLines.push_back(line);
+}
 }

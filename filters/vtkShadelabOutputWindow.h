@@ -5,7 +5,10 @@
  * VTK reports pipeline failures through vtkOutputWindow as multi-line texts
  * ("ERROR: In file, line N\nclass (0x...): message"). shadelab's contract is a
  * single line naming the input and the problem, so this window keeps only the
- * message part of each text and lets the program decide what to print.
+ * message part of each text and hands it to the innermost
+ * shadelab::MessageScope, so that each operation (a read, the normals, a
+ * render, a write) gets its own first error and warnings, not one left over
+ * from an earlier operation. Texts outside any scope are only echoed.
  * Install() makes it VTK's global output window.
  */
 #ifndef vtkShadelabOutputWindow_h
@@ -16,6 +19,11 @@
 #include <string>
 #include <vector>
 
+namespace shadelab
+{
+class MessageScope;
+}
+
 class vtkShadelabOutputWindow : public vtkOutputWindow
 {
 public:
@@ -23,7 +31,7 @@ public:
   vtkTypeMacro(vtkShadelabOutputWindow, vtkOutputWindow);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Makes a new instance VTK's global output window and returns it. */
+  /** Makes an instance VTK's global output window, unless one is already; returns it. */
   static vtkShadelabOutputWindow* Install();
 
   void DisplayText(const char* text) override;
@@ -32,10 +40,9 @@ public:
   void DisplayGenericWarningText(const char* text) override;
   void DisplayDebugText(const char* text) override;
 
-  /** The first error since the last Clear(), as one line; empty if none. */
-  const std::string& GetFirstError() const { return this->FirstError; }
-  const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
-  void Clear();
+  /** The scope that receives the messages (the innermost open one), or null. */
+  shadelab::MessageScope* GetScope() const { return this->Scope; }
+  void SetScope(shadelab::MessageScope* scope) { this->Scope = scope; }
 
   /** Also print every text to stderr as it arrives (for --verbose). */
   vtkSetMacro(Echo, bool);
@@ -52,9 +59,47 @@ private:
   vtkShadelabOutputWindow(const vtkShadelabOutputWindow&) = delete;
   void operator=(const vtkShadelabOutputWindow&) = delete;
 
-  std::string FirstError;
-  std::vector<std::string> Warnings;
+  shadelab::MessageScope* Scope = nullptr;
   bool Echo = false;
 };
+
+namespace shadelab
+{
+/**
+ * The messages VTK reports during one operation. A scope starts empty and,
+ * while it is the innermost one, collects every error and warning; closing
+ * it (the destructor) gives the messages back to the scope around it no
+ * more. Makes vtkShadelabOutputWindow VTK's output window if it is not yet.
+ * Scopes nest on one thread: the one that runs VTK's pipelines.
+ */
+class MessageScope
+{
+public:
+  MessageScope();
+  ~MessageScope();
+
+  /** The first error, as one line; empty if none. */
+  const std::string& FirstError() const { return this->First; }
+  /** The first error, or fallback when VTK reported none. */
+  std::string ErrorOr(const char* fallback) const
+  {
+    return this->First.empty() ? fallback : this->First;
+  }
+  /** Each warning as one line, in order. */
+  const std::vector<std::string>& Warnings() const { return this->WarningLines; }
+
+  void AddError(const std::string& line);
+  void AddWarning(const std::string& line);
+
+private:
+  MessageScope(const MessageScope&) = delete;
+  void operator=(const MessageScope&) = delete;
+
+  vtkShadelabOutputWindow* Window;
+  MessageScope* Outer;
+  std::string First;
+  std::vector<std::string> WarningLines;
+};
+}
 
 #endif

@@ -1415,23 +1415,21 @@ TEST(MeshNormals, AnEmptyInputGivesAnEmptyOutput)
 
   // Triangles without points are bad input, not an empty mesh.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  vtkShadelabOutputWindow* window = vtkShadelabOutputWindow::Install();
   auto orphans = vtkSmartPointer<vtkPolyData>::New();
   auto polys = vtkSmartPointer<vtkCellArray>::New();
   const vtkIdType ids[3] = { 0, 1, 2 };
   polys->InsertNextCell(3, ids);
   orphans->SetPolys(polys);
   filter->SetInputData(orphans);
-  window->Clear();
+  const shadelab::MessageScope messages;
   EXPECT_FALSE(filter->GetExecutive()->Update());
-  EXPECT_NE(window->GetFirstError().find("refers to point 0 of 0"), std::string::npos)
-    << window->GetFirstError();
+  EXPECT_NE(messages.FirstError().find("refers to point 0 of 0"), std::string::npos)
+    << messages.FirstError();
 }
 
 TEST(MeshNormals, PolygonsAndBadIdsAreOneLineErrors)
 {
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the captured line is enough
-  vtkShadelabOutputWindow* window = vtkShadelabOutputWindow::Install();
   auto points = vtkSmartPointer<vtkPoints>::New();
   for (const Vec& p : std::vector<Vec>{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } })
   {
@@ -1451,10 +1449,10 @@ TEST(MeshNormals, PolygonsAndBadIdsAreOneLineErrors)
     mesh->SetPolys(polys);
     vtkNew<vtkShadelabMeshNormals> filter;
     filter->SetInputData(mesh);
-    window->Clear();
+    const shadelab::MessageScope messages;
     EXPECT_FALSE(filter->GetExecutive()->Update()) << message;
-    EXPECT_NE(window->GetFirstError().find(message), std::string::npos) << window->GetFirstError();
-    EXPECT_EQ(window->GetFirstError().find('\n'), std::string::npos) << window->GetFirstError();
+    EXPECT_NE(messages.FirstError().find(message), std::string::npos) << messages.FirstError();
+    EXPECT_EQ(messages.FirstError().find('\n'), std::string::npos) << messages.FirstError();
   }
 }
 

@@ -56,28 +56,24 @@ struct ReadResult
   std::vector<std::string> Warnings;
 };
 
-vtkShadelabOutputWindow* Window()
+// VTK 9.1 also logs each error, several lines long, to stderr; the captured
+// one line is what the tests look at.
+[[maybe_unused]] const bool QuietLogger = []
 {
-  static vtkShadelabOutputWindow* window = []
-  {
-    // VTK 9.1 also logs each error, several lines long, to stderr; the
-    // captured one line is what the tests look at.
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    return vtkShadelabOutputWindow::Install();
-  }();
-  return window;
-}
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  return true;
+}();
 
 ReadResult ReadWith(vtkShadelabFileReader* reader, const fs::path& path)
 {
-  Window()->Clear();
+  const shadelab::MessageScope messages;
   reader->SetFileName(path.c_str());
   ReadResult result;
   result.Ok = reader->GetExecutive()->Update() != 0;
   result.Mesh = reader->GetOutput();
-  result.Error = Window()->GetFirstError();
+  result.Error = messages.FirstError();
   result.ErrorCode = reader->GetErrorCode();
-  result.Warnings = Window()->GetWarnings();
+  result.Warnings = messages.Warnings();
   return result;
 }
 
@@ -187,7 +183,6 @@ class MeshReaders : public ::testing::Test
 protected:
   void SetUp() override
   {
-    Window();
     std::string pattern = (fs::temp_directory_path() / "shadelab-readers-XXXXXX").string();
     ASSERT_NE(mkdtemp(pattern.data()), nullptr);
     this->Dir = pattern;
@@ -758,9 +753,43 @@ TEST_F(MeshReaders, FilesThatCannotBeOpened)
   EXPECT_EQ(Read(this->Dir / "missing.stl").ErrorCode, vtkErrorCode::FileNotFoundError);
 
   vtkNew<vtkShadelabMeshReader> reader;
-  Window()->Clear();
+  const shadelab::MessageScope messages;
   EXPECT_EQ(reader->GetExecutive()->Update(), 0);
-  EXPECT_NE(Window()->GetFirstError().find("no file name"), std::string::npos);
+  EXPECT_NE(messages.FirstError().find("no file name"), std::string::npos);
+}
+
+TEST_F(MeshReaders, EachMessageScopeHasItsOwnErrorsAndWarnings)
+{
+  // Two broken files read one after the other: each read's scope hands back
+  // its own first error, not the one before it.
+  this->Write("first.ply", "ply\nformat ascii 1.0\nelement vertex 1\nend_header\n");
+  EXPECT_NE(Read(this->Dir / "first.ply").Error, "");
+  const ReadResult second = Read(this->Dir / "second.obj");
+  EXPECT_EQ(second.Error, "cannot open: No such file or directory");
+
+  // A scope inside another takes the messages while it is open; the outer
+  // one gets those before and after it.
+  const shadelab::MessageScope outer;
+  vtkNew<vtkShadelabMeshReader> reader;
+  {
+    const shadelab::MessageScope inner;
+    reader->SetFileName((this->Dir / "second.obj").c_str());
+    reader->GetExecutive()->Update();
+    EXPECT_EQ(inner.FirstError(), "cannot open: No such file or directory");
+  }
+  EXPECT_EQ(outer.FirstError(), "");
+  reader->SetFileName((this->Dir / "first.ply").c_str());
+  reader->GetExecutive()->Update();
+  EXPECT_NE(outer.FirstError(), "");
+
+  // A warning goes to the scope that is open while it is reported.
+  this->Write(
+    "some-vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
+  const ReadResult partly = Read(this->Dir / "some-vn.obj");
+  ASSERT_TRUE(partly.Ok) << partly.Error;
+  ASSERT_EQ(partly.Warnings.size(), 1u);
+  EXPECT_EQ(partly.Warnings[0], "some faces have no vn normals, so the file's normals are ignored");
+  EXPECT_EQ(Read(this->Dir / "some-vn.obj").Warnings.size(), 1u);
 }
 
 TEST_F(MeshReaders, UnknownExtensions)

@@ -1,0 +1,65 @@
+// The one way shadelab writes a file: pictures, meshes, benchmark results,
+// shaders, screenshots. Nothing is lost and nothing partial is left:
+//   - bytes go to a temporary beside the output (same folder, so the rename
+//     stays on one file system), created exclusively and locked (flock) while
+//     it is written;
+//   - every write and the close are checked (ENOSPC, EDQUOT, EIO, EFBIG with
+//     SIGXFSZ ignored, ...), the file is fsynced, renamed over the output,
+//     and the folder is fsynced, so the rename itself survives a power loss;
+//   - on any failure the temporary is removed and the error names the cause.
+// A temporary whose lock nobody holds was left by a killed run: writing an
+// output removes its stale temporaries first.
+#ifndef shadelab_output_file_h
+#define shadelab_output_file_h
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace shadelab
+{
+class OutputFile
+{
+public:
+  /** Opens a temporary beside path; Error() says why when it cannot. */
+  explicit OutputFile(std::string path);
+  /** Removes the temporary unless Commit() succeeded. */
+  ~OutputFile();
+
+  /** Appends bytes; false (and Error() set) when the write fails. */
+  bool Write(const void* data, std::size_t size);
+  bool Write(std::string_view bytes) { return this->Write(bytes.data(), bytes.size()); }
+
+  /** fsync, close, rename into place, fsync the folder: "" or the first error. */
+  std::string Commit();
+
+  /** "" while all is well, else "cannot write: REASON". */
+  const std::string& Error() const { return this->Failure; }
+
+private:
+  OutputFile(const OutputFile&) = delete;
+  void operator=(const OutputFile&) = delete;
+
+  bool Fail(const char* what, int error);
+
+  std::string Path;
+  std::string Temporary;
+  int Descriptor = -1;
+  std::string Failure;
+};
+
+/** Writes bytes to path through an OutputFile: "" or "cannot write: REASON". */
+std::string WriteFile(const std::string& path, std::string_view bytes);
+
+/**
+ * For libraries that write only to a file they name and open themselves
+ * (and do not all check their writes): write(name) writes into an anonymous
+ * memory file named `name`; its bytes then go to path through an
+ * OutputFile. write returns "" or its own error, which is passed on.
+ */
+std::string WriteFileThroughMemory(
+  const std::string& path, const std::function<std::string(const std::string& name)>& write);
+}
+
+#endif

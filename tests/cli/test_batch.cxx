@@ -148,6 +148,41 @@ TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
   EXPECT_EQ(Names(dir.Files()), (std::set<std::string>{ "scene.json", "a.png", "c.png", "e.png" }));
 }
 
+TEST(Batch, EachShotReportsItsOwnErrorAndAWarningOnce)
+{
+  // Two differently broken meshes: each shot's error is its own, not the
+  // one before it. An OBJ whose vn cover only some faces warns once, though
+  // two shots (two normals settings) read it.
+  TempDir dir;
+  WriteText(dir / "lies.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n0 0 0\n");
+  WriteText(dir / "index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  WriteText(dir / "partial-vn.obj",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
+  const std::string scene = (dir / "scene.json").string();
+  WriteText(scene,
+    R"({ "output": ")" + (dir / "{index}.png").string() +
+      R"(", "size": [32, 32], "shots": [ { "mesh": "lies.ply" }, { "mesh": "index.obj" },)"
+      R"( { "mesh": "partial-vn.obj" }, { "mesh": "partial-vn.obj", "weighting": "area" } ] })");
+  const RunResult r = RunShadelab({ "render", "--scene", scene });
+  EXPECT_EQ(r.ExitCode, 1);
+  const std::string lies = (dir / "lies.ply").string();
+  const std::string index = (dir / "index.obj").string();
+  const std::string partial = (dir / "partial-vn.obj").string();
+  EXPECT_EQ(r.Stderr,
+    "shadelab: error: " + scene + " shots[0]: " + lies +
+      ": element 'vertex' has no properties\n"
+      "shadelab: error: " +
+      scene + " shots[1]: " + index +
+      ": line 3: face refers to vertex 7, but only 2 vertices are defined\n"
+      "shadelab: warning: " +
+      partial +
+      ": some faces have no vn normals, so the file's normals are ignored\n"
+      "shadelab: 2 of 4 shots failed\n");
+
+  const RunResult quiet = RunShadelab({ "render", "--scene", scene, "--quiet" });
+  EXPECT_EQ(quiet.Stderr.find("warning"), std::string::npos) << quiet.Stderr;
+}
+
 TEST(Batch, CommandLineMistakes)
 {
   TempDir dir;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -88,12 +89,13 @@ int Run(const std::string& command)
 }
 
 // A running `shadelab view MESH ARGS...` in a temporary folder (where its
-// screenshots go).
+// screenshots go), under a file-size limit if one is given.
 class Viewer
 {
 public:
   explicit Viewer(const std::vector<std::string>& args,
-    const std::string& size = std::to_string(W) + "x" + std::to_string(H))
+    const std::string& size = std::to_string(W) + "x" + std::to_string(H),
+    rlim_t fileSizeLimit = RLIM_INFINITY)
     : Title("shadelab - spot.obj")
   {
     std::vector<std::string> words{ SHADELAB_BINARY, "view", SharedMesh("spot.obj").string(),
@@ -102,7 +104,9 @@ public:
     this->Pid = fork();
     if (this->Pid == 0)
     {
-      if (chdir(this->Dir.path().c_str()) != 0 ||
+      const rlimit limit{ fileSizeLimit, fileSizeLimit };
+      if ((fileSizeLimit != RLIM_INFINITY && setrlimit(RLIMIT_FSIZE, &limit) != 0) ||
+        chdir(this->Dir.path().c_str()) != 0 ||
         !freopen((this->Dir / "stdout").c_str(), "w", stdout) ||
         !freopen((this->Dir / "stderr").c_str(), "w", stderr))
       {
@@ -212,6 +216,9 @@ public:
   }
 
   std::string Stderr() const { return Slurp(this->Dir / "stderr"); }
+
+  /** The files in the viewer's folder (stdout and stderr among them). */
+  std::vector<std::string> Files() const { return this->Dir.Files(); }
 
   const std::string Title;
 
@@ -407,6 +414,30 @@ TEST(View, RResetsTheCamera)
   ASSERT_EQ(reset.Width, W);
   EXPECT_GT(Compare(start, turned).Pixels, 1000) << "the drag turned the camera";
   EXPECT_EQ(Compare(start, reset, 0).Pixels, 0) << "r: the command line's camera again";
+}
+
+TEST(View, AScreenshotThatCannotBeWrittenIsReportedAndLeavesNothing)
+{
+  // 16 kB: stdout and stderr fit, a screenshot of spot does not.
+  Viewer viewer({}, std::to_string(W) + "x" + std::to_string(H), 16384);
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  viewer.Keys({ "p" });
+  const std::string line = "shadelab: error: shadelab-spot-001.png: cannot write: File too large\n";
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (
+    viewer.Stderr().find(line) == std::string::npos && std::chrono::steady_clock::now() < deadline)
+  {
+    std::this_thread::sleep_for(50ms);
+  }
+  const std::string stderrText = viewer.Stderr();
+  const auto first = stderrText.find(line);
+  EXPECT_NE(first, std::string::npos) << stderrText;
+  EXPECT_EQ(stderrText.find(line, first + 1), std::string::npos) << "reported once";
+  std::vector<std::string> files = viewer.Files();
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{ "stderr", "stdout" }));
+  viewer.Keys({ "q" });
+  EXPECT_EQ(viewer.Wait(), 0) << "the window goes on after a failed screenshot";
 }
 
 TEST(View, QAndEscapeQuitWithZero)

@@ -161,9 +161,9 @@ size_t CountCovered(const Image& image)
   return covered;
 }
 
-std::filesystem::path SharedMesh(const std::string& name)
+std::filesystem::path TestMesh(const std::string& name)
 {
-  return std::filesystem::path(SHADELAB_SHARED_DIR) / "data" / "meshes" / name;
+  return std::filesystem::path(SHADELAB_TEST_MESHES) / name;
 }
 
 void WriteText(const std::filesystem::path& path, const std::string& text)

@@ -59,8 +59,8 @@ Image ReadImage(const std::filesystem::path& path);
 /** Pixels that are not black: the mesh's coverage on the default background. */
 size_t CountCovered(const Image& image);
 
-/** The shared meshes (../shared/data/meshes). */
-std::filesystem::path SharedMesh(const std::string& name);
+/** A real mesh of tests/data/meshes. */
+std::filesystem::path TestMesh(const std::string& name);
 
 /** Writes text to path. */
 void WriteText(const std::filesystem::path& path, const std::string& text);

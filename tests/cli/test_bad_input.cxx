@@ -282,12 +282,12 @@ TEST(AwkwardInput, NonManifoldAndDegenerateFacesRender)
 TEST(AwkwardInput, ViewWithoutADisplayIsAOneLineError)
 {
   // RunShadelab unsets DISPLAY: no X server to open a window on.
-  const RunResult run = RunShadelab({ "view", SharedMesh("spot.obj").string() });
+  const RunResult run = RunShadelab({ "view", TestMesh("spot.obj").string() });
   EXPECT_EQ(run.ExitCode, 1);
   EXPECT_NE(run.Stderr.find("shadelab: error: view: cannot open the display"), std::string::npos)
     << run.Stderr;
   EXPECT_EQ(std::count(run.Stderr.begin(), run.Stderr.end(), '\n'), 1) << run.Stderr;
   const RunResult bad =
-    RunShadelab({ "view", SharedMesh("spot.obj").string(), "--interactive-shading", "fast" });
+    RunShadelab({ "view", TestMesh("spot.obj").string(), "--interactive-shading", "fast" });
   EXPECT_EQ(bad.ExitCode, 2) << bad.Stderr;
 }

@@ -49,7 +49,7 @@ std::set<std::string> Names(const std::vector<std::string>& files)
 TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
 {
   TempDir dir;
-  const std::string mesh = SharedMesh("spot.obj").string();
+  const std::string mesh = TestMesh("spot.obj").string();
   WriteText(dir / "scene.json", TwentyFourShots(mesh));
   const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "batch/{shading}-{material}.png").string() });
@@ -75,7 +75,7 @@ TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
 TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
   // The same command twice (the command line is in the metadata too).
   const std::vector<std::string> args{ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "a" / "{index}.png").string() };
@@ -103,7 +103,7 @@ TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
 TEST(Batch, ShardsCoverEveryShotExactlyOnce)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
   std::multiset<std::string> all;
   for (int shard = 0; shard < 5; ++shard)
   {
@@ -127,7 +127,7 @@ TEST(Batch, ShardsCoverEveryShotExactlyOnce)
 TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
 {
   TempDir dir;
-  const std::string mesh = SharedMesh("spot.obj").string();
+  const std::string mesh = TestMesh("spot.obj").string();
   WriteText(dir / "scene.json",
     R"({ "output": ")" + (dir / "{name}.png").string() + R"(", "size": [64, 48], "mesh": ")" +
       mesh +
@@ -186,7 +186,7 @@ TEST(Batch, EachShotReportsItsOwnErrorAndAWarningOnce)
 TEST(Batch, CommandLineMistakes)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(SharedMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
   const std::string scene = (dir / "scene.json").string();
   struct Case
   {
@@ -198,10 +198,10 @@ TEST(Batch, CommandLineMistakes)
     { { "render", "--scene", scene, "--shading", "flat" }, 2, "--shading excludes --scene" },
     { { "render", "--scene", scene, "--shard", "5/5" }, 2,
       "'5/5' is not a shard I/N with 0 <= I < N" },
-    { { "render", SharedMesh("spot.obj").string(), "-o", (dir / "x.png").string(), "--shard",
+    { { "render", TestMesh("spot.obj").string(), "-o", (dir / "x.png").string(), "--shard",
         "0/2" },
       2, "--shard requires --scene" },
-    { { "render", SharedMesh("spot.obj").string() }, 2, "--output is required unless --scene" },
+    { { "render", TestMesh("spot.obj").string() }, 2, "--output is required unless --scene" },
     { { "render", "-o", (dir / "x.png").string() }, 2, "MESH is required unless --scene" },
     { { "render", "--scene", (dir / "none.json").string() }, 1,
       "shadelab: error: " + (dir / "none.json").string() +

@@ -71,7 +71,7 @@ const std::vector<std::string> Camera{ "--size", std::to_string(W) + "x" + std::
 
 RunResult Compare(const std::filesystem::path& out, std::vector<std::string> args)
 {
-  args.insert(args.begin(), { "compare", SharedMesh("spot.obj").string(), "-o", out.string() });
+  args.insert(args.begin(), { "compare", TestMesh("spot.obj").string(), "-o", out.string() });
   args.insert(args.end(), Camera.begin(), Camera.end());
   return RunShadelab(args);
 }
@@ -91,7 +91,7 @@ TEST(Compare, OnePanelPerModeEachExactlyWhatRenderGives)
   std::vector<Image> panels;
   for (int i = 0; i < 3; ++i)
   {
-    std::vector<std::string> args{ "render", SharedMesh("spot.obj").string(), "-o",
+    std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
       (dir / (rules[i] + ".png")).string(), "--shading", rules[i] };
     args.insert(args.end(), Camera.begin(), Camera.end());
     const RunResult render = RunShadelab(args);
@@ -228,7 +228,7 @@ TEST(Compare, BadModesAndDifferencesAreOneLineErrors)
   EXPECT_EQ(missing.ExitCode, 1);
   EXPECT_NE(missing.Stderr.find("none.obj"), std::string::npos) << missing.Stderr;
   const RunResult folder = RunShadelab(
-    { "compare", SharedMesh("spot.obj").string(), "-o", (dir / "no/such/c.png").string() });
+    { "compare", TestMesh("spot.obj").string(), "-o", (dir / "no/such/c.png").string() });
   EXPECT_EQ(folder.ExitCode, 1);
   EXPECT_TRUE(dir.Files().empty());
 }

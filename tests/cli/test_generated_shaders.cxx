@@ -29,7 +29,7 @@ struct Dumped
 
 Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::string> extra)
 {
-  std::vector<std::string> args = { "render", SharedMesh("cow.obj").string(), "-o",
+  std::vector<std::string> args = { "render", TestMesh("cow.obj").string(), "-o",
     (dir / "cow.png").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() };
   args.insert(args.end(), extra.begin(), extra.end());
   const RunResult r = RunShadelab(args);

@@ -34,7 +34,7 @@ void InterruptAndFinish(int signal, const std::string& name)
 {
   TempDir dir;
   std::ostringstream scene;
-  scene << R"({ "mesh": ")" << SharedMesh("spot.obj").string() << R"(", "output": ")"
+  scene << R"({ "mesh": ")" << TestMesh("spot.obj").string() << R"(", "output": ")"
         << (dir / "out/{index}.png").string() << R"(", "size": [320, 240], "shots": [)";
   for (int i = 0; i < Shots; ++i)
   {

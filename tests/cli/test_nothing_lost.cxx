@@ -75,7 +75,7 @@ private:
   rlimit Old{};
 };
 
-const std::string Mesh = SharedMesh("spot.obj").string();
+const std::string Mesh = TestMesh("spot.obj").string();
 const std::string NoSpace = "cannot write: No space left on device";
 const std::string TooLarge = "cannot write: File too large";
 

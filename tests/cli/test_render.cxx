@@ -39,7 +39,7 @@ TEST_P(EveryMeshEveryShading, RendersAPicture)
 {
   TempDir dir;
   const auto out = dir / "picture.png";
-  const RunResult r = RunShadelab({ "render", SharedMesh(GetParam().Mesh).string(), "-o",
+  const RunResult r = RunShadelab({ "render", TestMesh(GetParam().Mesh).string(), "-o",
     out.string(), "--size", "160x120", "--shading", GetParam().Shading });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(r.Stderr, "");
@@ -54,12 +54,12 @@ TEST_P(EveryMeshEveryShading, RendersAPicture)
   EXPECT_EQ(dir.Files().size(), 1u) << "a temporary file was left behind";
 }
 
-// Every mesh file in the shared folder, so that a mesh added there is tested
+// Every mesh file in tests/data/meshes, so that a mesh added there is tested
 // too; at least the eight that the folder's README lists.
 static std::vector<MeshAndShading> EveryCase()
 {
   std::vector<std::string> meshes;
-  for (const auto& entry : std::filesystem::directory_iterator(SharedMesh("")))
+  for (const auto& entry : std::filesystem::directory_iterator(TestMesh("")))
   {
     const std::string ext = entry.path().extension().string();
     if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".vtp" || ext == ".vtk")
@@ -79,12 +79,12 @@ static std::vector<MeshAndShading> EveryCase()
   return cases;
 }
 
-TEST(SharedMeshes, AllEightAreThere)
+TEST(TestMeshes, AllEightAreThere)
 {
   EXPECT_GE(EveryCase().size(), 8u * 4u);
 }
 
-INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryMeshEveryShading, testing::ValuesIn(EveryCase()),
+INSTANTIATE_TEST_SUITE_P(TestMeshes, EveryMeshEveryShading, testing::ValuesIn(EveryCase()),
   [](const testing::TestParamInfo<MeshAndShading>& info)
   {
     std::string name = info.param.Mesh + "_" + info.param.Shading;
@@ -104,7 +104,7 @@ TEST(Render, IsDeterministic)
     std::string first;
     for (int run = 0; run < 2; ++run)
     {
-      const RunResult r = RunShadelab({ "render", SharedMesh("stanford-bunny.ply").string(), "-o",
+      const RunResult r = RunShadelab({ "render", TestMesh("stanford-bunny.ply").string(), "-o",
         (dir / name).string(), "--size", "320x240", "--light", "point:1,1,1:1,0.8,0.6", "--light",
         "directional:0,-1,-1:0.2,0.3,0.9" });
       ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
@@ -124,7 +124,7 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
   TempDir dir;
   for (const char* name : { "flat.exr", "flat.png", "flat.tif" })
   {
-    std::vector<std::string> args = { "render", SharedMesh("spot.obj").string(), "-o",
+    std::vector<std::string> args = { "render", TestMesh("spot.obj").string(), "-o",
       (dir / name).string(), "--size", "64x64", "--shading", "none", "--kd", "0.5,0.25,2.5" };
     if (std::string(name) == "flat.tif")
     {
@@ -156,7 +156,7 @@ TEST(Render, LitFloatPictureExceedsOneWhereTheLightIsStrong)
 {
   TempDir dir;
   const RunResult r =
-    RunShadelab({ "render", SharedMesh("cow.obj").string(), "-o", (dir / "bright.exr").string(),
+    RunShadelab({ "render", TestMesh("cow.obj").string(), "-o", (dir / "bright.exr").string(),
       "--size", "96x96", "--shading", "phong", "--ambient", "4,4,4", "--ka", "1,1,1" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const Image exr = ReadImage(dir / "bright.exr");
@@ -173,7 +173,7 @@ TEST(Render, PictureCarriesItsParameters)
   TempDir dir;
   for (const char* name : { "m.png", "m.exr", "m.jpg", "m.tif" })
   {
-    const RunResult r = RunShadelab({ "render", SharedMesh("suzanne.obj").string(), "-o",
+    const RunResult r = RunShadelab({ "render", TestMesh("suzanne.obj").string(), "-o",
       (dir / name).string(), "--size", "64x48", "--shading", "gouraud", "--material", "brass",
       "--light", "spot:0,0,5:0,0,-1:30:2:1,0.5,0.5", "--orthographic" });
     ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
@@ -208,7 +208,7 @@ TEST(Render, DegenerateTrianglesGiveNoNaN)
   WriteText(dir / "odd.obj",
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nvn 0 0 1\nvn 0 0 0\n"
     "f 1//1 2//1 3//2\nf 2//1 4//1 5//1\n");
-  for (const std::string& mesh : { SharedMesh("teapot.obj").string(), (dir / "odd.obj").string() })
+  for (const std::string& mesh : { TestMesh("teapot.obj").string(), (dir / "odd.obj").string() })
   {
     for (const char* shading : { "none", "flat", "gouraud", "phong" })
     {

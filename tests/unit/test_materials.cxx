@@ -1,5 +1,5 @@
 // The lecture's material table, compiled in from data/materials.json, must
-// carry the lecture's numbers verbatim (the course text in ../shared/lecture).
+// carry the lecture's numbers verbatim (the course text, class 6).
 #include "shadelabIllumination.h"
 
 #include <gtest/gtest.h>

@@ -47,7 +47,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-const fs::path SharedMeshes = fs::path(SHADELAB_SHARED_DIR) / "data" / "meshes";
+const fs::path TestMeshes = fs::path(SHADELAB_TEST_MESHES);
 
 // The output normals are floats: a unit vector rounded to float is off by at
 // most 2^-24 (6e-8) a component. 1e-6 leaves room for summing in another
@@ -1022,7 +1022,7 @@ TEST(MeshNormals, CubeCornersSplitIntoAxisNormals)
 
 TEST(MeshNormals, FandiskSharpEdgesStaySharpWhenSplitting)
 {
-  const Mesh fandisk = Read(SharedMeshes / "fandisk.obj");
+  const Mesh fandisk = Read(TestMeshes / "fandisk.obj");
   ASSERT_FALSE(fandisk.Triangles.empty());
   // The edges whose two triangles meet at more than 60 degrees.
   std::map<std::pair<vtkIdType, vtkIdType>, std::vector<std::size_t>> facesOfEdge;
@@ -1287,7 +1287,7 @@ TEST(MeshNormals, ConsistencyOrientsEachPartLikeItsLowestFace)
 TEST(MeshNormals, SuzanneAgreesWithItsFileNormals)
 {
   std::vector<Vec> fileNormals;
-  const Mesh suzanne = Read(SharedMeshes / "suzanne.obj", &fileNormals);
+  const Mesh suzanne = Read(TestMeshes / "suzanne.obj", &fileNormals);
   ASSERT_EQ(fileNormals.size(), suzanne.Points.size());
   for (int weighting = 0; weighting < Weightings; ++weighting)
   {

@@ -1,4 +1,4 @@
-// The mesh readers: every shared mesh, small hand-made files of each format
+// The mesh readers: every test mesh (tests/data/meshes), small hand-made files of each format
 // and form, and bad input of every kind (one-line error, no partial mesh).
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
@@ -45,7 +45,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-const fs::path SharedMeshes = fs::path(SHADELAB_SHARED_DIR) / "data" / "meshes";
+const fs::path TestMeshes = fs::path(SHADELAB_TEST_MESHES);
 
 struct ReadResult
 {
@@ -226,9 +226,9 @@ protected:
 };
 
 // ---------------------------------------------------------------------------
-// The shared meshes
+// The test meshes
 
-TEST_F(MeshReaders, EverySharedMeshLoadsWithTheReadmesTriangleCount)
+TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
 {
   // data/README.md; suzanne's 500 faces are 468 quads and 32 triangles.
   const std::vector<std::pair<std::string, vtkIdType>> expected = { { "cow.obj", 5804 },
@@ -239,13 +239,13 @@ TEST_F(MeshReaders, EverySharedMeshLoadsWithTheReadmesTriangleCount)
   for (const auto& [name, triangles] : expected)
   {
     SCOPED_TRACE(name);
-    const ReadResult result = Read(SharedMeshes / name);
+    const ReadResult result = Read(TestMeshes / name);
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_EQ(result.Mesh->GetNumberOfPolys(), triangles);
     ExpectTriangleMesh(result.Mesh);
     covered.insert(name);
   }
-  for (const auto& entry : fs::directory_iterator(SharedMeshes))
+  for (const auto& entry : fs::directory_iterator(TestMeshes))
   {
     EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
       << entry.path() << " is not in this test's table";
@@ -254,7 +254,7 @@ TEST_F(MeshReaders, EverySharedMeshLoadsWithTheReadmesTriangleCount)
 
 TEST_F(MeshReaders, SuzannesQuadsBecomeTwoTrianglesAndItsNormalsAreKept)
 {
-  const fs::path path = SharedMeshes / "suzanne.obj";
+  const fs::path path = TestMeshes / "suzanne.obj";
   std::size_t quads = 0, triangles = 0;
   for (const std::size_t corners : StatementSizes(path, "f"))
   {
@@ -277,7 +277,7 @@ TEST_F(MeshReaders, SuzannesQuadsBecomeTwoTrianglesAndItsNormalsAreKept)
 
 TEST_F(MeshReaders, TheBunnyObjHasNoNormals)
 {
-  const fs::path path = SharedMeshes / "stanford-bunny.obj";
+  const fs::path path = TestMeshes / "stanford-bunny.obj";
   EXPECT_TRUE(StatementSizes(path, "vn").empty());
   const ReadResult result = Read(path);
   ASSERT_TRUE(result.Ok) << result.Error;
@@ -286,8 +286,8 @@ TEST_F(MeshReaders, TheBunnyObjHasNoNormals)
 
 TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
 {
-  const ReadResult obj = Read(SharedMeshes / "stanford-bunny.obj");
-  const ReadResult ply = Read(SharedMeshes / "stanford-bunny.ply");
+  const ReadResult obj = Read(TestMeshes / "stanford-bunny.obj");
+  const ReadResult ply = Read(TestMeshes / "stanford-bunny.ply");
   ASSERT_TRUE(obj.Ok && ply.Ok) << obj.Error << ply.Error;
   EXPECT_EQ(obj.Mesh->GetNumberOfPolys(), ply.Mesh->GetNumberOfPolys());
   EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), ply.Mesh->GetNumberOfPoints());
@@ -306,8 +306,8 @@ TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
   // teapot.obj repeats positions along the seams of its Bezier patches
   // (3644 vertices at 3241 places); the STL has no indices, so welding can
   // only give the distinct places, each as the float the STL stores.
-  const ReadResult obj = Read(SharedMeshes / "teapot.obj");
-  const ReadResult stl = Read(SharedMeshes / "teapot.stl");
+  const ReadResult obj = Read(TestMeshes / "teapot.obj");
+  const ReadResult stl = Read(TestMeshes / "teapot.stl");
   ASSERT_TRUE(obj.Ok && stl.Ok) << obj.Error << stl.Error;
   std::set<std::array<float, 3>> places;
   double p[3];
@@ -324,12 +324,12 @@ TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
 TEST_F(MeshReaders, TheFormatReadersWorkAloneAndPrintTheirFileName)
 {
   vtkNew<vtkShadelabPLYReader> reader;
-  const ReadResult result = ReadWith(reader, SharedMeshes / "stanford-bunny.ply");
+  const ReadResult result = ReadWith(reader, TestMeshes / "stanford-bunny.ply");
   ASSERT_TRUE(result.Ok) << result.Error;
   EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 69451);
   std::ostringstream printed;
   reader->Print(printed);
-  EXPECT_NE(printed.str().find("FileName: " + (SharedMeshes / "stanford-bunny.ply").string()),
+  EXPECT_NE(printed.str().find("FileName: " + (TestMeshes / "stanford-bunny.ply").string()),
     std::string::npos);
 }
 
@@ -803,7 +803,7 @@ TEST_F(MeshReaders, UnknownExtensions)
 TEST_F(MeshReaders, AFailedReadLeavesNoMeshFromBefore)
 {
   vtkNew<vtkShadelabMeshReader> reader;
-  ASSERT_TRUE(ReadWith(reader, SharedMeshes / "cow.obj").Ok);
+  ASSERT_TRUE(ReadWith(reader, TestMeshes / "cow.obj").Ok);
   const ReadResult result = ReadWith(reader, this->Write("bad.obj", "v 0 0 0\nf 1 2 3\n"));
   EXPECT_FALSE(result.Ok);
   EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 0);

@@ -98,7 +98,7 @@ public:
     rlim_t fileSizeLimit = RLIM_INFINITY)
     : Title("shadelab - spot.obj")
   {
-    std::vector<std::string> words{ SHADELAB_BINARY, "view", SharedMesh("spot.obj").string(),
+    std::vector<std::string> words{ SHADELAB_BINARY, "view", TestMesh("spot.obj").string(),
       "--size", size, "--camera-position", "3.9,1.5,-2.2" };
     words.insert(words.end(), args.begin(), args.end());
     this->Pid = fork();
@@ -270,7 +270,7 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   ASSERT_EQ(shown.Height, H);
   TempDir dir;
   const RunResult render =
-    RunShadelab({ "render", SharedMesh("spot.obj").string(), "-o", (dir / "r.png").string(),
+    RunShadelab({ "render", TestMesh("spot.obj").string(), "-o", (dir / "r.png").string(),
       "--size", std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" });
   ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
   const Image rendered = ReadImage(dir / "r.png");

@@ -1,14 +1,14 @@
 // shadelab: the lecture's illumination model and shading rules on triangle
 // meshes, through VTK. Each command lives in its own file.
-#include "advise_command.h"
-#include "bench_command.h"
-#include "compare_command.h"
-#include "errors.h"
-#include "metadata.h"
-#include "normals_command.h"
-#include "render_command.h"
+#include "commands/advise_command.h"
+#include "commands/bench_command.h"
+#include "commands/compare_command.h"
+#include "commands/normals_command.h"
+#include "commands/render_command.h"
+#include "commands/view_command.h"
+#include "core/errors.h"
+#include "image/metadata.h"
 #include "shadelabVersion.h"
-#include "view_command.h"
 #include "vtkShadelabOutputWindow.h"
 
 #include <vtkLogger.h>

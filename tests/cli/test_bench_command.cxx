@@ -1,7 +1,7 @@
 // `shadelab bench --quick` end to end (issue 6): the files it writes and
 // what its measurements must show.
+#include "bench/speed_accuracy.h"
 #include "cli_test_support.h"
-#include "speed_accuracy.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 // and marks exactly the pixels where two rules differ; the components add
 // up to the total; bad modes are one-line errors.
 #include "cli_test_support.h"
-#include "comparison_picture.h" // the layout's documented constants
+#include "image/comparison_picture.h" // the layout's documented constants
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // points, lights, sizes, numbers, shards, comparison modes and --diff). The first byte picks the
 // parser, the rest is the text. They may only answer or throw std::invalid_argument; what they
 // accept must be in range.
-#include "comparison_panels.h"
-#include "options.h"
+#include "core/options.h"
+#include "scene/comparison_panels.h"
 
 #include <cmath>
 #include <cstdint>

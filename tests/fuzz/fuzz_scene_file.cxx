@@ -2,7 +2,7 @@
 // parsed by ReadSceneFile. A finding is a crash, a sanitizer report, an
 // exception that escapes, or a file that parses but gives a shot without a
 // mesh or an output.
-#include "scene_file.h"
+#include "scene/scene_file.h"
 
 #include <unistd.h>
 

@@ -1,8 +1,8 @@
 // The comparison's pieces (issue 5): modes parsed onto the base scene,
 // terms split by zeroing coefficients, --diff resolved, the difference of
 // two pictures and its heat map, and the layout.
-#include "comparison_panels.h"
-#include "comparison_picture.h"
+#include "image/comparison_picture.h"
+#include "scene/comparison_panels.h"
 
 #include <gtest/gtest.h>
 

@@ -247,6 +247,10 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
   }
   for (const auto& entry : fs::directory_iterator(TestMeshes))
   {
+    if (entry.path().filename() == "README.md")
+    {
+      continue; // the meshes' sources and terms
+    }
     EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
       << entry.path() << " is not in this test's table";
   }

@@ -1,5 +1,5 @@
 // The option-value parsers of the command line (app/options.h).
-#include "options.h"
+#include "core/options.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Scene files (issue 7): what a valid file gives, each kind of invalid one
 // with its message, output templates, and the schema held to the parser.
-#include "scene_file.h"
+#include "scene/scene_file.h"
 
 #include <nlohmann/json.hpp>
 

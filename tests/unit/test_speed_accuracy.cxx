@@ -1,8 +1,8 @@
 // The pieces of `shadelab bench` that need no renderer: the error metrics,
 // the mesh-coarseness measure, the CSV and JSON files, the checks, the
 // progress line.
-#include "progress_bar.h"
-#include "speed_accuracy.h"
+#include "bench/speed_accuracy.h"
+#include "core/progress_bar.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>

@@ -270,8 +270,8 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   ASSERT_EQ(shown.Height, H);
   TempDir dir;
   const RunResult render =
-    RunShadelab({ "render", TestMesh("spot.obj").string(), "-o", (dir / "r.png").string(),
-      "--size", std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" });
+    RunShadelab({ "render", TestMesh("spot.obj").string(), "-o", (dir / "r.png").string(), "--size",
+      std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" });
   ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
   const Image rendered = ReadImage(dir / "r.png");
   // The same shaders on the same Mesa (llvmpipe through GLX here, through

@@ -1,0 +1,155 @@
+// shadelab-bench-frames: ms per frame of each shading rule through the
+// OSMesa backend, side by side in one run with VTK's own flat, Gouraud and
+// Phong (the peer a user would pick instead) and with the all-features
+// program that per-scene generation is measured against (issue 3).
+//
+//   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
+//
+// Each variant gets a fresh OpenGL context, so its first frame includes
+// compiling its programs; run with MESA_SHADER_CACHE_DISABLE=true to measure
+// compilation (scripts/bench-shading does).
+#include "core/errors.h"
+#include "core/milliseconds.h"
+#include "core/options.h"
+#include "headless/headless_renderer.h"
+#include "scene/mesh_input.h"
+#include "scene/scene.h"
+#include "vtkShadelabOutputWindow.h"
+#include "vtkShadelabShading.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkLogger.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+using namespace shadelab;
+
+namespace
+{
+struct Variant
+{
+  std::string Name;
+  Shading Rule;
+  bool VtkOwn = false;
+  bool AllFeatures = false;
+};
+
+// VTK's own lighting for rule: its per-fragment Phong-model code, its
+// interpolation setting, one positional VTK light where ours would be.
+void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, vtkActor* actor)
+{
+  const Material m = o.EffectiveMaterial();
+  vtkProperty* p = actor->GetProperty();
+  actor->GetShaderProperty()->ClearAllShaderReplacements();
+  vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->RemoveAllVertexAttributeMappings();
+  p->SetInterpolation(rule == Shading::Flat ? VTK_FLAT
+      : rule == Shading::Gouraud            ? VTK_GOURAUD
+                                            : VTK_PHONG);
+  p->SetAmbient(1);
+  p->SetAmbientColor(m.Ka[0] * o.Ambient[0], m.Ka[1] * o.Ambient[1], m.Ka[2] * o.Ambient[2]);
+  p->SetDiffuse(1);
+  p->SetDiffuseColor(m.Kd.data());
+  p->SetSpecular(1);
+  p->SetSpecularColor(m.Ks.data());
+  p->SetSpecularPower(m.Ns);
+  renderer->RemoveAllLights();
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->PositionalOn();
+  light->SetConeAngle(180);
+  light->SetPosition(renderer->GetActiveCamera()->GetPosition());
+  renderer->AddLight(light);
+}
+}
+
+int main(int argc, char** argv)
+{
+  vtkShadelabOutputWindow::Install();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  CLI::App app(
+    "ms per frame of each shading rule, ours against VTK's own", "shadelab-bench-frames");
+  SceneOptions o;
+  std::string size = "1920x1080";
+  int frames = 10;
+  int subdivide = 0;
+  app.add_option("MESH", o.Mesh)->required();
+  app.add_option("--size", size);
+  app.add_option("--frames", frames)->check(CLI::Range(1, 1000));
+  app.add_option("--subdivide", subdivide, "Loop subdivision levels first")
+    ->check(CLI::Range(0, 4));
+  CLI11_PARSE(app, argc, argv);
+  o.Size = ParseSize(size);
+
+  o.ShadingRule = Shading::Phong; // normals for the lit rules
+  LoadedMesh loaded = LoadMesh(o);
+  if (!loaded.Mesh)
+  {
+    return ReportError(o.Mesh, loaded.Error);
+  }
+  vtkSmartPointer<vtkPolyData> mesh = loaded.Mesh;
+  if (subdivide > 0)
+  {
+    mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
+  }
+
+  const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
+    { "vtk-gouraud", Shading::Gouraud, true }, { "vtk-phong", Shading::Phong, true },
+    { "flat", Shading::Flat }, { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong },
+    { "flat-allfeatures", Shading::Flat, false, true },
+    { "gouraud-allfeatures", Shading::Gouraud, false, true },
+    { "phong-allfeatures", Shading::Phong, false, true } };
+
+  std::printf(
+    "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
+  for (const Variant& v : variants)
+  {
+    SceneOptions scene = o;
+    scene.ShadingRule = v.Rule;
+    HeadlessRenderer renderer;
+    if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
+    {
+      return ReportError("render", error);
+    }
+    BuiltScene built = BuildScene(scene, mesh, renderer.GetRenderer());
+    if (v.VtkOwn)
+    {
+      built.Actor->GetMapper()->RemoveAllObservers();
+      vtkPolyDataMapper::SafeDownCast(built.Actor->GetMapper())->SetInputData(mesh);
+      UseVtkLighting(scene, v.Rule, renderer.GetRenderer(), built.Actor);
+    }
+    else if (v.AllFeatures)
+    {
+      built.Shading->SetAllFeatures(true);
+      built.Shading->Attach(built.Actor, renderer.GetRenderer());
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    renderer.Render();
+    auto t1 = std::chrono::steady_clock::now();
+    std::vector<double> times;
+    for (int i = 0; i < frames; ++i)
+    {
+      // A new camera position each frame, so nothing can be reused.
+      renderer.GetRenderer()->GetActiveCamera()->Azimuth(0.5);
+      const auto a = std::chrono::steady_clock::now();
+      renderer.Render();
+      times.push_back(Milliseconds(a, std::chrono::steady_clock::now()));
+    }
+    std::sort(times.begin(), times.end());
+    std::printf("| %s | %.1f | %.1f | %.1f | %.1f |\n", v.Name.c_str(), Milliseconds(t0, t1),
+      times[times.size() / 2], times.front(), times.back());
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -1,0 +1,130 @@
+#include "commands/compare_command.h"
+
+#include "core/errors.h"
+#include "headless/headless_renderer.h"
+#include "image/comparison_picture.h"
+#include "image/image_writer_process.h"
+#include "image/metadata.h"
+#include "scene/camera.h"
+#include "scene/comparison_panels.h"
+#include "scene/mesh_cache.h"
+#include "scene/scene.h"
+#include "vtkShadelabShading.h"
+
+#include <vtkActor.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace shadelab
+{
+CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
+{
+  CLI::App* compare = program.add_subcommand("compare",
+    "Render MESH headless once per mode into one picture: panels side by side, one camera, a "
+    "label each; --diff adds |A - B| as a heat map");
+  // A panel of 1024x768 makes a three-panel picture 3 k wide: smaller by default.
+  o.Scene.Size = { 512, 512 };
+  AddSceneOptions(*compare, o.Scene);
+  compare->get_option("MESH")->required();
+  compare->get_option("--size")->description("Each panel's size in pixels (default 512x512)");
+  compare->add_option("-o,--output", o.Output, "Image file; its extension picks the format")
+    ->required()
+    ->option_text("OUT");
+  AddComparisonOptions(*compare, o.Panels);
+  compare->add_flag("-q,--quiet", o.Quiet, "No warnings");
+  compare->footer(CameraHelp);
+  return compare;
+}
+
+int RunCompare(const CompareOptions& o, const std::string& commandLine)
+{
+  Comparison plan;
+  try
+  {
+    plan = PlanComparison(o.Panels, o.Scene);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::cerr << "shadelab: error: compare: " << e.what() << " (see shadelab compare --help)"
+              << std::endl;
+    return ExitUsage;
+  }
+  const std::vector<Panel>& panels = plan.Panels;
+  if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
+  {
+    return ReportError(o.Output, error);
+  }
+  ImageWriterProcess writer; // started first: it binds OpenImageIO while we render
+
+  MeshCache meshes;
+  HeadlessRenderer renderer;
+  if (const std::string error = renderer.Start(o.Scene.Size.Width, o.Scene.Size.Height);
+      !error.empty())
+  {
+    return ReportError("render", error);
+  }
+  // One actor per rule and mesh: panels that differ only in material or
+  // terms keep its compiled program and uploaded buffers.
+  std::map<std::pair<Shading, vtkPolyData*>, BuiltScene> scenes;
+  std::vector<FloatImage> pictures;
+  for (const Panel& panel : panels)
+  {
+    const LoadedMesh& loaded = meshes.Get(panel.Scene);
+    if (!loaded.Mesh)
+    {
+      return ReportError(panel.Scene.Mesh, loaded.Error);
+    }
+    renderer.Clear();
+    const auto key = std::make_pair(panel.Scene.ShadingRule, loaded.Mesh.GetPointer());
+    const auto before = scenes.find(key);
+    BuiltScene scene = BuildScene(panel.Scene, loaded.Mesh, renderer.GetRenderer(),
+      before == scenes.end() ? nullptr : &before->second);
+    if (!scene.Error.empty())
+    {
+      return ReportError("camera", scene.Error);
+    }
+    scenes[key] = scene;
+    pictures.push_back(renderer.Render());
+    if (!renderer.GetError().empty())
+    {
+      return ReportError("render", renderer.GetError());
+    }
+  }
+
+  std::vector<ComparisonCell> cells;
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < panels.size(); ++i)
+  {
+    cells.push_back({ &pictures[i], panels[i].Label });
+    labels.push_back(panels[i].Label);
+  }
+  std::unique_ptr<Difference> heat;
+  if (plan.DifferenceA >= 0)
+  {
+    heat = std::make_unique<Difference>(
+      CompareImages(pictures[plan.DifferenceA], pictures[plan.DifferenceB]));
+    cells.push_back({ &heat->Heat, plan.DifferenceLabel });
+    labels.push_back(plan.DifferenceLabel);
+    std::cout << "difference " << plan.DifferenceLabel << ": largest " << heat->Largest << ", mean "
+              << heat->Mean << ", " << heat->Differing << " of "
+              << static_cast<long long>(heat->Heat.Width) * heat->Heat.Height << " pixels differ"
+              << std::endl;
+  }
+  const FloatImage picture =
+    ComposeComparison(cells, plan.Columns, heat.get(), static_cast<int>(cells.size()) - 1);
+  const auto metadata =
+    DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera(), "", labels);
+  if (const std::string error = writer.Write(o.Output, picture, PixelType::Auto, metadata);
+      !error.empty())
+  {
+    return ReportError(o.Output, error);
+  }
+  return 0;
+}
+}

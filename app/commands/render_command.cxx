@@ -1,0 +1,118 @@
+#include "commands/render_command.h"
+
+#include "core/errors.h"
+#include "headless/batch.h"
+#include "scene/camera.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <tuple>
+
+namespace shadelab
+{
+CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
+{
+  CLI::App* render = program.add_subcommand(
+    "render", "Render MESH headless into the image OUT, or every shot of a scene file (--scene)");
+  AddSceneOptions(*render, o.Scene);
+  // With a scene file, the file says all that these say.
+  std::vector<CLI::Option*> sceneSettings =
+    render->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });
+  render
+    ->add_option("-o,--output", o.Output,
+      "Image file; its extension picks the format. With --scene: an output name template for "
+      "every shot, replacing the file's")
+    ->option_text("OUT");
+  const std::map<std::string, PixelType> types{ { "auto", PixelType::Auto },
+    { "uint8", PixelType::UInt8 }, { "uint16", PixelType::UInt16 }, { "half", PixelType::Half },
+    { "float", PixelType::Float } };
+  render
+    ->add_option("--pixel-type", o.Pixels,
+      "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)")
+    ->transform(CLI::CheckedTransformer(types))
+    ->option_text("auto|uint8|uint16|half|float");
+  sceneSettings.push_back(render->get_option("--pixel-type"));
+  render
+    ->add_option("--dump-shaders", o.DumpShaders,
+      "Write the final GLSL of each shader program into DIR (RULE-REFLECTION.vert/.frag)")
+    ->option_text("DIR");
+  render->add_flag("-v,--verbose", o.Verbose, "Print each phase's time and VTK's messages");
+  CLI::Option* scene = render
+                         ->add_option("--scene", o.SceneFile,
+                           "Every shot of a scene file, in one process (--print-schema shows "
+                           "its format)")
+                         ->option_text("FILE.json");
+  for (CLI::Option* setting : sceneSettings)
+  {
+    setting->excludes(scene);
+  }
+  render->get_option("--dump-shaders")->excludes(scene);
+  render->add_flag("--print-schema", o.PrintSchema, "Print the scene files' JSON Schema and exit");
+  render
+    ->add_option_function<std::string>(
+      "--shard",
+      [&o](const std::string& text)
+      {
+        try
+        {
+          std::tie(o.ShardIndex, o.ShardCount) = ParseShard(text);
+        }
+        catch (const std::invalid_argument& e)
+        {
+          throw CLI::ValidationError("--shard", e.what());
+        }
+      },
+      "With --scene: render only the shots whose index (from 0) mod N is I, so that N jobs "
+      "share a batch")
+    ->option_text("I/N")
+    ->needs(scene);
+  render->add_flag("--skip-existing", o.SkipExisting,
+    "Leave shots whose output file exists (outputs appear whole, by rename): finishes an "
+    "interrupted batch");
+  render->add_flag("-q,--quiet", o.Quiet,
+    "No warnings and no progress bar (none either when output is not a terminal)");
+  render->footer(CameraHelp);
+  return render;
+}
+
+int RunRender(const RenderOptions& o, const std::string& commandLine)
+{
+  if (o.PrintSchema)
+  {
+    std::cout << SceneSchema();
+    return 0;
+  }
+  BatchOptions batch;
+  batch.DumpShaders = o.DumpShaders;
+  batch.Verbose = o.Verbose;
+  batch.Quiet = o.Quiet;
+  batch.ShardIndex = o.ShardIndex;
+  batch.ShardCount = o.ShardCount;
+  batch.SkipExisting = o.SkipExisting;
+  std::vector<Shot> shots;
+  if (!o.SceneFile.empty())
+  {
+    if (const std::string error = ReadSceneFile(o.SceneFile, o.Output, shots); !error.empty())
+    {
+      return ReportError(o.SceneFile, error);
+    }
+  }
+  else
+  {
+    for (const auto& [missing, what] :
+      { std::pair{ o.Scene.Mesh.empty(), "MESH" }, std::pair{ o.Output.empty(), "--output" } })
+    {
+      if (missing)
+      {
+        std::cerr << "shadelab: error: render: " << what
+                  << " is required unless --scene gives the shots (see shadelab --help)"
+                  << std::endl;
+        return ExitUsage;
+      }
+    }
+    shots.push_back({ o.Scene, o.Output, o.Pixels, "" });
+  }
+  return RenderShots(shots, batch, commandLine);
+}
+}

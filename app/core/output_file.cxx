@@ -1,0 +1,227 @@
+#include "core/output_file.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+namespace shadelab
+{
+namespace
+{
+std::string CannotWrite(int error)
+{
+  return std::string("cannot write: ") + std::strerror(error);
+}
+
+std::string FolderOf(const std::string& path)
+{
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
+
+// "out.png" -> "out.png.tmp-": every temporary of path starts so.
+std::string TemporaryPrefix(const std::string& path)
+{
+  return std::filesystem::path(path).filename().string() + ".tmp-";
+}
+
+// A temporary that nobody holds locked was left by a run that died while
+// writing it (killed, crashed, the machine lost power): remove it. One that
+// is being written stays, whichever process writes it.
+void RemoveStaleTemporaries(const std::string& path)
+{
+  DIR* folder = opendir(FolderOf(path).c_str());
+  if (!folder)
+  {
+    return; // the open of the temporary reports what is wrong with the folder
+  }
+  const std::string prefix = TemporaryPrefix(path);
+  while (const dirent* entry = readdir(folder))
+  {
+    if (std::strncmp(entry->d_name, prefix.c_str(), prefix.size()) != 0)
+    {
+      continue;
+    }
+    const int fd = openat(
+      dirfd(folder), entry->d_name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0)
+    {
+      continue;
+    }
+    if (flock(fd, LOCK_EX | LOCK_NB) == 0)
+    {
+      unlinkat(dirfd(folder), entry->d_name, 0);
+    }
+    close(fd);
+  }
+  closedir(folder);
+}
+}
+
+OutputFile::OutputFile(std::string path)
+  : Path(std::move(path))
+{
+  RemoveStaleTemporaries(this->Path);
+  static std::atomic<unsigned> counter{ 0 };
+  for (int attempt = 0; attempt < 100; ++attempt)
+  {
+    this->Temporary =
+      this->Path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+    // 0666 less the umask: the permissions any new file of the user gets.
+    this->Descriptor = open(this->Temporary.c_str(),
+      O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOCTTY | O_NOFOLLOW, 0666);
+    if (this->Descriptor < 0)
+    {
+      const int error = errno;
+      this->Temporary.clear();
+      if (error == EEXIST)
+      {
+        continue;
+      }
+      this->Fail(nullptr, error);
+      return;
+    }
+    // Between the open and the lock, another run's RemoveStaleTemporaries
+    // may have taken the file for stale and removed it: then start again.
+    struct stat status = {};
+    if (flock(this->Descriptor, LOCK_EX) != 0 ||
+      (fstat(this->Descriptor, &status) == 0 && status.st_nlink > 0))
+    {
+      return; // locked and still there (or no locks here: written unlocked)
+    }
+    close(this->Descriptor);
+    this->Descriptor = -1;
+    this->Temporary.clear();
+  }
+  this->Fail(nullptr, EEXIST);
+}
+
+OutputFile::~OutputFile()
+{
+  if (this->Descriptor >= 0)
+  {
+    close(this->Descriptor);
+  }
+  if (!this->Temporary.empty())
+  {
+    unlink(this->Temporary.c_str());
+  }
+}
+
+bool OutputFile::Fail(const char* what, int error)
+{
+  if (this->Failure.empty())
+  {
+    this->Failure = what ? std::string("cannot write: ") + what + ": " + std::strerror(error)
+                         : CannotWrite(error);
+  }
+  return false;
+}
+
+bool OutputFile::Write(const void* data, std::size_t size)
+{
+  if (this->Descriptor < 0 || !this->Failure.empty())
+  {
+    return false;
+  }
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0)
+  {
+    const ssize_t written = write(this->Descriptor, bytes, size);
+    if (written < 0)
+    {
+      if (errno == EINTR)
+      {
+        continue;
+      }
+      return this->Fail(nullptr, errno);
+    }
+    bytes += written;
+    size -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
+std::string OutputFile::Commit()
+{
+  if (this->Descriptor < 0 || !this->Failure.empty())
+  {
+    return this->Failure;
+  }
+  if (fsync(this->Descriptor) != 0)
+  {
+    this->Fail(nullptr, errno);
+  }
+  // Closing gives up the lock before the rename: another run that removes
+  // stale temporaries of this very output in between makes the rename fail,
+  // which is reported; nothing is lost.
+  if (close(this->Descriptor) != 0)
+  {
+    this->Fail(nullptr, errno);
+  }
+  this->Descriptor = -1;
+  if (!this->Failure.empty())
+  {
+    return this->Failure;
+  }
+  if (std::rename(this->Temporary.c_str(), this->Path.c_str()) != 0)
+  {
+    this->Fail(nullptr, errno);
+    return this->Failure;
+  }
+  this->Temporary.clear();
+  // The rename is an entry of the folder: synced, it survives a power loss.
+  const int folder = open(FolderOf(this->Path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (folder < 0 || (fsync(folder) != 0 && errno != EINVAL))
+  {
+    this->Fail("the folder", errno);
+  }
+  if (folder >= 0)
+  {
+    close(folder);
+  }
+  return this->Failure;
+}
+
+std::string WriteFile(const std::string& path, std::string_view bytes)
+{
+  OutputFile file(path);
+  file.Write(bytes);
+  return file.Commit();
+}
+
+std::string WriteFileThroughMemory(
+  const std::string& path, const std::function<std::string(const std::string& name)>& write)
+{
+  const int memory = memfd_create("shadelab-output", MFD_CLOEXEC);
+  if (memory < 0)
+  {
+    return CannotWrite(errno);
+  }
+  std::string error = write("/proc/self/fd/" + std::to_string(memory));
+  if (error.empty())
+  {
+    OutputFile file(path);
+    std::vector<char> chunk(1 << 20);
+    off_t offset = 0;
+    ssize_t n = 0;
+    while ((n = pread(memory, chunk.data(), chunk.size(), offset)) > 0 &&
+      file.Write(chunk.data(), static_cast<std::size_t>(n)))
+    {
+      offset += n;
+    }
+    error = n < 0 ? CannotWrite(errno) : file.Commit();
+  }
+  close(memory);
+  return error;
+}
+}

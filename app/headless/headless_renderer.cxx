@@ -1,0 +1,66 @@
+#include "headless/headless_renderer.h"
+
+#include "core/errors.h"
+#include "headless/vtkShadelabFloatCapturePass.h"
+#include "headless/vtkShadelabOSMesaRenderWindow.h"
+#include "vtkShadelabOutputWindow.h"
+
+#include <vtkAutoInit.h>
+#include <vtkProp.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderer.h>
+
+// vtkRenderer::New and vtkPolyDataMapper::New return the OpenGL2 classes only
+// once this module's object factory is registered.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+namespace shadelab
+{
+HeadlessRenderer::HeadlessRenderer()
+  : Window(vtkSmartPointer<vtkShadelabOSMesaRenderWindow>::New())
+  , Renderer(vtkSmartPointer<vtkRenderer>::New())
+  , Capture(vtkSmartPointer<vtkShadelabFloatCapturePass>::New())
+{
+  this->Capture->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
+  this->Renderer->SetPass(this->Capture);
+  this->Window->AddRenderer(this->Renderer);
+}
+
+HeadlessRenderer::~HeadlessRenderer()
+{
+  this->Window->Finalize();
+}
+
+std::string HeadlessRenderer::Start(int width, int height)
+{
+  vtkShadelabOSMesaRenderWindow::ChooseRasterizerThreads();
+  this->Window->SetMultiSamples(0); // exact, repeatable pixels
+  this->Window->SetSize(width, height);
+  const MessageScope messages;
+  this->Window->Initialize();
+  if (!this->Window->GetContextReady())
+  {
+    return "headless OpenGL: " + messages.ErrorOr("no OSMesa context");
+  }
+  return {};
+}
+
+void HeadlessRenderer::Clear()
+{
+  this->Renderer->RemoveAllViewProps();
+}
+
+void HeadlessRenderer::Release(vtkProp* prop)
+{
+  prop->ReleaseGraphicsResources(this->Window);
+}
+
+FloatImage HeadlessRenderer::Render()
+{
+  const MessageScope messages;
+  this->Window->Render();
+  this->Error = messages.FirstError();
+  ReportWarnings("render", messages.Warnings());
+  return { this->Capture->GetWidth(), this->Capture->GetHeight(), this->Capture->GetPixels() };
+}
+}

@@ -1,0 +1,53 @@
+// The headless backend as the commands use it: an OSMesa render window with
+// one renderer whose frames are captured as unclamped floats.
+#ifndef shadelab_headless_renderer_h
+#define shadelab_headless_renderer_h
+
+#include "image/image_pixels.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkProp;
+class vtkRenderer;
+class vtkShadelabFloatCapturePass;
+class vtkShadelabOSMesaRenderWindow;
+
+namespace shadelab
+{
+class HeadlessRenderer
+{
+public:
+  HeadlessRenderer();
+  ~HeadlessRenderer();
+
+  /** Creates the OpenGL context for width x height pictures; an error text or "". */
+  std::string Start(int width, int height);
+
+  /** The renderer to fill with the scene. */
+  vtkRenderer* GetRenderer() const { return this->Renderer; }
+
+  /** Takes every prop out of the renderer (they keep their OpenGL resources). */
+  void Clear();
+
+  /** Frees prop's OpenGL resources (buffers; the compiled programs stay for others). */
+  void Release(vtkProp* prop);
+
+  /**
+   * Renders one frame and returns it. VTK's first error during the frame (a
+   * shader that does not compile, say) is then GetError(), else "";
+   * its warnings are reported.
+   */
+  FloatImage Render();
+  const std::string& GetError() const { return this->Error; }
+
+private:
+  vtkSmartPointer<vtkShadelabOSMesaRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkShadelabFloatCapturePass> Capture;
+  std::string Error;
+};
+}
+
+#endif

@@ -1,0 +1,62 @@
+// Rendered pixels and the contract's rules for storing them, without
+// OpenImageIO: shared by shadelab (which quantises 8-bit pictures before
+// handing them to the writer, a quarter of the bytes) and the writer.
+#ifndef shadelab_image_pixels_h
+#define shadelab_image_pixels_h
+
+#include "core/options.h"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+/** A rendered picture: RGBA floats, unclamped, bottom row first. */
+struct FloatImage
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<float> Rgba;
+};
+
+/** The pixel type that Auto means for path: float for EXR, HDR and PFM, else 8-bit. */
+PixelType ResolvePixelType(const std::string& path, PixelType requested);
+
+/** The picture as top-down RGB of type T, each value through convert. */
+template <typename T, typename Convert>
+std::vector<T> ToTopDownRgb(const FloatImage& image, Convert convert)
+{
+  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * 3);
+  for (int y = 0; y < image.Height; ++y)
+  {
+    const float* src =
+      image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
+    T* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
+    for (int x = 0; x < image.Width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        dst[3 * x + c] = convert(src[4 * x + c]);
+      }
+    }
+  }
+  return out;
+}
+
+/** round(scale*clamp(I, 0, 1)), the contract's rule for integer files, top-down RGB. */
+template <typename T>
+std::vector<T> Quantise(const FloatImage& image, double scale)
+{
+  return ToTopDownRgb<T>(image,
+    [scale](double v)
+    {
+      // NaN compares false and lands on 0.
+      const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
+      return static_cast<T>(std::floor(scale * clamped + 0.5));
+    });
+}
+}
+
+#endif

@@ -1,0 +1,36 @@
+// shadelab-image-writer: writes the pictures that shadelab sends on
+// standard input (image_writer_protocol.h), one after another, and answers
+// each on standard output with one line: empty when it was written, else
+// the error. See image_writer_process.h.
+#include "image/image_output.h"
+#include "image/image_writer_protocol.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <string>
+
+int main()
+{
+  // Ctrl-C reaches the whole process group: the writer finishes the picture
+  // it has (whole, renamed into place) and ends when shadelab closes the pipe.
+  std::signal(SIGINT, SIG_IGN);
+  std::signal(SIGTERM, SIG_IGN);
+  // A file-size limit (ulimit -f) makes the write fail with EFBIG, reported.
+  std::signal(SIGXFSZ, SIG_IGN);
+  // Until shadelab closes the pipe (or sends something malformed).
+  shadelab::ImageRequest request;
+  while (shadelab::ReceiveImageRequest(STDIN_FILENO, request))
+  {
+    std::string reply = shadelab::WriteImage(request.Path, request.Image, request.Type,
+      request.Metadata, request.Rgb8.empty() ? nullptr : &request.Rgb8);
+    std::replace(reply.begin(), reply.end(), '\n', ' ');
+    reply += '\n';
+    if (write(STDOUT_FILENO, reply.data(), reply.size()) != static_cast<ssize_t>(reply.size()))
+    {
+      return 1;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,67 @@
+// Images are written by a process of their own, started first thing.
+//
+// Debian's OpenImageIO links some 260 shared libraries (OpenCV, FFmpeg,
+// GDCM, ...), and binding them takes the dynamic loader about 0.25 s: a third
+// of a whole 1080p screenshot. Loading them on a thread does not help, since
+// glibc's loader lock, held throughout a dlopen, stalls Mesa's context and
+// shader compiler. So shadelab starts shadelab-image-writer (image_writer_main.cxx)
+// before it reads the mesh, the writer binds OpenImageIO in its own process
+// while shadelab renders, and then receives the picture through a pipe.
+#ifndef shadelab_image_writer_process_h
+#define shadelab_image_writer_process_h
+
+#include "image/image_pixels.h"
+
+#include <sys/types.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shadelab
+{
+class ImageWriterProcess
+{
+public:
+  /** Starts the writer process. */
+  ImageWriterProcess();
+  /** Stops the writer if no picture was handed over; it has written nothing. */
+  ~ImageWriterProcess();
+
+  /**
+   * What can be checked before any work, without OpenImageIO: the file has
+   * an extension and its folder exists and is writable. An error text or "".
+   */
+  static std::string CheckFolder(const std::string& path);
+
+  /** Hands the picture over and waits until it is written; an error text or "". */
+  std::string Write(const std::string& path, const FloatImage& image, PixelType type,
+    const std::vector<std::pair<std::string, std::string>>& metadata);
+
+  /**
+   * Hands the picture over and returns once the writer has it, so that the
+   * caller renders the next while this one is encoded. Each Submit must be
+   * followed by one Collect (before the next Submit); "" or an error text.
+   */
+  std::string Submit(const std::string& path, const FloatImage& image, PixelType type,
+    const std::vector<std::pair<std::string, std::string>>& metadata);
+
+  /** Waits until the submitted picture is written: "" or an error text. */
+  std::string Collect();
+
+private:
+  ImageWriterProcess(const ImageWriterProcess&) = delete;
+  void operator=(const ImageWriterProcess&) = delete;
+
+  int Wait();
+
+  pid_t Child = -1;
+  int ToChild = -1;
+  int FromChild = -1;
+  std::string StartError;
+  bool Written = false; // a picture was handed over: let the writer finish
+  bool Pending = false; // submitted, not yet collected
+};
+}
+
+#endif

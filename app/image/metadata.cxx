@@ -1,0 +1,124 @@
+#include "image/metadata.h"
+
+#include "scene/scene.h"
+#include "shadelabVersion.h"
+
+#include <vtkCamera.h>
+
+#include <nlohmann/json.hpp>
+
+namespace shadelab
+{
+std::string QuoteCommandLine(int argc, const char* const* argv)
+{
+  std::string line;
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool plain = !arg.empty() &&
+      arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                            "-_./=:,+@%") == std::string::npos;
+    if (i > 0)
+    {
+      line += ' ';
+    }
+    if (plain)
+    {
+      line += arg;
+      continue;
+    }
+    line += '\'';
+    for (char c : arg)
+    {
+      line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    line += '\'';
+  }
+  return line;
+}
+
+namespace
+{
+nlohmann::ordered_json LightJson(const Light& light)
+{
+  nlohmann::ordered_json j;
+  j["kind"] = ToString(light.Kind);
+  if (light.Kind != LightKind::Directional)
+  {
+    j["position"] = light.Position;
+  }
+  if (light.Kind != LightKind::Point)
+  {
+    j["direction"] = light.Direction;
+  }
+  j["color"] = light.Color;
+  if (light.Kind == LightKind::Spot)
+  {
+    j["half_angle_deg"] = light.HalfAngleDeg;
+    j["exponent"] = light.Exponent;
+  }
+  return j;
+}
+}
+
+std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
+  const SceneOptions& o, vtkCamera* camera, const std::string& shot,
+  const std::vector<std::string>& panels)
+{
+  const Material m = o.EffectiveMaterial();
+  Vec3 position, focal, up;
+  camera->GetPosition(position.data());
+  camera->GetFocalPoint(focal.data());
+  camera->GetViewUp(up.data());
+
+  nlohmann::ordered_json j;
+  j["shadelab"] = ShadelabVersion;
+  j["command"] = commandLine;
+  if (!shot.empty())
+  {
+    j["shot"] = shot;
+  }
+  if (!panels.empty())
+  {
+    j["panels"] = panels;
+  }
+  j["mesh"] = o.Mesh;
+  j["shading"] = ToString(o.ShadingRule);
+  j["reflection"] = ToString(o.ReflectionModel);
+  j["material"] = { { "name", m.Name }, { "ka", m.Ka }, { "kd", m.Kd }, { "ks", m.Ks },
+    { "ns", m.Ns } };
+  j["ambient"] = o.Ambient;
+  auto lights = nlohmann::ordered_json::array();
+  for (const Light& light : EffectiveLights(o, position))
+  {
+    lights.push_back(LightJson(light));
+  }
+  j["lights"] = lights;
+  nlohmann::ordered_json cam;
+  cam["projection"] = o.Orthographic ? "orthographic" : "perspective";
+  cam["position"] = position;
+  cam["focal_point"] = focal;
+  cam["view_up"] = up;
+  if (o.Orthographic)
+  {
+    cam["parallel_scale"] = camera->GetParallelScale();
+  }
+  else
+  {
+    cam["view_angle_deg"] = camera->GetViewAngle();
+  }
+  j["camera"] = cam;
+  j["size"] = { o.Size.Width, o.Size.Height };
+  j["background"] = o.Background;
+  j["normals"] = ToString(o.Normals);
+  j["weighting"] = o.Computed.Weighting;
+  j["feature_angle"] =
+    o.Computed.FeatureAngle ? nlohmann::json(*o.Computed.FeatureAngle) : nlohmann::json();
+  j["orient"] = o.Computed.Orient;
+
+  // OpenImageIO's EXR writer stamps the current time unless DateTime is
+  // set; an empty one keeps the file a function of the scene alone.
+  return { { "Software", std::string("shadelab ") + ShadelabVersion },
+    { "ImageDescription", j.dump() }, { "DateTime", "" } };
+}
+}

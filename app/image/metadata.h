@@ -1,0 +1,30 @@
+// What a picture carries about how it was made (issue 2, "Images out"):
+// the command line, shading, material, lights, camera and shadelab version.
+#ifndef shadelab_metadata_h
+#define shadelab_metadata_h
+
+#include "core/options.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkCamera;
+
+namespace shadelab
+{
+/** argv as one shell-quoted line. */
+std::string QuoteCommandLine(int argc, const char* const* argv);
+
+/**
+ * The image attributes: "Software" and "ImageDescription" (JSON of every
+ * parameter, the camera as rendered; `shot`, when given, names the scene
+ * file and shot it comes from; `panels`, a comparison's panel labels). No
+ * time stamps: the same scene gives the same bytes.
+ */
+std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
+  const SceneOptions& options, vtkCamera* camera, const std::string& shot = "",
+  const std::vector<std::string>& panels = {});
+}
+
+#endif

@@ -1,0 +1,27 @@
+// The camera of the contract: every given option used as it is, the missing
+// ones fitted to the mesh the way VTK's ResetCamera does.
+#ifndef shadelab_camera_h
+#define shadelab_camera_h
+
+#include "core/options.h"
+
+#include <string>
+
+class vtkCamera;
+
+namespace shadelab
+{
+/**
+ * Sets camera from options for a mesh with the given bounds and an image of
+ * the given aspect (width/height). Returns an error text for an impossible
+ * camera (position at the focal point, view-up along the view direction),
+ * else an empty string. The clipping range is left to the renderer.
+ */
+std::string ApplyCamera(
+  const SceneOptions& options, const double bounds[6], double aspect, vtkCamera* camera);
+
+/** The conventions above, for --help. */
+extern const char* const CameraHelp;
+}
+
+#endif

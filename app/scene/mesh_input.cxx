@@ -1,0 +1,107 @@
+#include "scene/mesh_input.h"
+
+#include "core/errors.h"
+#include "vtkShadelabMeshNormals.h"
+#include "vtkShadelabMeshReader.h"
+#include "vtkShadelabOutputWindow.h"
+
+#include <vtkCleanPolyData.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkLoopSubdivisionFilter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+namespace shadelab
+{
+ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings)
+{
+  auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+  normals->SetInputData(mesh);
+  normals->SetWeightingByName(settings.Weighting.c_str());
+  normals->SetSplitting(settings.FeatureAngle.has_value());
+  normals->SetFeatureAngle(settings.FeatureAngle.value_or(0));
+  normals->SetConsistency(settings.Orient);
+  const MessageScope messages;
+  ComputedNormals result;
+  if (normals->GetExecutive()->Update())
+  {
+    result.Mesh = normals->GetOutput();
+    result.DuplicatedFaces = normals->GetNumberOfDuplicatedFaces();
+  }
+  else
+  {
+    result.Error = messages.ErrorOr("cannot be computed");
+  }
+  result.Warnings = messages.Warnings();
+  return result;
+}
+
+vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
+{
+  auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
+  clean->SetInputData(mesh);
+  auto loop = vtkSmartPointer<vtkLoopSubdivisionFilter>::New();
+  loop->SetInputConnection(clean->GetOutputPort());
+  loop->SetNumberOfSubdivisions(levels);
+  loop->Update();
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(loop->GetOutput());
+  if (result->GetPoints()->GetDataType() != VTK_DOUBLE)
+  {
+    auto xyz = vtkSmartPointer<vtkDoubleArray>::New();
+    xyz->DeepCopy(result->GetPoints()->GetData()); // converts
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetData(xyz);
+    result->SetPoints(points);
+  }
+  return result;
+}
+
+LoadedMesh LoadMesh(const SceneOptions& options)
+{
+  LoadedMesh result;
+  auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
+  reader->SetFileName(options.Mesh.c_str());
+  // Computed normals are smooth across an OBJ's vn seams only if the
+  // vertices are not split by the file's normals in the first place.
+  reader->SetReadNormals(options.Normals != NormalsMode::Compute);
+  {
+    const MessageScope messages;
+    const bool read = reader->GetExecutive()->Update();
+    ReportWarnings(options.Mesh, messages.Warnings());
+    if (!read)
+    {
+      result.Error = messages.ErrorOr("cannot be read");
+      return result;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+  result.NormalsFromFile = mesh->GetPointData()->GetNormals() != nullptr;
+
+  if (options.Normals == NormalsMode::File && !result.NormalsFromFile)
+  {
+    result.Error = "has no vertex normals (--normals file)";
+    return result;
+  }
+  const bool lit = options.ShadingRule == Shading::Gouraud || options.ShadingRule == Shading::Phong;
+  const bool compute = options.Normals == NormalsMode::Compute ||
+    (options.Normals == NormalsMode::Auto && !result.NormalsFromFile);
+  if (lit && compute)
+  {
+    const ComputedNormals normals = ComputeNormals(mesh, options.Computed);
+    ReportWarnings(options.Mesh, normals.Warnings);
+    if (!normals.Mesh)
+    {
+      result.Error = "normals: " + normals.Error;
+      return result;
+    }
+    mesh = normals.Mesh;
+    result.DuplicatedFaces = normals.DuplicatedFaces;
+    result.NormalsFromFile = false;
+  }
+  result.Mesh = mesh;
+  return result;
+}
+}

@@ -1,0 +1,48 @@
+// The VTK scene of one picture: the mesh's actor with its material, the
+// lights and the camera, in a renderer.
+#ifndef shadelab_scene_h
+#define shadelab_scene_h
+
+#include "core/options.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+class vtkShadelabShading;
+
+namespace shadelab
+{
+/** What a built scene is made of; the shading must live as long as the actor draws. */
+struct BuiltScene
+{
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkShadelabShading> Shading;
+  std::string Error;           // an impossible scene (camera), else empty
+  vtkPolyData* Mesh = nullptr; // what the actor draws, before the rule prepared it
+};
+
+/**
+ * Fills renderer with mesh as options describe, lit by the lecture's
+ * shaders. With `reuse`, a scene built before that drew the same mesh with
+ * the same rule, its actor is taken over (its mapper keeps the uploaded
+ * buffers; only the lighting changes).
+ */
+BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
+  const BuiltScene* reuse = nullptr);
+
+/**
+ * The actor part of BuildScene: mesh lit as options say by `lights` (world
+ * coordinates), under the renderer's camera as it is; `reuse` as there.
+ */
+BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr);
+
+/** The lights the scene uses: the given ones, or the lecture's default. */
+std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
+}
+
+#endif

@@ -1,0 +1,52 @@
+// Scene files (issue 7): `shadelab render --scene FILE.json` takes every
+// scene option, and many shots, from one JSON file. The format is
+// data/scene.schema.json (`shadelab render --print-schema`); README.md
+// shows it. Every value goes through the command line's own parsers, so a
+// key means exactly what its option means.
+#ifndef shadelab_scene_file_h
+#define shadelab_scene_file_h
+
+#include "core/options.h"
+
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+/** One picture to render: everything the render command takes. */
+struct Shot
+{
+  SceneOptions Scene;
+  std::string Output;
+  PixelType Pixels = PixelType::Auto;
+  std::string Label; // "scene.json shots[3]" for a scene file's shot, "" on the command line
+};
+
+/** The JSON Schema of scene files (data/scene.schema.json, compiled in). */
+const char* SceneSchema();
+
+/** The keys a shot may have, in the schema's order (for tests that hold the two together). */
+const std::vector<std::string>& SceneShotKeys();
+
+/**
+ * Reads the shots of the scene file at path. outputTemplate, when not
+ * empty, replaces every shot's "output". Mesh paths are relative to the
+ * scene file's folder, outputs to the current folder. Returns "" or the
+ * problem, starting with its JSON path: `shots[3].lights[0].kind: unknown
+ * kind "laser"`.
+ */
+std::string ReadSceneFile(
+  const std::string& path, const std::string& outputTemplate, std::vector<Shot>& shots);
+
+/**
+ * Fills an output name template for shot number index of count: {mesh}
+ * (the mesh file's name without extension), {shading}, {reflection},
+ * {material}, {weighting}, {size} (WxH), {index} (zero-padded to count's
+ * digits), {name} (the shot's "name", else its index); "{{" and "}}" are
+ * braces. Returns "" or the problem.
+ */
+std::string ExpandOutputTemplate(const std::string& pattern, const Shot& shot,
+  const std::string& name, std::size_t index, std::size_t count, std::string& output);
+}
+
+#endif

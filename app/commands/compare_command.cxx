@@ -9,6 +9,7 @@
 #include "scene/comparison_panels.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene.h"
+#include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -69,27 +70,17 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   {
     return ReportError("render", error);
   }
-  // One actor per rule and mesh: panels that differ only in material or
-  // terms keep its compiled program and uploaded buffers.
-  std::map<std::pair<Shading, vtkPolyData*>, BuiltScene> scenes;
+  // Panels that differ only in material or terms keep their rule's
+  // compiled program and uploaded buffers.
+  SceneCache scenes(meshes);
   std::vector<FloatImage> pictures;
   for (const Panel& panel : panels)
   {
-    const LoadedMesh& loaded = meshes.Get(panel.Scene);
-    if (!loaded.Mesh)
+    if (const SceneCache::Shown shown = scenes.Show(panel.Scene, renderer.GetRenderer());
+        !shown.Scene)
     {
-      return ReportError(panel.Scene.Mesh, loaded.Error);
+      return ReportError(shown.Input, shown.Error);
     }
-    renderer.Clear();
-    const auto key = std::make_pair(panel.Scene.ShadingRule, loaded.Mesh.GetPointer());
-    const auto before = scenes.find(key);
-    BuiltScene scene = BuildScene(panel.Scene, loaded.Mesh, renderer.GetRenderer(),
-      before == scenes.end() ? nullptr : &before->second);
-    if (!scene.Error.empty())
-    {
-      return ReportError("camera", scene.Error);
-    }
-    scenes[key] = scene;
     pictures.push_back(renderer.Render());
     if (!renderer.GetError().empty())
     {

@@ -14,6 +14,7 @@
 #include "scene/comparison_panels.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene.h"
+#include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -116,10 +117,13 @@ private:
   // reuses the compiled program and the uploaded buffers.
   struct Slot
   {
+    explicit Slot(MeshCache& meshes)
+      : Scenes(meshes)
+    {
+    }
     vtkSmartPointer<vtkRenderer> Renderer;
     vtkSmartPointer<vtkTextActor> Label;
-    std::map<std::pair<Shading, vtkPolyData*>, BuiltScene> Scenes;
-    std::pair<Shading, vtkPolyData*> Shown{ Shading::None, nullptr };
+    SceneCache Scenes;
     std::map<vtkPolyData*, vtkSmartPointer<vtkActor>> Glyphs, Edges;
   };
 
@@ -337,10 +341,9 @@ void Inspector::FollowCamera()
   const std::vector<Light> lights = CameraLights(this->Options.Scene);
   for (Slot& slot : this->Slots)
   {
-    const auto shown = slot.Scenes.find(slot.Shown);
-    if (shown != slot.Scenes.end())
+    if (const BuiltScene* shown = slot.Scenes.GetShown())
     {
-      shown->second.Shading->SetLightPlacement(lights);
+      shown->Shading->SetLightPlacement(lights);
     }
   }
 }
@@ -360,7 +363,10 @@ void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
   }
   this->Window->RemoveRenderer(this->DifferenceRenderer);
   this->Slots.clear();
-  this->Slots.resize(count);
+  while (this->Slots.size() < count)
+  {
+    this->Slots.emplace_back(this->Meshes);
+  }
   this->Columns = grid.Columns;
   this->Rows = grid.Rows;
   this->DifferenceCell = difference;
@@ -533,20 +539,12 @@ void Inspector::Apply()
   {
     Slot& slot = this->Slots[i];
     const SceneOptions& scene = panels[i].Scene;
-    const LoadedMesh& loaded = this->Meshes.Get(scene);
-    if (!loaded.Mesh)
+    const std::vector<Light> lights = CameraLights(scene);
+    const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights);
+    if (!shown.Scene)
     {
-      this->Problem = loaded.Error;
+      this->Problem = shown.Error;
       continue;
-    }
-    const auto key = std::make_pair(scene.ShadingRule, loaded.Mesh.GetPointer());
-    const auto before = slot.Scenes.find(key);
-    slot.Scenes[key] = BuildActor(scene, CameraLights(scene), loaded.Mesh, slot.Renderer,
-      before == slot.Scenes.end() ? nullptr : &before->second);
-    slot.Shown = key;
-    for (auto& [other, built] : slot.Scenes)
-    {
-      built.Actor->SetVisibility(other == key);
     }
     for (auto* extras : { &slot.Glyphs, &slot.Edges })
     {
@@ -567,7 +565,7 @@ void Inspector::Apply()
     }
     if (this->EdgesOn)
     {
-      this->EdgesOf(slot, loaded.Mesh)->VisibilityOn();
+      this->EdgesOf(slot, shown.Mesh->Mesh)->VisibilityOn();
     }
     slot.Label->SetInput(panels[i].Label.c_str());
     slot.Label->SetVisibility(this->CompareOn);

@@ -9,6 +9,7 @@
 #include "image/metadata.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene.h"
+#include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -123,11 +124,15 @@ int RenderShots(
   // current mesh, one per rule, whose actors keep their uploaded buffers.
   struct Context
   {
+    explicit Context(MeshCache& meshes)
+      : Scenes(meshes)
+    {
+    }
     std::unique_ptr<HeadlessRenderer> Renderer;
-    std::map<Shading, BuiltScene> Scenes;
+    SceneCache Scenes;
   };
-  std::map<std::pair<int, int>, Context> contexts;
   MeshCache meshes;
+  std::map<std::pair<int, int>, Context> contexts;
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
   std::size_t done = 0, skipped = 0;
   for (; done < mine.size() && !Interrupted; ++done)
@@ -159,7 +164,8 @@ int RenderShots(
       fail(shot, shot.Scene.Mesh, loaded.Error);
       continue;
     }
-    Context& context = contexts[{ shot.Scene.Size.Width, shot.Scene.Size.Height }];
+    Context& context =
+      contexts.try_emplace({ shot.Scene.Size.Width, shot.Scene.Size.Height }, meshes).first->second;
     if (!context.Renderer)
     {
       context.Renderer = std::make_unique<HeadlessRenderer>();
@@ -175,31 +181,17 @@ int RenderShots(
     }
     HeadlessRenderer& renderer = *context.Renderer;
     // Another mesh: the previous one's buffers go.
-    for (auto it = context.Scenes.begin(); it != context.Scenes.end();)
+    context.Scenes.ForgetOtherMeshes(loaded.Mesh, renderer.GetRenderer());
+    const SceneCache::Shown shown = context.Scenes.Show(shot.Scene, renderer.GetRenderer());
+    if (!shown.Scene)
     {
-      if (it->second.Mesh != loaded.Mesh.GetPointer())
-      {
-        renderer.Release(it->second.Actor);
-        it = context.Scenes.erase(it);
-      }
-      else
-      {
-        ++it;
-      }
-    }
-    renderer.Clear();
-    const auto before = context.Scenes.find(shot.Scene.ShadingRule);
-    BuiltScene scene = BuildScene(shot.Scene, loaded.Mesh, renderer.GetRenderer(),
-      before == context.Scenes.end() ? nullptr : &before->second);
-    if (!scene.Error.empty())
-    {
-      fail(shot, "camera", scene.Error);
+      fail(shot, shown.Input, shown.Error);
       continue;
     }
     std::unique_ptr<ShaderDump> dump;
     if (!o.DumpShaders.empty())
     {
-      dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), o.DumpShaders,
+      dump = std::make_unique<ShaderDump>(shown.Scene->Actor->GetMapper(), o.DumpShaders,
         std::string(ToString(shot.Scene.ShadingRule)) + "-" + ToString(shot.Scene.ReflectionModel));
     }
     const FloatImage image = renderer.Render();
@@ -216,7 +208,6 @@ int RenderShots(
     }
     const auto metadata = DescribePicture(
       commandLine, shot.Scene, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
-    context.Scenes[shot.Scene.ShadingRule] = scene;
     collect(); // the previous picture, encoded while this one rendered
     if (const std::string error = writer.Submit(shot.Output, image, shot.Pixels, metadata);
         !error.empty())

@@ -6,7 +6,6 @@
 #include "vtkShadelabOutputWindow.h"
 
 #include <vtkAutoInit.h>
-#include <vtkProp.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
 
@@ -43,16 +42,6 @@ std::string HeadlessRenderer::Start(int width, int height)
     return "headless OpenGL: " + messages.ErrorOr("no OSMesa context");
   }
   return {};
-}
-
-void HeadlessRenderer::Clear()
-{
-  this->Renderer->RemoveAllViewProps();
-}
-
-void HeadlessRenderer::Release(vtkProp* prop)
-{
-  prop->ReleaseGraphicsResources(this->Window);
 }
 
 FloatImage HeadlessRenderer::Render()

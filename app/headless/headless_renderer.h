@@ -9,7 +9,6 @@
 
 #include <string>
 
-class vtkProp;
 class vtkRenderer;
 class vtkShadelabFloatCapturePass;
 class vtkShadelabOSMesaRenderWindow;
@@ -27,12 +26,6 @@ public:
 
   /** The renderer to fill with the scene. */
   vtkRenderer* GetRenderer() const { return this->Renderer; }
-
-  /** Takes every prop out of the renderer (they keep their OpenGL resources). */
-  void Clear();
-
-  /** Frees prop's OpenGL resources (buffers; the compiled programs stay for others). */
-  void Release(vtkProp* prop);
 
   /**
    * Renders one frame and returns it. VTK's first error during the frame (a

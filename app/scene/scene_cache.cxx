@@ -1,0 +1,67 @@
+#include "scene/scene_cache.h"
+
+#include "vtkShadelabShading.h"
+
+#include <vtkActor.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+namespace shadelab
+{
+SceneCache::Shown SceneCache::Show(
+  const SceneOptions& options, vtkRenderer* renderer, const std::vector<Light>* lights)
+{
+  Shown shown;
+  const LoadedMesh& loaded = this->Meshes->Get(options);
+  if (!loaded.Mesh)
+  {
+    shown.Input = options.Mesh;
+    shown.Error = loaded.Error;
+    return shown;
+  }
+  shown.Mesh = &loaded;
+  const Key key{ options.ShadingRule, loaded.Mesh.GetPointer() };
+  const auto before = this->Scenes.find(key);
+  const BuiltScene* reuse = before == this->Scenes.end() ? nullptr : &before->second;
+  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse)
+                            : BuildScene(options, loaded.Mesh, renderer, reuse);
+  if (!scene.Error.empty())
+  {
+    shown.Input = "camera";
+    shown.Error = scene.Error;
+    return shown;
+  }
+  BuiltScene& kept = this->Scenes[key] = scene;
+  this->Current = key;
+  for (auto& [other, built] : this->Scenes)
+  {
+    built.Actor->SetVisibility(other == key);
+  }
+  shown.Scene = &kept;
+  return shown;
+}
+
+const BuiltScene* SceneCache::GetShown() const
+{
+  const auto shown = this->Scenes.find(this->Current);
+  return shown == this->Scenes.end() ? nullptr : &shown->second;
+}
+
+void SceneCache::ForgetOtherMeshes(const vtkPolyData* keep, vtkRenderer* renderer)
+{
+  for (auto it = this->Scenes.begin(); it != this->Scenes.end();)
+  {
+    if (it->first.second != keep)
+    {
+      renderer->RemoveActor(it->second.Actor);
+      it->second.Actor->ReleaseGraphicsResources(renderer->GetRenderWindow());
+      it = this->Scenes.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+}

@@ -55,7 +55,10 @@ using namespace shadelab::vec3;
 using shadelab::Clock;
 using shadelab::Milliseconds;
 
-const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
+const char* WeightingName(int weighting)
+{
+  return shadelab::ToString(static_cast<vtkShadelabMeshNormals::Weightings>(weighting));
+}
 
 // ---------------------------------------------------------------------------
 // The machine.
@@ -238,8 +241,8 @@ void SpeedTable(vtkPolyData* mesh, const std::string& name, int runs)
   {
     const int other = w == N::Max ? N::Angle : N::Max;
     add(
-      std::string("ours, cached mesh, re-weighted ") + WeightingNames[other] + " -> " +
-        WeightingNames[w],
+      std::string("ours, cached mesh, re-weighted ") + WeightingName(other) + " -> " +
+        WeightingName(w),
       [&, other]
       {
         cached->SetWeighting(other);
@@ -296,7 +299,7 @@ void SpeedTable(vtkPolyData* mesh, const std::string& name, int runs)
   for (int w = N::Uniform; w <= N::Loop; ++w)
   {
     std::string& list = rows[reweightedTo[w]].M.Median <= 0.3 * vtkPlain ? met : missed;
-    list += (list.empty() ? "" : ", ") + std::string(WeightingNames[w]);
+    list += (list.empty() ? "" : ", ") + std::string(WeightingName(w));
   }
   std::printf("- goal: cached re-weighting <= 0.3 x vtkPolyDataNormals without splitting and "
               "consistency: to angle (the default) **%.2f**, %s; met for %s; NOT met for %s\n",
@@ -594,7 +597,7 @@ void AccuracyTable()
   for (int k = 0; k <= vtkShadelabMeshNormals::Loop + 1; ++k)
   {
     std::printf("| %s |",
-      k <= vtkShadelabMeshNormals::Loop ? WeightingNames[k]
+      k <= vtkShadelabMeshNormals::Loop ? WeightingName(k)
                                         : "vtkPolyDataNormals (no splitting, no consistency)");
     for (const Column& c : columns)
     {

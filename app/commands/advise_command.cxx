@@ -177,9 +177,9 @@ int RunAdvise(const AdviseOptions& o)
     return ReportError(source, problem);
   }
   const Model model(rows, o.Size, o.Normals.Weighting);
-  const char* rules[] = { "flat", "gouraud", "phong" };
-  for (const char* rule : rules)
+  for (const Shading lit : LitRules)
   {
+    const char* rule = ToString(lit);
     if (!model.Has(rule))
     {
       return ReportError(source,
@@ -215,8 +215,9 @@ int RunAdvise(const AdviseOptions& o)
   std::vector<Option> options;
   for (int level = 0; level <= 3; ++level)
   {
-    for (const char* rule : rules)
+    for (const Shading lit : LitRules)
     {
+      const char* rule = ToString(lit);
       options.push_back(
         { rule, level, model.Predict(rule, angle / (1 << level), triangles * (1 << (2 * level))) });
     }

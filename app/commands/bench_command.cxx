@@ -184,7 +184,6 @@ std::string Summary(
       tables[{ r.Surface, r.Width, r.Height }][r.Triangles][r.Shading] = &r;
     }
   }
-  const char* rules[] = { "flat", "gouraud", "phong" };
   for (const auto& [key, levels] : tables)
   {
     md << "## " << std::get<0>(key) << ", " << std::get<1>(key) << "x" << std::get<2>(key)
@@ -193,14 +192,14 @@ std::string Summary(
     for (const auto& [triangles, byRule] : levels)
     {
       md << "| " << triangles << " | " << Format("%.2f", byRule.begin()->second->EdgeAngle) << " |";
-      for (const char* rule : rules)
+      for (const Shading rule : LitRules)
       {
-        const auto it = byRule.find(rule);
+        const auto it = byRule.find(ToString(rule));
         md << " " << (it == byRule.end() ? "" : Format("%.2e", it->second->Rmse)) << " |";
       }
-      for (const char* rule : rules)
+      for (const Shading rule : LitRules)
       {
-        const auto it = byRule.find(rule);
+        const auto it = byRule.find(ToString(rule));
         md << " " << (it == byRule.end() ? "" : Format("%.1f", it->second->MsPerFrame)) << " |";
       }
       const auto phong = byRule.find("phong");

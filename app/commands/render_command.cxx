@@ -1,5 +1,6 @@
 #include "commands/render_command.h"
 
+#include "core/cli_choice.h"
 #include "core/errors.h"
 #include "headless/batch.h"
 #include "scene/camera.h"
@@ -24,14 +25,8 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
       "Image file; its extension picks the format. With --scene: an output name template for "
       "every shot, replacing the file's")
     ->option_text("OUT");
-  const std::map<std::string, PixelType> types{ { "auto", PixelType::Auto },
-    { "uint8", PixelType::UInt8 }, { "uint16", PixelType::UInt16 }, { "half", PixelType::Half },
-    { "float", PixelType::Float } };
-  render
-    ->add_option("--pixel-type", o.Pixels,
-      "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)")
-    ->transform(CLI::CheckedTransformer(types))
-    ->option_text("auto|uint8|uint16|half|float");
+  AddChoice(*render, "--pixel-type", o.Pixels,
+    "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)");
   sceneSettings.push_back(render->get_option("--pixel-type"));
   render
     ->add_option("--dump-shaders", o.DumpShaders,

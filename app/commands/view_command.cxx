@@ -39,13 +39,11 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
   AddSceneOptions(*view, o.Scene);
   view->get_option("MESH")->required();
   view->get_option("--size")->description("Window size in pixels (default 1024x768)");
-  const std::map<std::string, Shading> rules{ { "none", Shading::None }, { "flat", Shading::Flat },
-    { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong } };
   view
     ->add_option("--interactive-shading", o.InteractiveShading,
       "A cheaper rule while the mouse drags; the full rule returns on release")
-    ->transform(CLI::CheckedTransformer(rules))
-    ->option_text("none|flat|gouraud|phong");
+    ->transform(CLI::CheckedTransformer(NamedValues<Shading>()))
+    ->option_text(JoinedNames<Shading>("|"));
   view->add_flag("--compare", o.Compare, "Start in the comparison layout (key c)");
   view->add_flag("-q,--quiet", o.Quiet, "No warnings");
   AddComparisonOptions(*view, o.Panels);

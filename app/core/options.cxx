@@ -1,5 +1,8 @@
 #include "core/options.h"
 
+#include "core/cli_choice.h"
+#include "vtkShadelabMeshNormals.h"
+
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -141,15 +144,21 @@ Light ParseLight(const std::string& text)
   const auto parts = Split(text, ':');
   Light light;
   const std::string& kind = parts[0];
+  const std::optional<LightKind> known = FromName<LightKind>(kind);
+  if (!known)
+  {
+    throw std::invalid_argument(
+      "unknown light kind '" + kind + "' (known: " + JoinedNames<LightKind>(", ") + ")");
+  }
+  light.Kind = *known;
   std::size_t colourAt = 0;
-  if (kind == "point" || kind == "directional")
+  if (light.Kind != LightKind::Spot)
   {
     if (parts.size() < 2 || parts.size() > 3)
     {
       throw std::invalid_argument("'" + text + "' is not " + kind +
-        (kind == "point" ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
+        (light.Kind == LightKind::Point ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
     }
-    light.Kind = kind == "point" ? LightKind::Point : LightKind::Directional;
     if (light.Kind == LightKind::Point)
     {
       light.Position = ParseVec3(parts[1]);
@@ -160,14 +169,13 @@ Light ParseLight(const std::string& text)
     }
     colourAt = 2;
   }
-  else if (kind == "spot")
+  else
   {
     if (parts.size() < 4 || parts.size() > 6)
     {
       throw std::invalid_argument(
         "'" + text + "' is not spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]]");
     }
-    light.Kind = LightKind::Spot;
     light.Position = ParseVec3(parts[1]);
     light.Direction = ParseDirection(parts[2]);
     light.HalfAngleDeg = ParseNumber(parts[3]);
@@ -180,11 +188,6 @@ Light ParseLight(const std::string& text)
       light.Exponent = NonNegative(ParseNumber(parts[4]), parts[4]);
     }
     colourAt = 5;
-  }
-  else
-  {
-    throw std::invalid_argument(
-      "unknown light kind '" + kind + "' (known: point, directional, spot)");
   }
   if (parts.size() > colourAt)
   {
@@ -214,38 +217,6 @@ std::pair<int, int> ParseShard(const std::string& text)
   return { index, count };
 }
 
-const char* ToString(NormalsMode mode)
-{
-  switch (mode)
-  {
-    case NormalsMode::Auto:
-      return "auto";
-    case NormalsMode::File:
-      return "file";
-    case NormalsMode::Compute:
-      return "compute";
-  }
-  return "?";
-}
-
-const char* ToString(PixelType type)
-{
-  switch (type)
-  {
-    case PixelType::Auto:
-      return "auto";
-    case PixelType::UInt8:
-      return "uint8";
-    case PixelType::UInt16:
-      return "uint16";
-    case PixelType::Half:
-      return "half";
-    case PixelType::Float:
-      return "float";
-  }
-  return "?";
-}
-
 Material SceneOptions::EffectiveMaterial() const
 {
   const Material* base = FindLectureMaterial(this->MaterialName);
@@ -262,16 +233,8 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   // Required unless a scene file gives the meshes (the render command checks).
   command.add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk");
 
-  const std::map<std::string, Shading> shadings{ { "none", Shading::None },
-    { "flat", Shading::Flat }, { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong } };
-  command.add_option("--shading", o.ShadingRule, "Shading rule (default phong)")
-    ->transform(CLI::CheckedTransformer(shadings))
-    ->option_text("none|flat|gouraud|phong");
-  const std::map<std::string, Reflection> reflections{ { "blinn", Reflection::BlinnPhong },
-    { "phong", Reflection::Phong } };
-  command.add_option("--reflection", o.ReflectionModel, "Specular term (default blinn)")
-    ->transform(CLI::CheckedTransformer(reflections))
-    ->option_text("blinn|phong");
+  AddChoice(command, "--shading", o.ShadingRule, "Shading rule (default phong)");
+  AddChoice(command, "--reflection", o.ReflectionModel, "Specular term (default blinn)");
 
   std::vector<std::string> names;
   for (const Material& m : LectureMaterials())
@@ -357,13 +320,8 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   AddParsed(command, "--background", o.Background, ParseRgb, "Background (default 0,0,0)")
     ->option_text("R,G,B");
 
-  const std::map<std::string, NormalsMode> modes{ { "auto", NormalsMode::Auto },
-    { "file", NormalsMode::File }, { "compute", NormalsMode::Compute } };
-  command
-    .add_option(
-      "--normals", o.Normals, "auto: the file's normals if it has them, else computed (default)")
-    ->transform(CLI::CheckedTransformer(modes))
-    ->option_text("auto|file|compute");
+  AddChoice(command, "--normals", o.Normals,
+    "auto: the file's normals if it has them, else computed (default)");
   AddNormalsSettings(command, o.Computed);
 }
 
@@ -394,8 +352,8 @@ void AddNormalsSettings(CLI::App& command, NormalsSettings& s)
   command
     .add_option("--weighting", s.Weighting,
       "Vertex-normal weighting when normals are computed (default angle)")
-    ->check(CLI::IsMember({ "uniform", "area", "angle", "max", "loop" }))
-    ->option_text("uniform|area|angle|max|loop");
+    ->check(CLI::IsMember(Names<vtkShadelabMeshNormals::Weightings>()))
+    ->option_text(JoinedNames<vtkShadelabMeshNormals::Weightings>("|"));
   command
     .add_option("--feature-angle", s.FeatureAngle,
       "Computed normals: split vertices where faces meet at more than DEG degrees "

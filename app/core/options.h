@@ -5,6 +5,7 @@
 
 #include "shadelabIllumination.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -24,6 +25,15 @@ enum class NormalsMode
   Compute // always computed
 };
 
+template <>
+struct NameTable<NormalsMode>
+{
+  static constexpr std::array<std::pair<NormalsMode, const char*>, 3> Entries{
+    { { NormalsMode::Auto, "auto" }, { NormalsMode::File, "file" },
+      { NormalsMode::Compute, "compute" } }
+  };
+};
+
 enum class PixelType
 {
   Auto, // float for formats made for it (EXR, HDR, PFM), else 8-bit
@@ -31,6 +41,15 @@ enum class PixelType
   UInt16,
   Half,
   Float
+};
+
+template <>
+struct NameTable<PixelType>
+{
+  static constexpr std::array<std::pair<PixelType, const char*>, 5> Entries{
+    { { PixelType::Auto, "auto" }, { PixelType::UInt8, "uint8" }, { PixelType::UInt16, "uint16" },
+      { PixelType::Half, "half" }, { PixelType::Float, "float" } }
+  };
 };
 
 struct ImageSize
@@ -114,9 +133,6 @@ Rgb ParseRgb(const std::string& text);
 ImageSize ParseSize(const std::string& text);
 Light ParseLight(const std::string& text);
 double ParseNumber(const std::string& text);
-
-const char* ToString(NormalsMode mode);
-const char* ToString(PixelType type);
 
 /** The largest image side and area: the float read-back of 8192x8192 is 1 GiB. */
 constexpr int MaxImageSide = 16384;

@@ -15,6 +15,7 @@
 #include "scene/mesh_cache.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
+#include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -90,7 +91,7 @@ const char* ToString(LightMode mode)
   return "?";
 }
 
-const std::array<const char*, 5> Weightings{ "uniform", "area", "angle", "max", "loop" };
+const std::vector<std::string> Weightings = Names<vtkShadelabMeshNormals::Weightings>();
 
 std::string Fixed(double value, int digits)
 {

@@ -1,6 +1,7 @@
 #include "scene/scene_file.h"
 
 #include "shadelabSceneSchema.h" // generated from data/scene.schema.json
+#include "vtkShadelabMeshNormals.h"
 
 #include <nlohmann/json.hpp>
 
@@ -127,10 +128,9 @@ std::string LightText(const json& light, const std::string& path)
   ExpectObject(light, path, LightKeys);
   if (!light.contains("kind"))
   {
-    throw SceneError{ path + ".kind", "missing (point, directional or spot)" };
+    throw SceneError{ path + ".kind", "missing (" + JoinedNames<LightKind>(", ", " or ") + ")" };
   }
-  const std::string kind =
-    Choice(light["kind"], path + ".kind", "kind", { "point", "directional", "spot" });
+  const std::string kind = Choice(light["kind"], path + ".kind", "kind", Names<LightKind>());
   auto field = [&](const char* key) -> const json&
   {
     if (!light.contains(key))
@@ -147,14 +147,15 @@ std::string LightText(const json& light, const std::string& path)
     }
   };
   std::string text = kind;
-  if (kind == "point")
+  const LightKind known = *FromName<LightKind>(kind);
+  if (known == LightKind::Point)
   {
     forbid("direction");
     forbid("half_angle");
     forbid("exponent");
     text += ":" + Triple(field("position"), path + ".position");
   }
-  else if (kind == "directional")
+  else if (known == LightKind::Directional)
   {
     forbid("position");
     forbid("half_angle");
@@ -211,31 +212,26 @@ void Convert(const json& s, Shot& shot, const std::filesystem::path& folder, Whe
     }
     else if (key == "shading")
     {
-      Apply(o, { "--shading", Choice(v, path, "shading", { "none", "flat", "gouraud", "phong" }) },
-        path);
+      Apply(o, { "--shading", Choice(v, path, "shading", Names<Shading>()) }, path);
     }
     else if (key == "reflection")
     {
-      Apply(o, { "--reflection", Choice(v, path, "reflection", { "blinn", "phong" }) }, path);
+      Apply(o, { "--reflection", Choice(v, path, "reflection", Names<Reflection>()) }, path);
     }
     else if (key == "normals")
     {
-      Apply(o, { "--normals", Choice(v, path, "normals", { "auto", "file", "compute" }) }, path);
+      Apply(o, { "--normals", Choice(v, path, "normals", Names<NormalsMode>()) }, path);
     }
     else if (key == "weighting")
     {
       Apply(o,
         { "--weighting",
-          Choice(v, path, "weighting", { "uniform", "area", "angle", "max", "loop" }) },
+          Choice(v, path, "weighting", Names<vtkShadelabMeshNormals::Weightings>()) },
         path);
     }
     else if (key == "pixel_type")
     {
-      const std::map<std::string, PixelType> types{ { "auto", PixelType::Auto },
-        { "uint8", PixelType::UInt8 }, { "uint16", PixelType::UInt16 }, { "half", PixelType::Half },
-        { "float", PixelType::Float } };
-      shot.Pixels =
-        types.at(Choice(v, path, "pixel type", { "auto", "uint8", "uint16", "half", "float" }));
+      shot.Pixels = *FromName<PixelType>(Choice(v, path, "pixel type", Names<PixelType>()));
     }
     else if (key == "material")
     {
@@ -390,8 +386,7 @@ std::string ExpandOutputTemplate(const std::string& pattern, const Shot& shot,
   number.insert(0, digits.size() > number.size() ? digits.size() - number.size() : 0, '0');
   const SceneOptions& o = shot.Scene;
   const std::map<std::string, std::string> fields{ { "mesh", Stem(o.Mesh) },
-    { "shading", ToString(o.ShadingRule) },
-    { "reflection", o.ReflectionModel == Reflection::BlinnPhong ? "blinn" : "phong" },
+    { "shading", ToString(o.ShadingRule) }, { "reflection", ToString(o.ReflectionModel) },
     { "material", o.MaterialName }, { "weighting", o.Computed.Weighting },
     { "size", std::to_string(o.Size.Width) + "x" + std::to_string(o.Size.Height) },
     { "index", number }, { "name", name.empty() ? number : name } };

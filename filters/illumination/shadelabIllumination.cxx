@@ -6,41 +6,6 @@
 
 namespace shadelab
 {
-const char* ToString(Shading shading)
-{
-  switch (shading)
-  {
-    case Shading::None:
-      return "none";
-    case Shading::Flat:
-      return "flat";
-    case Shading::Gouraud:
-      return "gouraud";
-    case Shading::Phong:
-      return "phong";
-  }
-  return "?";
-}
-
-const char* ToString(Reflection reflection)
-{
-  return reflection == Reflection::BlinnPhong ? "blinn" : "phong";
-}
-
-const char* ToString(LightKind kind)
-{
-  switch (kind)
-  {
-    case LightKind::Point:
-      return "point";
-    case LightKind::Directional:
-      return "directional";
-    case LightKind::Spot:
-      return "spot";
-  }
-  return "?";
-}
-
 namespace
 {
 Rgb ToRgb(const nlohmann::ordered_json& j)

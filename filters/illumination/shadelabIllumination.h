@@ -5,8 +5,11 @@
 #ifndef shadelabIllumination_h
 #define shadelabIllumination_h
 
+#include "shadelabNames.h"
+
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab
@@ -22,10 +25,30 @@ enum class Shading
   Phong
 };
 
+template <>
+struct NameTable<Shading>
+{
+  static constexpr std::array<std::pair<Shading, const char*>, 4> Entries{
+    { { Shading::None, "none" }, { Shading::Flat, "flat" }, { Shading::Gouraud, "gouraud" },
+      { Shading::Phong, "phong" } }
+  };
+};
+
+/** The rules that light, cheapest first (the lecture's order of cost). */
+constexpr std::array<Shading, 3> LitRules{ Shading::Flat, Shading::Gouraud, Shading::Phong };
+
 enum class Reflection
 {
   BlinnPhong,
   Phong
+};
+
+template <>
+struct NameTable<Reflection>
+{
+  static constexpr std::array<std::pair<Reflection, const char*>, 2> Entries{
+    { { Reflection::BlinnPhong, "blinn" }, { Reflection::Phong, "phong" } }
+  };
 };
 
 struct Material
@@ -45,6 +68,15 @@ enum class LightKind
   Spot
 };
 
+template <>
+struct NameTable<LightKind>
+{
+  static constexpr std::array<std::pair<LightKind, const char*>, 3> Entries{
+    { { LightKind::Point, "point" }, { LightKind::Directional, "directional" },
+      { LightKind::Spot, "spot" } }
+  };
+};
+
 struct Light
 {
   LightKind Kind = LightKind::Point;
@@ -54,10 +86,6 @@ struct Light
   double HalfAngleDeg = 0; // spot cut-off
   double Exponent = 0;     // spot fall-off (cos angle)^e; 0 is a hard-edged cone
 };
-
-const char* ToString(Shading shading);
-const char* ToString(Reflection reflection);
-const char* ToString(LightKind kind);
 
 /**
  * The lecture's material table (data/materials.json, compiled in), in the

@@ -56,8 +56,6 @@ Vec3 PointAt(const double* xyz, vtkIdType i)
 // pointing anywhere, and a real normal is never this close to cancelling.
 constexpr double CancelledSum = 1e-12;
 
-const char* const WeightingNames[] = { "uniform", "area", "angle", "max", "loop" };
-
 // The input's triangles as 3 point ids a face, or an error.
 struct TriangleIds
 {
@@ -425,21 +423,19 @@ vtkShadelabMeshNormals::~vtkShadelabMeshNormals() = default;
 
 bool vtkShadelabMeshNormals::SetWeightingByName(const char* name)
 {
-  for (int w = Uniform; w <= Loop; ++w)
+  const auto weighting = name ? shadelab::FromName<Weightings>(name) : std::nullopt;
+  if (weighting)
   {
-    if (name && std::strcmp(name, WeightingNames[w]) == 0)
-    {
-      this->SetWeighting(w);
-      return true;
-    }
+    this->SetWeighting(*weighting);
   }
-  return false;
+  return weighting.has_value();
 }
 
 void vtkShadelabMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Weighting: " << WeightingNames[this->Weighting] << "\n";
+  os << indent << "Weighting: " << shadelab::ToString(static_cast<Weightings>(this->Weighting))
+     << "\n";
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";

@@ -55,9 +55,13 @@
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h
 
+#include "shadelabNames.h"
+
 #include <vtkPolyDataAlgorithm.h>
 
+#include <array>
 #include <memory>
+#include <utility>
 
 class vtkShadelabMeshNormals : public vtkPolyDataAlgorithm
 {
@@ -76,7 +80,7 @@ public:
   };
   vtkSetClampMacro(Weighting, int, Uniform, Loop);
   vtkGetMacro(Weighting, int);
-  /** Parses "uniform|area|angle|max|loop"; false if unknown. */
+  /** Sets the weighting by its name (NameTable below); false if unknown. */
   bool SetWeightingByName(const char* name);
 
   vtkSetMacro(Splitting, bool);
@@ -119,5 +123,17 @@ private:
   struct Cache; // the OpenMesh mesh of the last input, and that input's MTime
   std::unique_ptr<Cache> Cached;
 };
+
+namespace shadelab
+{
+template <>
+struct NameTable<vtkShadelabMeshNormals::Weightings>
+{
+  static constexpr std::array<std::pair<vtkShadelabMeshNormals::Weightings, const char*>, 5>
+    Entries{ { { vtkShadelabMeshNormals::Uniform, "uniform" },
+      { vtkShadelabMeshNormals::Area, "area" }, { vtkShadelabMeshNormals::Angle, "angle" },
+      { vtkShadelabMeshNormals::Max, "max" }, { vtkShadelabMeshNormals::Loop, "loop" } } };
+};
+}
 
 #endif

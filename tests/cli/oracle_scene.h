@@ -38,11 +38,13 @@ using shadelab::FrameLight;
 using shadelab::IlluminationInputs;
 using shadelab::Light;
 using shadelab::LightKind;
+using shadelab::LitRules;
 using shadelab::Material;
 using shadelab::normalize;
 using shadelab::Reflection;
 using shadelab::Rgb;
 using shadelab::Shading;
+using shadelab::ToString;
 using shadelab::Vec3;
 
 constexpr double Pi = 3.14159265358979323846;
@@ -323,15 +325,6 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
   return obj.str();
 }
 
-inline const char* RuleName(Shading rule)
-{
-  return shadelab::ToString(rule);
-}
-inline const char* ModelName(Reflection model) // as --reflection takes it
-{
-  return model == Reflection::BlinnPhong ? "blinn" : "phong";
-}
-
 // Renders the scene with `shadelab render`; every setting is passed
 // explicitly, lights included (shadelab's default is a light at the camera).
 inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
@@ -343,8 +336,8 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   std::vector<std::string> args{ "render", mesh.string(), "-o", out.string(), "--size", size,
     "--orthographic", "--camera-position", Triple(s.World({ 0, 0, s.CameraDistance })),
     "--camera-focal-point", Triple(s.World({ 0, 0, 0 })), "--camera-view-up", "0,1,0",
-    "--parallel-scale", Num(s.Scale * ParallelScale), "--shading", RuleName(s.Rule), "--reflection",
-    ModelName(s.Model), "--ka", Triple(s.Surface.Ka), "--kd", Triple(s.Surface.Kd), "--ks",
+    "--parallel-scale", Num(s.Scale * ParallelScale), "--shading", ToString(s.Rule), "--reflection",
+    ToString(s.Model), "--ka", Triple(s.Surface.Ka), "--kd", Triple(s.Surface.Kd), "--ks",
     Triple(s.Surface.Ks), "--ns", Num(s.Surface.Ns), "--ambient", Triple(s.Ambient), "--background",
     "0,0,0", "--normals", s.Normals, "--weighting", s.Weighting };
   for (const Light& l : WorldLights(s))
@@ -655,15 +648,6 @@ inline auto CaseAdder(std::vector<Case>& cases)
   return [&cases](const std::string& name, const Scene& s, Tolerance tol = Standard) {
     cases.push_back({ name, s, tol });
   };
-}
-
-/** The lit rules, each case list's loop. */
-inline const std::vector<Shading> LitRules{ Shading::Flat, Shading::Gouraud, Shading::Phong };
-
-/** A rule's name for case names. */
-inline std::string RuleText(Shading rule)
-{
-  return RuleName(rule);
 }
 
 inline void PrintTo(const Case& c, std::ostream* os)

@@ -35,7 +35,7 @@ std::vector<Case> Cases()
       Scene s;
       s.Rule = r;
       s.Model = m;
-      add(RuleText(r) + "_" + ModelName(m), s);
+      add(std::string(ToString(r)) + "_" + ToString(m), s);
     }
   }
 
@@ -45,9 +45,9 @@ std::vector<Case> Cases()
     Scene s;
     s.Rule = r;
     s.Lights = { Directional({ -0.3, -0.2, -1 }) };
-    add("directional_" + RuleText(r), s);
+    add("directional_" + std::string(ToString(r)), s);
     s.Lights = { Spot({ 0.2, 0.1, 3 }, { -0.05, 0, -1 }, 40, 3) };
-    add("spot_" + RuleText(r), s);
+    add("spot_" + std::string(ToString(r)), s);
   }
 
   // Several coloured lights at once, of every kind; their sum exceeds 1 in
@@ -61,9 +61,9 @@ std::vector<Case> Cases()
   {
     Scene s = coloured;
     s.Rule = r;
-    add("coloured_lights_" + RuleText(r), s);
+    add("coloured_lights_" + std::string(ToString(r)), s);
     s.EightBit = true;
-    add("coloured_lights_" + RuleText(r) + "_png", s);
+    add("coloured_lights_" + std::string(ToString(r)) + "_png", s);
   }
   {
     Scene s;
@@ -83,7 +83,8 @@ std::vector<Case> Cases()
       Scene s;
       s.Rule = r;
       s.Lights = { Spot({ 0.1, -0.2, 2 }, { 0, 0, -1 }, 15, exponent) };
-      add("spot_cone_" + std::string(exponent == 0 ? "hard_" : "soft_") + RuleText(r), s);
+      add("spot_cone_" + std::string(exponent == 0 ? "hard_" : "soft_") + std::string(ToString(r)),
+        s);
     }
   }
 
@@ -101,7 +102,9 @@ std::vector<Case> Cases()
         s.Model = m;
         s.Surface = TestMaterial(ns);
         s.Lights = { Point({ 0.1, 0.2, 3 }) };
-        add(std::string(ns == 0 ? "ns0_" : "ns0p001_") + RuleText(r) + "_" + ModelName(m), s);
+        add(
+          std::string(ns == 0 ? "ns0_" : "ns0p001_") + std::string(ToString(r)) + "_" + ToString(m),
+          s);
       }
     }
   }
@@ -121,7 +124,7 @@ std::vector<Case> Cases()
       s.Geometry.Bump = -2e-3;
       const Vec3 n = GridNormal(s.Geometry, -0.25, -0.125);
       s.Lights = { Directional(Vec3{ 0, 0, 1 } - 2 * n[2] * n) }; // -(2(N.V)N - V)
-      add("ns1e6_" + RuleText(r) + "_" + ModelName(m), s, HighExponent);
+      add("ns1e6_" + std::string(ToString(r)) + "_" + ToString(m), s, HighExponent);
     }
   }
 
@@ -136,7 +139,7 @@ std::vector<Case> Cases()
       s.Surface = TestMaterial(2);
       s.Geometry.SlopeX = s.Geometry.SlopeY = s.Geometry.Bump = 0;
       s.Lights = { Directional({ -std::sqrt(1 - 1e-8), 0, -1e-4 }) };
-      add("grazing_" + RuleText(r) + "_" + ModelName(m), s);
+      add("grazing_" + std::string(ToString(r)) + "_" + ToString(m), s);
     }
   }
 
@@ -148,7 +151,7 @@ std::vector<Case> Cases()
     s.Rule = r;
     s.Geometry.SlopeX = s.Geometry.SlopeY = s.Geometry.Bump = 0;
     s.Lights = { Point({ 1.5, 0.25, 0 }), Directional({ -1, 0.5, 0 }) };
-    add("light_in_plane_" + RuleText(r), s);
+    add("light_in_plane_" + std::string(ToString(r)), s);
   }
 
   // The same on the tilted plane, whose normal (-0.25, 0.125, 1) is not an
@@ -159,7 +162,7 @@ std::vector<Case> Cases()
     s.Rule = r;
     s.Geometry.Bump = 0;
     s.Lights = { Point({ 1.5, 0.25, 0.25 * 1.5 - 0.125 * 0.25 }), Directional({ -1, 0, -0.25 }) };
-    add("light_in_tilted_plane_" + RuleText(r), s);
+    add("light_in_tilted_plane_" + std::string(ToString(r)), s);
   }
 
   // A point light exactly at a grid vertex, (0.5, 0.5) on the tilted bowl:
@@ -169,7 +172,7 @@ std::vector<Case> Cases()
     Scene s;
     s.Rule = r;
     s.Lights = { Point({ 0.5, 0.5, 0.25 * 0.5 - 0.125 * 0.5 }) };
-    add("light_at_vertex_" + RuleText(r), s);
+    add("light_at_vertex_" + std::string(ToString(r)), s);
   }
 
   // Zero-length vertex normals: one lone vertex, a corner, and the four
@@ -182,7 +185,8 @@ std::vector<Case> Cases()
   {
     Scene s = zeroNormals;
     s.Rule = r;
-    add("zero_normals_" + RuleText(r), s, r == Shading::Phong ? DerivativeNormal : Standard);
+    add("zero_normals_" + std::string(ToString(r)), s,
+      r == Shading::Phong ? DerivativeNormal : Standard);
   }
   // The same, the camera ten times farther away: where the geometric normal
   // is used it must not lose accuracy with the distance (orthographic: the
@@ -200,7 +204,7 @@ std::vector<Case> Cases()
     Scene s;
     s.Rule = r;
     s.Geometry.BackFaces = true;
-    add("back_faces_" + RuleText(r), s);
+    add("back_faces_" + std::string(ToString(r)), s);
   }
 
   // The coloured scene at 1e-6 and 1e6 and offset by 1e5 from the origin
@@ -210,12 +214,12 @@ std::vector<Case> Cases()
     Scene s = coloured;
     s.Rule = r;
     s.Scale = 1e-6;
-    add("scale_1em6_" + RuleText(r), s);
+    add("scale_1em6_" + std::string(ToString(r)), s);
     s.Scale = 1e6;
-    add("scale_1e6_" + RuleText(r), s);
+    add("scale_1e6_" + std::string(ToString(r)), s);
     s.Scale = 1;
     s.Offset = { 1e5, 1e5, 1e5 };
-    add("offset_1e5_" + RuleText(r), s);
+    add("offset_1e5_" + std::string(ToString(r)), s);
   }
   return cases;
 }

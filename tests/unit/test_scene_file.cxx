@@ -1,6 +1,7 @@
 // Scene files (issue 7): what a valid file gives, each kind of invalid one
 // with its message, output templates, and the schema held to the parser.
 #include "scene/scene_file.h"
+#include "vtkShadelabMeshNormals.h"
 
 #include <nlohmann/json.hpp>
 
@@ -189,6 +190,22 @@ TEST(OutputTemplate, FillsEveryFieldAndSaysWhatIsWrong)
     "unmatched '{' in \"{mesh.png\" (write {{ for a brace)");
   EXPECT_EQ(ExpandOutputTemplate("mesh}.png", shot, "", 0, 1, out),
     "unmatched '}' in \"mesh}.png\" (write }} for a brace)");
+}
+
+TEST(SceneSchema, ListsTheNameTablesChoices)
+{
+  // The schema is data, compiled in; its choices are the name tables', so
+  // a value added to a table shows here until the schema has it too.
+  const auto schema = nlohmann::json::parse(SceneSchema());
+  const auto& shot = schema["$defs"]["shot"]["properties"];
+  EXPECT_EQ(shot["shading"]["enum"].get<std::vector<std::string>>(), Names<Shading>());
+  EXPECT_EQ(shot["reflection"]["enum"].get<std::vector<std::string>>(), Names<Reflection>());
+  EXPECT_EQ(shot["lights"]["items"]["properties"]["kind"]["enum"].get<std::vector<std::string>>(),
+    Names<LightKind>());
+  EXPECT_EQ(shot["normals"]["enum"].get<std::vector<std::string>>(), Names<NormalsMode>());
+  EXPECT_EQ(shot["weighting"]["enum"].get<std::vector<std::string>>(),
+    Names<vtkShadelabMeshNormals::Weightings>());
+  EXPECT_EQ(shot["pixel_type"]["enum"].get<std::vector<std::string>>(), Names<PixelType>());
 }
 
 TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)

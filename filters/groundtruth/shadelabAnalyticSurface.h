@@ -1,6 +1,6 @@
-// Surfaces known exactly (a sphere, a torus): the ground truth of accuracy
-// measurements (issue 6). Rays meet them in double precision with the exact
-// normal, and they tessellate at any density with every vertex on the
+// Surfaces known exactly (a sphere, a torus): the ground truth of the
+// speed-accuracy measurements. Rays meet them in double precision with the
+// exact normal, and they tessellate at any density with every vertex on the
 // surface, so the only difference between a tessellation's picture and the
 // exact one is what tessellation, interpolation and float arithmetic cost.
 #ifndef shadelabAnalyticSurface_h

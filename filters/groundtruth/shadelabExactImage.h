@@ -1,7 +1,8 @@
 // The exact picture of an analytic surface: per pixel, the ray through the
 // pixel's centre meets the surface in double precision, and the lecture's
 // equation (the oracle's Illuminate) lights the hit with the exact normal.
-// No tessellation, no interpolation: the ground truth of issue 6.
+// No tessellation, no interpolation: the ground truth of the
+// speed-accuracy measurements.
 #ifndef shadelabExactImage_h
 #define shadelabExactImage_h
 

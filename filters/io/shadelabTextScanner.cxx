@@ -3,6 +3,7 @@
 #include "shadelabMeshReadError.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstring>
 
@@ -54,6 +55,26 @@ std::string Quote(std::string_view token)
     quoted += "...";
   }
   return quoted + "'";
+}
+
+std::string ToLower(std::string_view text)
+{
+  std::string lower(text);
+  for (char& c : lower)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return lower;
+}
+
+std::string ToUpper(std::string_view text)
+{
+  std::string upper(text);
+  for (char& c : upper)
+  {
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return upper;
 }
 
 bool TextScanner::NextLine()

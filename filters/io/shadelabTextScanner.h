@@ -23,6 +23,10 @@ bool ParseNumber(std::string_view token, long long& value);
 /** `token` in single quotes for a message, shortened and with unprintable bytes as '?'. */
 std::string Quote(std::string_view token);
 
+/** `text` in lower or upper case (keywords that files may write in any case). */
+std::string ToLower(std::string_view text);
+std::string ToUpper(std::string_view text);
+
 class TextScanner
 {
 public:

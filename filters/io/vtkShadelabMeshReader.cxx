@@ -1,6 +1,7 @@
 #include "vtkShadelabMeshReader.h"
 
 #include "shadelabMeshReadError.h"
+#include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabLegacyVTKReader.h"
 #include "vtkShadelabOBJReader.h"
@@ -15,8 +16,8 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
-#include <cctype>
 #include <string>
+#include <string_view>
 
 vtkStandardNewMacro(vtkShadelabMeshReader);
 
@@ -33,12 +34,7 @@ std::string LowerExtension(const std::string& fileName)
   {
     return {};
   }
-  std::string extension = fileName.substr(dot);
-  for (char& c : extension)
-  {
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return extension;
+  return shadelab::ToLower(std::string_view(fileName).substr(dot));
 }
 
 // Keeps the errors of a reader that this one runs away from the output

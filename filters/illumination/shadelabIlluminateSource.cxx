@@ -1,0 +1,308 @@
+#include "shadelabIlluminateSource.h"
+
+#include <algorithm>
+#include <string>
+
+namespace shadelab
+{
+std::string FillGlsl(const char* text, const std::string& value)
+{
+  std::string filled;
+  for (const char* c = text; *c; ++c)
+  {
+    if (*c == '$')
+    {
+      filled += value;
+    }
+    else
+    {
+      filled += *c;
+    }
+  }
+  return filled;
+}
+
+namespace
+{
+bool Has(const ShaderFeatures& f, LightKind kind)
+{
+  return std::find(f.Lights.begin(), f.Lights.end(), kind) != f.Lights.end();
+}
+
+// Point and spot lights have a position; directional and spot a direction.
+bool HasPositions(const ShaderFeatures& f)
+{
+  return Has(f, LightKind::Point) || Has(f, LightKind::Spot);
+}
+
+bool HasDirections(const ShaderFeatures& f)
+{
+  return Has(f, LightKind::Directional) || Has(f, LightKind::Spot);
+}
+
+// Shared by the per-scene and the all-features code: the constants of the
+// oracle's guards, its SpecularFalloff, and the view direction.
+const char* const GuardSource = R"glsl(const float shadelabTinyLength = 1e-20;
+const float shadelabGrazingLimit = 1e-5; // GrazingLimit in the oracle
+)glsl";
+
+const char* const SpecularFalloffSource = R"glsl(float shadelabSpecularFalloff(float d, float ns)
+{
+  if (d < 0.01)
+  {
+    return exp(-ns * d * (1.0 + d * (0.5 + d * (1.0 / 3.0 + d * 0.25))));
+  }
+  return pow(1.0 - d, ns);
+}
+)glsl";
+
+const char* const IlluminateHeadSource = R"glsl(vec3 shadelabIlluminate(vec3 P, vec3 N)
+{
+  vec3 I = shadelabKa * shadelabIa;
+)glsl";
+
+const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
+  if (shadelabOrthographic == 0)
+  {
+    float len = length(P);
+    V = len > shadelabTinyLength ? -P / len : vec3(0.0);
+  }
+)glsl";
+
+// The material's uniforms: ks and ns only where there is specular code.
+std::string MaterialUniforms(bool specular)
+{
+  std::string s = R"glsl(uniform vec3 shadelabKa;
+uniform vec3 shadelabKd;
+)glsl";
+  if (specular)
+  {
+    s += R"glsl(uniform vec3 shadelabKs;
+uniform float shadelabNs;
+)glsl";
+  }
+  return s + R"glsl(uniform vec3 shadelabIa;
+uniform int shadelabOrthographic;
+)glsl";
+}
+
+// The arrays of n lights' properties, those that the lights' kinds use.
+std::string LightUniforms(size_t n, bool positions, bool directions, bool spots)
+{
+  const std::string size = std::to_string(n);
+  std::string s = FillGlsl("uniform vec3 shadelabLightColor[$];\n", size);
+  if (positions)
+  {
+    s += FillGlsl("uniform vec3 shadelabLightPosition[$];\n", size);
+  }
+  if (directions)
+  {
+    s += FillGlsl("uniform vec3 shadelabLightDirection[$];\n", size);
+  }
+  if (spots)
+  {
+    s += FillGlsl(R"glsl(uniform float shadelabLightCosCutoff[$];
+uniform float shadelabLightExponent[$];
+)glsl",
+      size);
+  }
+  return s;
+}
+
+// The all-features baseline's loop over the lights, chosen at run time
+// (kinds 0 point, 1 directional, 2 spot; reflection 0 Blinn, 1 Phong).
+const char* const AllFeaturesLightLoopSource = R"glsl(  for (int i = 0; i < shadelabLightCount; ++i)
+  {
+    vec3 Il = shadelabLightColor[i];
+    vec3 L = -shadelabLightDirection[i];
+    bool lit = true;
+    if (shadelabLightKind[i] != 1)
+    {
+      vec3 toLight = shadelabLightPosition[i] - P;
+      float distance = length(toLight);
+      lit = distance > shadelabTinyLength;
+      L = toLight / max(distance, shadelabTinyLength);
+      if (shadelabLightKind[i] == 2)
+      {
+        float cosAngle = dot(-L, shadelabLightDirection[i]);
+        float e = shadelabLightExponent[i];
+        lit = lit && cosAngle >= shadelabLightCosCutoff[i];
+        Il *= e == 0.0 ? 1.0 : (cosAngle > 0.0 ? pow(cosAngle, e) : 0.0);
+      }
+    }
+    float NdotL = dot(N, L);
+    if (lit && NdotL > shadelabGrazingLimit)
+    {
+      vec3 term = NdotL * shadelabKd;
+      float d = -1.0;
+      if (shadelabReflection == 0)
+      {
+        vec3 sum = L + V;
+        float len = length(sum);
+        vec3 H = sum / max(len, shadelabTinyLength);
+        d = len > shadelabTinyLength && dot(N, H) > 0.0 ? 0.5 * dot(N - H, N - H) : -1.0;
+      }
+      else
+      {
+        vec3 R = (2.0 * NdotL) * N - L;
+        d = dot(V, R) > 0.0 ? 0.5 * dot(V - R, V - R) : -1.0;
+      }
+      if (d >= 0.0)
+      {
+        term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs;
+      }
+      I += Il * term;
+    }
+  }
+  return I;
+}
+)glsl";
+
+// The all-features baseline: the same equation for any lights, up to
+// AllFeaturesMaxLights of them.
+std::string AllFeaturesIlluminateSource()
+{
+  return MaterialUniforms(true) +
+    FillGlsl(R"glsl(uniform int shadelabReflection;
+uniform int shadelabLightCount;
+uniform int shadelabLightKind[$];
+)glsl",
+      std::to_string(AllFeaturesMaxLights)) +
+    LightUniforms(AllFeaturesMaxLights, true, true, true) + GuardSource + SpecularFalloffSource +
+    IlluminateHeadSource + ViewDirectionSource + AllFeaturesLightLoopSource;
+}
+
+// The uniforms and constants of the per-scene code: only what its lights use.
+std::string DeclarationsSource(const ShaderFeatures& f)
+{
+  std::string s = "// shadelab: the lecture's illumination model (shadelabShadingOracle.cxx)\n" +
+    MaterialUniforms(f.Specular);
+  if (!f.Lights.empty())
+  {
+    s += LightUniforms(f.Lights.size(), HasPositions(f), HasDirections(f), Has(f, LightKind::Spot));
+  }
+  return s + GuardSource;
+}
+
+// The reflection model, compiled in: shadelabSpecularD, its head and its
+// body for each model.
+const char* const SpecularDHeadSource = R"glsl(
+// d = 1 - cos of the specular angle, or -1 when there is no specular term.
+float shadelabSpecularD(vec3 N, vec3 L, vec3 V)
+{
+)glsl";
+
+const char* const BlinnPhongSpecularDBody = R"glsl(  vec3 sum = L + V;
+  float len = length(sum);
+  if (!(len > shadelabTinyLength))
+  {
+    return -1.0;
+  }
+  vec3 H = sum / len;
+  return dot(N, H) > 0.0 ? 0.5 * dot(N - H, N - H) : -1.0;
+}
+)glsl";
+
+const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N - L;
+  return dot(V, R) > 0.0 ? 0.5 * dot(V - R, V - R) : -1.0;
+}
+)glsl";
+
+// Light i's term, unrolled: its kind's direction, attenuation and guard.
+std::string LightTermSource(size_t i, LightKind kind, bool specular)
+{
+  const std::string index = std::to_string(i);
+  std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
+    FillGlsl("  Il = shadelabLightColor[$];\n", index);
+  std::string guard;
+  if (kind == LightKind::Directional)
+  {
+    s += FillGlsl("  L = -shadelabLightDirection[$];\n", index);
+  }
+  else
+  {
+    s += FillGlsl(R"glsl(  toLight = shadelabLightPosition[$] - P;
+  distance = length(toLight);
+  L = toLight / max(distance, shadelabTinyLength);
+)glsl",
+      index);
+    guard = "distance > shadelabTinyLength && ";
+  }
+  if (kind == LightKind::Spot)
+  {
+    s += FillGlsl(R"glsl(  float cosAngle$ = dot(-L, shadelabLightDirection[$]);
+  float exponent$ = shadelabLightExponent[$];
+  Il *= exponent$ == 0.0 ? 1.0 : (cosAngle$ > 0.0 ? pow(cosAngle$, exponent$) : 0.0);
+)glsl",
+      index);
+    guard += FillGlsl("cosAngle$ >= shadelabLightCosCutoff[$] && ", index);
+  }
+  s += FillGlsl(R"glsl(  NdotL = dot(N, L);
+  if ($NdotL > shadelabGrazingLimit)
+  {
+    vec3 term = NdotL * shadelabKd;
+)glsl",
+    guard);
+  if (specular)
+  {
+    s += R"glsl(    d = shadelabSpecularD(N, L, V);
+    if (d >= 0.0)
+    {
+      term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs;
+    }
+)glsl";
+  }
+  return s + R"glsl(    I += Il * term;
+  }
+)glsl";
+}
+
+// The per-scene shadelabIlluminate: the lights unrolled, each with the code
+// of its kind only.
+std::string IlluminateFunctionSource(const ShaderFeatures& f)
+{
+  std::string s = "\n// I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l], N unit.\n" +
+    std::string(IlluminateHeadSource);
+  if (!f.Lights.empty())
+  {
+    s += ViewDirectionSource;
+    s += R"glsl(  vec3 L;
+  vec3 Il;
+  float NdotL;
+)glsl";
+    if (f.Specular)
+    {
+      s += "  float d;\n";
+    }
+    if (HasPositions(f))
+    {
+      s += R"glsl(  vec3 toLight;
+  float distance;
+)glsl";
+    }
+  }
+  for (size_t i = 0; i < f.Lights.size(); ++i)
+  {
+    s += LightTermSource(i, f.Lights[i], f.Specular);
+  }
+  return s + R"glsl(  return I;
+}
+)glsl";
+}
+}
+
+std::string IlluminateSource(const ShaderFeatures& f)
+{
+  if (f.AllFeatures)
+  {
+    return AllFeaturesIlluminateSource();
+  }
+  std::string s = DeclarationsSource(f);
+  if (f.Specular)
+  {
+    s += SpecularFalloffSource + std::string(SpecularDHeadSource) +
+      (f.Model == Reflection::BlinnPhong ? BlinnPhongSpecularDBody : PhongSpecularDBody);
+  }
+  return s + IlluminateFunctionSource(f);
+}
+}

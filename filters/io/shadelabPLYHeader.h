@@ -1,0 +1,101 @@
+/**
+ * @brief   the header of a PLY file: its format, elements and properties
+ *
+ * ReadHeader parses the header's lines, AssignRoles says what the reader
+ * does with each element and property, and CheckCounts refuses counts that
+ * the file could not hold, before anything is allocated for them.
+ */
+#ifndef shadelabPLYHeader_h
+#define shadelabPLYHeader_h
+
+#include "shadelabScalarType.h"
+#include "shadelabTextScanner.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadelab::ply
+{
+using Scalar = ScalarType;
+
+// What the reader does with a property's values; X .. NZ in this order.
+enum class Use
+{
+  Skip,
+  X,
+  Y,
+  Z,
+  NX,
+  NY,
+  NZ,
+  Indices
+};
+
+struct Property
+{
+  std::string Name;
+  Scalar Type = Scalar::Float32;
+  bool IsList = false;
+  Scalar CountType = Scalar::UInt8;
+  Use Role = Use::Skip;
+};
+
+enum class Kind
+{
+  Other,
+  Vertex,
+  Face,
+  Strips
+};
+
+struct Element
+{
+  std::string Name;
+  std::uint64_t Count = 0;
+  std::vector<Property> Properties;
+  Kind Role = Kind::Other;
+};
+
+enum class Encoding
+{
+  Ascii,
+  LittleEndian,
+  BigEndian
+};
+
+struct Header
+{
+  Encoding Format = Encoding::Ascii;
+  std::vector<Element> Elements;
+};
+
+/** Reads the header's lines and leaves `scanner` before the body's first line. */
+Header ReadHeader(std::string_view bytes, TextScanner& scanner);
+
+/**
+ * Marks the vertex element's x, y, z (and nx, ny, nz when all three are
+ * there) and the index lists of face and tristrips elements; throws
+ * MeshReadError on a header that lacks them or has them twice.
+ */
+void AssignRoles(Header& header);
+
+/** Throws MeshReadError on a count that a file of `fileSize` bytes could not hold. */
+void CheckCounts(const Header& header, std::size_t fileSize);
+
+/** Throws "truncated: header declares N <element>s but the file ends after M". */
+[[noreturn]] void Truncated(const Element& element, std::uint64_t items);
+
+/**
+ * Every PLY scalar is read as a double; a count or an index converts to an
+ * integer only where int64 holds it (a uint64 can say 1.8e19, and the cast
+ * of a double beyond the range is undefined: a finding of fuzz_ply).
+ */
+inline bool FitsInt64(double value)
+{
+  return value >= -0x1p63 && value < 0x1p63;
+}
+}
+
+#endif

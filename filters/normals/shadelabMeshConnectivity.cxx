@@ -1,0 +1,180 @@
+#include "shadelabMeshConnectivity.h"
+
+#include "shadelabCornerWeights.h"
+#include "shadelabFaceOrientation.h"
+
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <array>
+#include <cmath>
+#include <future>
+
+namespace shadelab::normals
+{
+namespace
+{
+// Disables OpenMesh's error stream for a scope: a refused face is expected
+// here and handled, not an error to print.
+class QuietOpenMesh
+{
+public:
+  QuietOpenMesh()
+    : WasEnabled(omerr().is_enabled())
+  {
+    omerr().disable();
+  }
+  ~QuietOpenMesh()
+  {
+    if (this->WasEnabled)
+    {
+      omerr().enable();
+    }
+  }
+
+private:
+  bool WasEnabled;
+};
+}
+
+// Out of line: this is the one file that builds an OpenMesh mesh (see
+// filters/CMakeLists.txt).
+MeshConnectivity::MeshConnectivity() = default;
+MeshConnectivity::~MeshConnectivity() = default;
+
+void MeshConnectivity::Build(
+  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting)
+{
+  this->Points = input->GetNumberOfPoints();
+  this->Triangles = std::move(triangles);
+  this->Reversed = consistency && OrientConsistently(this->Triangles, this->Points);
+
+  this->XYZ = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
+  if (!this->XYZ)
+  {
+    this->XYZ = vtkSmartPointer<vtkDoubleArray>::New();
+    this->XYZ->DeepCopy(input->GetPoints()->GetData());
+  }
+  // The face geometry needs no connectivity: it is computed on a second
+  // thread while OpenMesh builds hers (add_face is most of the time). A
+  // future, so that it is waited for even if the build throws.
+  auto faceGeometry = std::async(std::launch::async,
+    [this, weighting]
+    {
+      this->ComputeFaceNormals();
+      if (HasCornerWeights(weighting))
+      {
+        // One core: the other is busy with add_face.
+        this->CornerWeights(weighting, false);
+      }
+    });
+  this->AddFaces();
+  faceGeometry.get();
+}
+
+// The input's points as OpenMesh's first vertices, then its faces, with
+// copies of their vertices for those that OpenMesh refuses.
+void MeshConnectivity::AddFaces()
+{
+  const double* p = this->XYZ->GetPointer(0);
+  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  TriMesh& mesh = this->Mesh;
+  mesh.reserve(this->Points, 3 * faces / 2 + 3, faces);
+  mesh.resize(this->Points, 0, 0);
+  for (vtkIdType i = 0; i < this->Points; ++i)
+  {
+    mesh.set_point(TriMesh::VertexHandle(static_cast<int>(i)), PointAt(p, i));
+  }
+  this->InDuplicatedFace.assign(this->Points, false);
+
+  QuietOpenMesh quiet;
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    const Id* ids = &this->Triangles[3 * f];
+    std::array<TriMesh::VertexHandle, 3> corner;
+    for (int k = 0; k < 3; ++k)
+    {
+      corner[k] = TriMesh::VertexHandle(static_cast<int>(ids[k]));
+    }
+    // A repeated vertex would corrupt OpenMesh's connectivity; add_face
+    // itself refuses complex edges and vertices without changing the mesh.
+    const bool repeated = ids[0] == ids[1] || ids[1] == ids[2] || ids[2] == ids[0];
+    if (!repeated && mesh.add_face(corner[0], corner[1], corner[2]).is_valid())
+    {
+      continue;
+    }
+    // Refused: the face gets copies of its vertices, so it still has
+    // normals (and keeps its number: face f stays OpenMesh face f).
+    for (int k = 0; k < 3; ++k)
+    {
+      // From the input: a reference into OpenMesh's points would dangle
+      // when add_vertex moves them.
+      corner[k] = mesh.add_vertex(PointAt(p, ids[k]));
+      this->CopyOf.push_back(ids[k]);
+      this->InDuplicatedFace[ids[k]] = true;
+    }
+    mesh.add_face(corner[0], corner[1], corner[2]);
+    ++this->DuplicatedFaces;
+  }
+}
+
+void MeshConnectivity::ComputeFaceNormals()
+{
+  const double* xyz = this->XYZ->GetPointer(0);
+  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  this->FaceNormal.resize(faces);
+  this->DoubleArea.resize(faces);
+  this->CellNormals = vtkSmartPointer<vtkFloatArray>::New();
+  this->CellNormals->SetName("Normals");
+  this->CellNormals->SetNumberOfComponents(3);
+  this->CellNormals->SetNumberOfTuples(faces);
+  float* out = this->CellNormals->GetPointer(0);
+  const Id* tri = this->Triangles.data();
+  for (vtkIdType f = 0; f < faces; ++f)
+  {
+    const Vec3 p0 = PointAt(xyz, tri[3 * f]);
+    const Vec3 n =
+      OpenMesh::cross(PointAt(xyz, tri[3 * f + 1]) - p0, PointAt(xyz, tri[3 * f + 2]) - p0);
+    const double length = n.norm();
+    // Zero (or overflowing) cross products give no direction: no weight.
+    const bool usable = length > 0 && std::isfinite(length);
+    this->FaceNormal[f] = usable ? n / length : Vec3(0, 0, 0);
+    this->DoubleArea[f] = usable ? length : 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      out[3 * f + c] = static_cast<float>(this->FaceNormal[f][c]);
+    }
+  }
+}
+
+const std::vector<double>& MeshConnectivity::CornerWeights(int weighting, bool parallel)
+{
+  if (this->WeightsOf == weighting)
+  {
+    return this->CornerWeight;
+  }
+  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  this->CornerWeight.resize(3 * faces);
+  // The input's points: OpenMesh's may grow meanwhile (Build).
+  const double* xyz = this->XYZ->GetPointer(0);
+  const Id* tri = this->Triangles.data();
+  const double* doubleArea = this->DoubleArea.data();
+  double* w = this->CornerWeight.data();
+  // Independent per face, so cores can share it.
+  auto weigh = [=](vtkIdType begin, vtkIdType end)
+  { ComputeCornerWeights(weighting, xyz, tri, doubleArea, begin, end, w); };
+  if (parallel)
+  {
+    vtkSMPTools::For(0, faces, weigh);
+  }
+  else
+  {
+    weigh(0, faces);
+  }
+  this->WeightsOf = weighting;
+  return this->CornerWeight;
+}
+}

@@ -1,0 +1,71 @@
+/**
+ * @brief   OpenMesh's connectivity and the face geometry of one input
+ *
+ * What vtkShadelabMeshNormals keeps between updates of the same input: a
+ * change of weighting or of feature angle recomputes normals from it
+ * without rebuilding it. OpenMesh vertex i < Points is input point i, and
+ * OpenMesh face f is input face f. Faces that OpenMesh refuses (they would
+ * make a non-manifold edge or vertex, or they repeat a vertex) get copies of
+ * their vertices, appended after the input's points.
+ */
+#ifndef shadelabMeshConnectivity_h
+#define shadelabMeshConnectivity_h
+
+#include "shadelabNormalsMesh.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+class vtkPolyData;
+
+namespace shadelab::normals
+{
+class MeshConnectivity
+{
+public:
+  MeshConnectivity();
+  ~MeshConnectivity();
+
+  vtkIdType Points = 0;               // OpenMesh vertex i < Points is input point i
+  std::vector<Id> Triangles;          // 3 input point ids a face, as oriented
+  bool Reversed = false;              // Consistency reversed some faces
+  TriMesh Mesh;                       // face f is input face f
+  std::vector<Id> CopyOf;             // OpenMesh vertex Points + i copies CopyOf[i]
+  std::vector<bool> InDuplicatedFace; // per input point
+  vtkIdType DuplicatedFaces = 0;
+
+  vtkSmartPointer<vtkDoubleArray> XYZ;        // the input's points, in double
+  std::vector<Vec3> FaceNormal;               // unit; zero for faces of no area
+  std::vector<double> DoubleArea;             // |e1 x e2|; zero for faces of no area
+  vtkSmartPointer<vtkFloatArray> CellNormals; // FaceNormal as the output stores it
+
+  /**
+   * Builds it all from the input's points and its `triangles` (3 point ids
+   * a face; oriented consistently first if `consistency`), with the corner
+   * weights of `weighting` ready.
+   */
+  void Build(vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting);
+
+  /**
+   * The weight of each face corner (3 a face) for the Angle or Max
+   * weighting, on both cores unless `parallel` is false; kept for the
+   * next call with the same weighting.
+   */
+  const std::vector<double>& CornerWeights(int weighting, bool parallel = true);
+
+private:
+  MeshConnectivity(const MeshConnectivity&) = delete;
+  void operator=(const MeshConnectivity&) = delete;
+
+  void ComputeFaceNormals();
+  void AddFaces();
+
+  int WeightsOf = -1;               // the weighting CornerWeight is for
+  std::vector<double> CornerWeight; // 3 a face
+};
+}
+
+#endif

@@ -16,41 +16,26 @@
 #include <CLI/CLI.hpp>
 
 #include <csignal>
+#include <functional>
 #include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
 
-int main(int argc, char** argv)
+namespace
 {
-  // VTK's messages are collected and reported as one line by the commands;
-  // VTK 9.1 also copies every error to its logger on stderr.
-  vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  // A writer process that died must not take shadelab with it through
-  // SIGPIPE, nor a file-size limit (ulimit -f) through SIGXFSZ: the write
-  // fails (EPIPE, EFBIG) and the error is reported instead.
-  std::signal(SIGPIPE, SIG_IGN);
-  std::signal(SIGXFSZ, SIG_IGN);
+// An entry of main's table of commands.
+struct Command
+{
+  std::function<CLI::App*(CLI::App&)> Add; // declares the command and its options
+  const bool* Quiet;        // its --quiet, which silences warnings; null if it has none
+  std::function<int()> Run; // runs it; returns the exit code
+};
 
-  CLI::App program("shadelab: triangle meshes under the classic illumination model "
-                   "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
-    "shadelab");
-  program.set_version_flag("--version", std::string("shadelab ") + shadelab::ShadelabVersion);
-  program.require_subcommand(1);
-  program.footer("Exit status: 0 on success, 1 for unreadable input or a failed render, "
-                 "2 for a bad command line. Errors are one line on stderr.");
-
-  shadelab::RenderOptions render;
-  CLI::App* renderCommand = shadelab::AddRenderCommand(program, render);
-  shadelab::CompareOptions compare;
-  CLI::App* compareCommand = shadelab::AddCompareCommand(program, compare);
-  shadelab::ViewOptions view;
-  CLI::App* viewCommand = shadelab::AddViewCommand(program, view);
-  shadelab::NormalsOptions normals;
-  CLI::App* normalsCommand = shadelab::AddNormalsCommand(program, normals);
-  shadelab::BenchOptions bench;
-  CLI::App* benchCommand = shadelab::AddBenchCommand(program, bench);
-  shadelab::AdviseOptions advise;
-  CLI::App* adviseCommand = shadelab::AddAdviseCommand(program, advise);
-
+// Parses the command line; the exit code when that is all there is to do
+// (help, version, or a bad command line, reported as one line).
+std::optional<int> Parse(CLI::App& program, int argc, char** argv)
+{
   try
   {
     program.parse(argc, argv);
@@ -73,40 +58,82 @@ int main(int argc, char** argv)
     std::cerr << "shadelab: error: " << what << " (see shadelab --help)" << std::endl;
     return shadelab::ExitUsage;
   }
+  return std::nullopt;
+}
+}
 
-  if (render.Quiet || compare.Quiet || normals.Quiet || bench.Quiet)
+int main(int argc, char** argv)
+{
+  // VTK's messages are collected and reported as one line by the commands;
+  // VTK 9.1 also copies every error to its logger on stderr.
+  vtkShadelabOutputWindow* vtkMessages = vtkShadelabOutputWindow::Install();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  // A writer process that died must not take shadelab with it through
+  // SIGPIPE, nor a file-size limit (ulimit -f) through SIGXFSZ: the write
+  // fails (EPIPE, EFBIG) and the error is reported instead.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
+
+  CLI::App program("shadelab: triangle meshes under the classic illumination model "
+                   "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
+    "shadelab");
+  program.set_version_flag("--version", std::string("shadelab ") + shadelab::ShadelabVersion);
+  program.require_subcommand(1);
+  program.footer("Exit status: 0 on success, 1 for unreadable input or a failed render, "
+                 "2 for a bad command line. Errors are one line on stderr.");
+
+  // The commands: each entry adds one to the program and runs it when it
+  // was the one parsed. Their options live here, as long as the program.
+  shadelab::RenderOptions render;
+  shadelab::CompareOptions compare;
+  shadelab::ViewOptions view;
+  shadelab::NormalsOptions normals;
+  shadelab::BenchOptions bench;
+  shadelab::AdviseOptions advise;
+  std::string commandLine; // set once parsed
+  const Command commands[] = {
+    { [&](CLI::App& p) { return shadelab::AddRenderCommand(p, render); }, &render.Quiet,
+      [&]
+      {
+        vtkMessages->SetEcho(render.Verbose);
+        if (render.Verbose)
+        {
+          vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+        }
+        return shadelab::RunRender(render, commandLine);
+      } },
+    { [&](CLI::App& p) { return shadelab::AddCompareCommand(p, compare); }, &compare.Quiet,
+      [&] { return shadelab::RunCompare(compare, commandLine); } },
+    { [&](CLI::App& p) { return shadelab::AddViewCommand(p, view); }, nullptr,
+      [&] { return shadelab::ExecViewer(argc, argv); } },
+    { [&](CLI::App& p) { return shadelab::AddNormalsCommand(p, normals); }, &normals.Quiet,
+      [&] { return shadelab::RunNormals(normals); } },
+    { [&](CLI::App& p) { return shadelab::AddBenchCommand(p, bench); }, &bench.Quiet,
+      [&] { return shadelab::RunBench(bench, commandLine); } },
+    { [&](CLI::App& p) { return shadelab::AddAdviseCommand(p, advise); }, nullptr,
+      [&] { return shadelab::RunAdvise(advise); } },
+  };
+  std::vector<CLI::App*> added;
+  for (const Command& command : commands)
   {
-    shadelab::SilenceWarnings();
+    added.push_back(command.Add(program));
   }
-  const std::string commandLine = shadelab::QuoteCommandLine(argc, argv);
-  if (renderCommand->parsed())
+
+  if (const std::optional<int> exit = Parse(program, argc, argv))
   {
-    vtkMessages->SetEcho(render.Verbose);
-    if (render.Verbose)
+    return *exit;
+  }
+  commandLine = shadelab::QuoteCommandLine(argc, argv);
+  for (std::size_t i = 0; i < added.size(); ++i)
+  {
+    if (added[i]->parsed())
     {
-      vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+      if (commands[i].Quiet && *commands[i].Quiet)
+      {
+        shadelab::SilenceWarnings();
+      }
+      return commands[i].Run();
     }
-    return shadelab::RunRender(render, commandLine);
-  }
-  if (compareCommand->parsed())
-  {
-    return shadelab::RunCompare(compare, commandLine);
-  }
-  if (viewCommand->parsed())
-  {
-    return shadelab::ExecViewer(argc, argv);
-  }
-  if (normalsCommand->parsed())
-  {
-    return shadelab::RunNormals(normals);
-  }
-  if (benchCommand->parsed())
-  {
-    return shadelab::RunBench(bench, commandLine);
-  }
-  if (adviseCommand->parsed())
-  {
-    return shadelab::RunAdvise(advise);
   }
   return shadelab::ExitUsage;
 }

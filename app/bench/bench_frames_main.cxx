@@ -1,7 +1,7 @@
 // shadelab-bench-frames: ms per frame of each shading rule through the
 // OSMesa backend, side by side in one run with VTK's own flat, Gouraud and
 // Phong (the peer a user would pick instead) and with the all-features
-// program that per-scene generation is measured against (issue 3).
+// program that per-scene generation is measured against.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
 //

@@ -1,4 +1,4 @@
-// The speed-accuracy measurements of issue 6: how far a rendered picture is
+// The speed-accuracy measurements: how far a rendered picture is
 // from the exact one, the rows `shadelab bench` writes (CSV, JSON) and
 // `shadelab advise` reads back.
 #ifndef shadelab_speed_accuracy_h

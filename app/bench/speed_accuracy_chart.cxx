@@ -21,9 +21,10 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
-#include <tuple>
 
 // The charts draw through OpenGL context devices and FreeType text.
 VTK_MODULE_INIT(vtkRenderingContextOpenGL2);
@@ -74,19 +75,15 @@ public:
   }
 };
 vtkStandardNewMacro(PointLabels);
-}
 
-ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int width, int height)
+using Line = std::vector<const SpeedAccuracyRow*>;
+
+// The largest picture measured, angle weighting (flat has none): one line
+// per surface and rule, in order of triangles.
+std::map<std::pair<std::string, std::string>, Line> Lines(
+  const std::vector<SpeedAccuracyRow>& rows, int largest)
 {
-  ChartImage result;
-  // The largest picture measured, angle weighting (flat has none): one line
-  // per surface and rule, in order of triangles.
-  int largest = 0;
-  for (const SpeedAccuracyRow& r : rows)
-  {
-    largest = std::max(largest, r.Width * r.Height);
-  }
-  std::map<std::pair<std::string, std::string>, std::vector<const SpeedAccuracyRow*>> lines;
+  std::map<std::pair<std::string, std::string>, Line> lines;
   for (const SpeedAccuracyRow& r : rows)
   {
     if (r.Width * r.Height == largest && (r.Weighting == "angle" || r.Weighting == "face"))
@@ -94,7 +91,116 @@ ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int
       lines[{ r.Surface, r.Shading }].push_back(&r);
     }
   }
+  for (auto& [key, points] : lines)
+  {
+    std::sort(points.begin(), points.end(),
+      [](const SpeedAccuracyRow* a, const SpeedAccuracyRow* b)
+      { return a->Triangles < b->Triangles; });
+  }
+  return lines;
+}
 
+// "WxH" of the largest picture measured.
+std::string SizeText(const std::vector<SpeedAccuracyRow>& rows, int largest)
+{
+  for (const SpeedAccuracyRow& r : rows)
+  {
+    if (r.Width * r.Height == largest)
+    {
+      return std::to_string(r.Width) + "x" + std::to_string(r.Height);
+    }
+  }
+  return std::string();
+}
+
+// The line of a surface (solid with circles for the sphere, dashed with
+// squares otherwise) and rule (its colour), its points labelled with their
+// triangles. Adds the points' values to msValues and rmseValues.
+void AddLine(vtkChartXY* chart, PointLabels* labels, const std::pair<std::string, std::string>& key,
+  const Line& points, std::vector<double>& msValues, std::vector<double>& rmseValues)
+{
+  static const std::map<std::string, std::array<unsigned char, 3>> colors{
+    { "flat", { 214, 39, 40 } }, { "gouraud", { 44, 160, 44 } }, { "phong", { 31, 119, 180 } }
+  };
+  auto table = vtkSmartPointer<vtkTable>::New();
+  auto ms = vtkSmartPointer<vtkDoubleArray>::New();
+  ms->SetName("ms per frame");
+  auto rmse = vtkSmartPointer<vtkDoubleArray>::New();
+  rmse->SetName((key.first + ", " + key.second).c_str());
+  for (const SpeedAccuracyRow* p : points)
+  {
+    ms->InsertNextValue(std::log10(p->MsPerFrame));
+    rmse->InsertNextValue(std::log10(p->Rmse));
+    labels->Labels.push_back(
+      { p->MsPerFrame, p->Rmse, TriangleCountText(static_cast<double>(p->Triangles)) });
+    msValues.push_back(p->MsPerFrame);
+    rmseValues.push_back(p->Rmse);
+  }
+  table->AddColumn(ms);
+  table->AddColumn(rmse);
+  auto* line = vtkPlotLine::SafeDownCast(chart->AddPlot(vtkChart::LINE));
+  line->SetInputData(table, 0, 1);
+  const auto& c = colors.count(key.second) ? colors.at(key.second) : colors.at("flat");
+  line->SetColor(c[0], c[1], c[2], 255);
+  line->SetWidth(2.5);
+  line->SetMarkerStyle(key.first == "sphere" ? vtkPlotPoints::CIRCLE : vtkPlotPoints::SQUARE);
+  line->SetMarkerSize(9);
+  if (key.first != "sphere")
+  {
+    line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+  }
+}
+
+void SetTitleAndLegend(vtkChartXY* chart, const std::string& size)
+{
+  chart->SetTitle("shadelab: error against time per frame (" + size +
+    ", angle-weighted normals; points: triangles)");
+  chart->GetTitleProperties()->SetFontSize(20);
+  chart->SetBorders(90, 70, 40, 50); // room for the axis titles and the chart's title
+  chart->SetShowLegend(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  chart->GetLegend()->GetLabelProperties()->SetFontSize(15);
+}
+
+// Log-log through log10 values on linear axes, labelled 1, 2, 5 per
+// decade: VTK 9.1's log-scale axes leave vtkPlotLine's lines undrawn.
+void SetLogAxis(vtkAxis* axis, const std::vector<double>& values)
+{
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const double low = std::log10(*lo) - 0.05, high = std::log10(*hi) + 0.05;
+  auto positions = vtkSmartPointer<vtkDoubleArray>::New();
+  auto labels = vtkSmartPointer<vtkStringArray>::New();
+  for (int decade = static_cast<int>(std::floor(low)); decade <= std::ceil(high); ++decade)
+  {
+    for (double m : { 1.0, 2.0, 5.0 })
+    {
+      const double at = decade + std::log10(m);
+      if (at >= low && at <= high)
+      {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", m * std::pow(10.0, decade));
+        positions->InsertNextValue(at);
+        labels->InsertNextValue(text);
+      }
+    }
+  }
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange(low, high);
+  axis->SetCustomTickPositions(positions, labels);
+  axis->GetTitleProperties()->SetFontSize(17);
+  axis->GetLabelProperties()->SetFontSize(14);
+}
+}
+
+ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int width, int height)
+{
+  ChartImage result;
+  int largest = 0;
+  for (const SpeedAccuracyRow& r : rows)
+  {
+    largest = std::max(largest, r.Width * r.Height);
+  }
   HeadlessRenderer renderer;
   if (std::string error = renderer.Start(width, height); !error.empty())
   {
@@ -105,97 +211,19 @@ ChartImage DrawSpeedAccuracyChart(const std::vector<SpeedAccuracyRow>& rows, int
   auto chart = vtkSmartPointer<vtkChartXY>::New();
   auto labels = vtkSmartPointer<PointLabels>::New();
   labels->Chart = chart;
-  const std::map<std::string, std::array<unsigned char, 3>> colors{ { "flat", { 214, 39, 40 } },
-    { "gouraud", { 44, 160, 44 } }, { "phong", { 31, 119, 180 } } };
   std::vector<double> msValues, rmseValues;
-  for (auto& [key, points] : lines)
+  for (const auto& [key, points] : Lines(rows, largest))
   {
-    std::sort(points.begin(), points.end(),
-      [](const SpeedAccuracyRow* a, const SpeedAccuracyRow* b)
-      { return a->Triangles < b->Triangles; });
-    auto table = vtkSmartPointer<vtkTable>::New();
-    auto ms = vtkSmartPointer<vtkDoubleArray>::New();
-    ms->SetName("ms per frame");
-    auto rmse = vtkSmartPointer<vtkDoubleArray>::New();
-    rmse->SetName((key.first + ", " + key.second).c_str());
-    for (const SpeedAccuracyRow* p : points)
-    {
-      ms->InsertNextValue(std::log10(p->MsPerFrame));
-      rmse->InsertNextValue(std::log10(p->Rmse));
-      labels->Labels.push_back(
-        { p->MsPerFrame, p->Rmse, TriangleCountText(static_cast<double>(p->Triangles)) });
-      msValues.push_back(p->MsPerFrame);
-      rmseValues.push_back(p->Rmse);
-    }
-    table->AddColumn(ms);
-    table->AddColumn(rmse);
-    auto* line = vtkPlotLine::SafeDownCast(chart->AddPlot(vtkChart::LINE));
-    line->SetInputData(table, 0, 1);
-    const auto& c = colors.count(key.second) ? colors.at(key.second) : colors.at("flat");
-    line->SetColor(c[0], c[1], c[2], 255);
-    line->SetWidth(2.5);
-    line->SetMarkerStyle(key.first == "sphere" ? vtkPlotPoints::CIRCLE : vtkPlotPoints::SQUARE);
-    line->SetMarkerSize(9);
-    if (key.first != "sphere")
-    {
-      line->GetPen()->SetLineType(vtkPen::DASH_LINE);
-    }
+    AddLine(chart, labels, key, points, msValues, rmseValues);
   }
-  const std::string size = rows.empty() ? ""
-                                        : [&]
-  {
-    for (const SpeedAccuracyRow& r : rows)
-    {
-      if (r.Width * r.Height == largest)
-      {
-        return std::to_string(r.Width) + "x" + std::to_string(r.Height);
-      }
-    }
-    return std::string();
-  }();
-  chart->SetTitle("shadelab: error against time per frame (" + size +
-    ", angle-weighted normals; points: triangles)");
-  chart->GetTitleProperties()->SetFontSize(20);
-  chart->SetBorders(90, 70, 40, 50); // room for the axis titles and the chart's title
-  chart->SetShowLegend(true);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
-  chart->GetLegend()->GetLabelProperties()->SetFontSize(15);
+  SetTitleAndLegend(chart, SizeText(rows, largest));
   if (msValues.empty())
   {
     result.Error = "no measurements to draw";
     return result;
   }
-  // Log-log through log10 values on linear axes, labelled 1, 2, 5 per
-  // decade: VTK 9.1's log-scale axes leave vtkPlotLine's lines undrawn.
-  for (const auto& [a, values] :
-    { std::make_pair(vtkAxis::BOTTOM, &msValues), std::make_pair(vtkAxis::LEFT, &rmseValues) })
-  {
-    vtkAxis* axis = chart->GetAxis(a);
-    const auto [lo, hi] = std::minmax_element(values->begin(), values->end());
-    const double low = std::log10(*lo) - 0.05, high = std::log10(*hi) + 0.05;
-    auto positions = vtkSmartPointer<vtkDoubleArray>::New();
-    auto labels = vtkSmartPointer<vtkStringArray>::New();
-    for (int decade = static_cast<int>(std::floor(low)); decade <= std::ceil(high); ++decade)
-    {
-      for (double m : { 1.0, 2.0, 5.0 })
-      {
-        const double at = decade + std::log10(m);
-        if (at >= low && at <= high)
-        {
-          char text[32];
-          std::snprintf(text, sizeof text, "%g", m * std::pow(10.0, decade));
-          positions->InsertNextValue(at);
-          labels->InsertNextValue(text);
-        }
-      }
-    }
-    axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetRange(low, high);
-    axis->SetCustomTickPositions(positions, labels);
-    axis->GetTitleProperties()->SetFontSize(17);
-    axis->GetLabelProperties()->SetFontSize(14);
-  }
+  SetLogAxis(chart->GetAxis(vtkAxis::BOTTOM), msValues);
+  SetLogAxis(chart->GetAxis(vtkAxis::LEFT), rmseValues);
   chart->GetAxis(vtkAxis::BOTTOM)
     ->SetTitle("median ms per frame (OSMesa llvmpipe, read-back included)");
   chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the exact picture");

@@ -156,23 +156,146 @@ private:
   using Curves = std::map<std::string, std::vector<std::pair<double, double>>>;
   std::map<std::string, Curves> Errors, Times;
 };
+
+// The measurements: the file given, else the ones shadelab ships; "" or
+// the problem.
+std::string ReadMeasurements(const AdviseOptions& o, std::vector<SpeedAccuracyRow>& rows)
+{
+  if (o.Measurements.empty())
+  {
+    std::istringstream shipped(ShippedSpeedAccuracyCsv);
+    return ParseSpeedAccuracyCsv(shipped, rows);
+  }
+  return ReadSpeedAccuracyCsv(o.Measurements, rows);
+}
+
+// What one could do: a rule on this mesh (level 0), or on a mesh with 4^level
+// times the triangles.
+struct Option
+{
+  std::string Rule;
+  int Level;
+  Prediction P;
+};
+
+// Each rule on this mesh, and on meshes with 4^k times the triangles (k
+// Loop subdivisions, or a finer export), whose edges turn by a 2^k-th of
+// the angle.
+std::vector<Option> Options(const Model& model, double angle, double triangles)
+{
+  std::vector<Option> options;
+  for (int level = 0; level <= 3; ++level)
+  {
+    for (const Shading lit : LitRules)
+    {
+      const char* rule = ToString(lit);
+      options.push_back(
+        { rule, level, model.Predict(rule, angle / (1 << level), triangles * (1 << (2 * level))) });
+    }
+  }
+  return options;
+}
+
+void PrintTable(const std::vector<Option>& options, const AdviseOptions& o, double triangles)
+{
+  std::printf(
+    "| triangles | rule | RMSE | ms/frame | under %g |\n|---:|---|---:|---:|---|\n", o.MaxError);
+  for (const Option& c : options)
+  {
+    std::printf("| %s | %s | %.2g | %.1f | %s |\n",
+      TriangleCountText(triangles * (1 << (2 * c.Level))).c_str(), c.Rule.c_str(), c.P.Rmse, c.P.Ms,
+      c.P.Rmse <= o.MaxError ? "yes" : "no");
+  }
+}
+
+// The fastest option that keeps the error under maxError and that keep()
+// accepts; null when there is none.
+template <typename Keep>
+const Option* Cheapest(const std::vector<Option>& options, double maxError, Keep keep)
+{
+  const Option* cheapest = nullptr;
+  for (const Option& c : options)
+  {
+    if (c.P.Rmse <= maxError && keep(c) && (!cheapest || c.P.Ms < cheapest->P.Ms))
+    {
+      cheapest = &c;
+    }
+  }
+  return cheapest;
+}
+
+// The buy, when the mesh as it is needs more than flat: a better rule on
+// these triangles, or more triangles.
+void PrintWhy(const std::vector<Option>& options, const Option& cheapest, double maxError)
+{
+  // The cheapest that reaches E on these triangles.
+  const Option* here = Cheapest(options, maxError, [](const Option& c) { return c.Level == 0; });
+  // The cheapest that reaches E on more triangles with a cheaper rule than here's.
+  const Option* finer = Cheapest(options, maxError,
+    [here](const Option& c) { return c.Level > 0 && (!here || c.Rule != here->Rule); });
+  std::printf("Why: flat on this mesh comes to %.2g. ", options[0].P.Rmse);
+  if (here && finer && here == &cheapest)
+  {
+    std::printf("A better rule is the better buy: %s on these triangles (%.1f ms) is cheaper "
+                "than %s on %dx of them (%.1f ms).\n",
+      here->Rule.c_str(), here->P.Ms, finer->Rule.c_str(), 1 << (2 * finer->Level), finer->P.Ms);
+  }
+  else if (here == &cheapest)
+  {
+    std::printf(
+      "A better rule is the better buy: %s reaches it on these triangles.\n", here->Rule.c_str());
+  }
+  else if (here)
+  {
+    std::printf("More triangles are the better buy: %s on %dx the triangles (%.1f ms) is "
+                "cheaper than %s on these (%.1f ms).\n",
+      cheapest.Rule.c_str(), 1 << (2 * cheapest.Level), cheapest.P.Ms, here->Rule.c_str(),
+      here->P.Ms);
+  }
+  else
+  {
+    std::printf("No rule reaches it on these triangles: more triangles are needed, and %s is "
+                "the cheapest rule that gets there.\n",
+      cheapest.Rule.c_str());
+  }
+}
+
+// The verdict: the cheapest option under the error, and why.
+void PrintAdvice(const std::vector<Option>& options, double maxError)
+{
+  const Option* cheapest = Cheapest(options, maxError, [](const Option&) { return true; });
+  std::printf("\n");
+  if (!cheapest)
+  {
+    std::printf("Nothing measured reaches %g: phong on 64x the triangles comes to %.2g. The "
+                "error falls fastest with triangles under phong; a finer mesh and phong is the "
+                "way there.\n",
+      maxError, options.back().P.Rmse);
+    return;
+  }
+  if (cheapest->Level == 0)
+  {
+    std::printf("Use %s: %.2g <= %g at %.1f ms/frame on this mesh as it is.\n",
+      cheapest->Rule.c_str(), cheapest->P.Rmse, maxError, cheapest->P.Ms);
+  }
+  else
+  {
+    std::printf("Use %s on %dx the triangles: %.2g <= %g at %.1f ms/frame.\n",
+      cheapest->Rule.c_str(), 1 << (2 * cheapest->Level), cheapest->P.Rmse, maxError,
+      cheapest->P.Ms);
+  }
+  if (options[0].P.Rmse > maxError)
+  {
+    PrintWhy(options, *cheapest, maxError);
+  }
+}
 }
 
 int RunAdvise(const AdviseOptions& o)
 {
   std::vector<SpeedAccuracyRow> rows;
   const std::string source = o.Measurements.empty() ? "shadelab's measurements" : o.Measurements;
-  std::string problem;
-  if (o.Measurements.empty())
-  {
-    std::istringstream shipped(ShippedSpeedAccuracyCsv);
-    problem = ParseSpeedAccuracyCsv(shipped, rows);
-  }
-  else
-  {
-    problem = ReadSpeedAccuracyCsv(o.Measurements, rows);
-  }
-  if (!problem.empty())
+  if (const std::string problem = ReadMeasurements(o, rows); !problem.empty())
   {
     return ReportError(source, problem);
   }
@@ -203,117 +326,15 @@ int RunAdvise(const AdviseOptions& o)
       o.Mesh, "has no edges between differing normals: every rule shades it alike");
   }
 
-  // The options: each rule on this mesh, and on meshes with 4^k times the
-  // triangles (k Loop subdivisions, or a finer export), whose edges turn by
-  // a 2^k-th of the angle.
-  struct Option
-  {
-    std::string Rule;
-    int Level;
-    Prediction P;
-  };
-  std::vector<Option> options;
-  for (int level = 0; level <= 3; ++level)
-  {
-    for (const Shading lit : LitRules)
-    {
-      const char* rule = ToString(lit);
-      options.push_back(
-        { rule, level, model.Predict(rule, angle / (1 << level), triangles * (1 << (2 * level))) });
-    }
-  }
+  const std::vector<Option> options = Options(model, angle, triangles);
   std::printf("%s: %s triangles, edges turn by %.2f degrees on average (%s normals)\n",
     o.Mesh.c_str(), TriangleCountText(triangles).c_str(), angle,
     loaded.NormalsFromFile ? "the file's" : o.Normals.Weighting.c_str());
   std::printf("predicted from %s at %dx%d (RMSE: the worse of sphere and torus; ms/frame: "
               "OSMesa llvmpipe)\n\n",
     source.c_str(), model.Width, model.Height);
-  std::printf(
-    "| triangles | rule | RMSE | ms/frame | under %g |\n|---:|---|---:|---:|---|\n", o.MaxError);
-  for (const Option& c : options)
-  {
-    std::printf("| %s | %s | %.2g | %.1f | %s |\n",
-      TriangleCountText(triangles * (1 << (2 * c.Level))).c_str(), c.Rule.c_str(), c.P.Rmse, c.P.Ms,
-      c.P.Rmse <= o.MaxError ? "yes" : "no");
-  }
-
-  const Option* cheapest = nullptr;
-  for (const Option& c : options)
-  {
-    if (c.P.Rmse <= o.MaxError && (!cheapest || c.P.Ms < cheapest->P.Ms))
-    {
-      cheapest = &c;
-    }
-  }
-  std::printf("\n");
-  if (!cheapest)
-  {
-    std::printf("Nothing measured reaches %g: phong on 64x the triangles comes to %.2g. The "
-                "error falls fastest with triangles under phong; a finer mesh and phong is the "
-                "way there.\n",
-      o.MaxError, options.back().P.Rmse);
-    return 0;
-  }
-  const Option& asIs = options[0];
-  if (cheapest->Level == 0)
-  {
-    std::printf("Use %s: %.2g <= %g at %.1f ms/frame on this mesh as it is.\n",
-      cheapest->Rule.c_str(), cheapest->P.Rmse, o.MaxError, cheapest->P.Ms);
-  }
-  else
-  {
-    std::printf("Use %s on %dx the triangles: %.2g <= %g at %.1f ms/frame.\n",
-      cheapest->Rule.c_str(), 1 << (2 * cheapest->Level), cheapest->P.Rmse, o.MaxError,
-      cheapest->P.Ms);
-  }
-  // The buy, when the mesh as it is needs more than flat: a better rule on
-  // these triangles, or more triangles.
-  if (asIs.P.Rmse > o.MaxError)
-  {
-    const Option* here = nullptr; // the cheapest that reaches E on these triangles
-    for (const Option& c : options)
-    {
-      if (c.Level == 0 && c.P.Rmse <= o.MaxError && (!here || c.P.Ms < here->P.Ms))
-      {
-        here = &c;
-      }
-    }
-    // The cheapest that reaches E on more triangles with a cheaper rule than here's.
-    const Option* finer = nullptr;
-    for (const Option& c : options)
-    {
-      if (c.Level > 0 && c.P.Rmse <= o.MaxError && (!here || c.Rule != here->Rule) &&
-        (!finer || c.P.Ms < finer->P.Ms))
-      {
-        finer = &c;
-      }
-    }
-    std::printf("Why: flat on this mesh comes to %.2g. ", asIs.P.Rmse);
-    if (here && finer && here == cheapest)
-    {
-      std::printf("A better rule is the better buy: %s on these triangles (%.1f ms) is cheaper "
-                  "than %s on %dx of them (%.1f ms).\n",
-        here->Rule.c_str(), here->P.Ms, finer->Rule.c_str(), 1 << (2 * finer->Level), finer->P.Ms);
-    }
-    else if (here == cheapest)
-    {
-      std::printf(
-        "A better rule is the better buy: %s reaches it on these triangles.\n", here->Rule.c_str());
-    }
-    else if (here)
-    {
-      std::printf("More triangles are the better buy: %s on %dx the triangles (%.1f ms) is "
-                  "cheaper than %s on these (%.1f ms).\n",
-        cheapest->Rule.c_str(), 1 << (2 * cheapest->Level), cheapest->P.Ms, here->Rule.c_str(),
-        here->P.Ms);
-    }
-    else
-    {
-      std::printf("No rule reaches it on these triangles: more triangles are needed, and %s is "
-                  "the cheapest rule that gets there.\n",
-        cheapest->Rule.c_str());
-    }
-  }
+  PrintTable(options, o, triangles);
+  PrintAdvice(options, o.MaxError);
   return 0;
 }
 }

@@ -1,5 +1,5 @@
-// `shadelab advise MESH --max-error E [--size WxH]`: what a scene requires
-// (issue 6). From the bench's measurements (speed_accuracy.csv: shadelab's
+// `shadelab advise MESH --max-error E [--size WxH]`: what a scene requires.
+// From the bench's measurements (speed_accuracy.csv: shadelab's
 // own, compiled in, or a fresh `shadelab bench` run's), the cheapest shading
 // rule that keeps the error under E for this mesh, and whether more
 // triangles or a better rule is the better buy.

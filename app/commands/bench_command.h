@@ -1,5 +1,5 @@
 // `shadelab bench [--out DIR] [--quick]`: the speed-accuracy trade measured
-// against an analytic ground truth (issue 6). Tessellations of a sphere and
+// against an analytic ground truth. Tessellations of a sphere and
 // a torus, from about 100 to about 2M triangles, rendered through the
 // OSMesa backend with each shading rule and normal weighting, against the
 // exact picture of the same surface (shadelabExactImage.h).

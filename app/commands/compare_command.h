@@ -1,5 +1,5 @@
 // `shadelab compare MESH -o OUT [--modes ...] [--diff A,B] [--components]`
-// (issue 5): one picture with a panel per mode, one shared camera, a label
+// the side-by-side comparison: one picture with a panel per mode, one shared camera, a label
 // in each panel, and optionally the difference of two as a heat map.
 #ifndef shadelab_compare_command_h
 #define shadelab_compare_command_h

@@ -110,6 +110,9 @@ struct RenderOptions
 /** "I/N" with 0 <= I < N: the shard index and count. */
 std::pair<int, int> ParseShard(const std::string& text);
 
+/** The lecture's material names, in its table's order. */
+std::vector<std::string> LectureMaterialNames();
+
 /** Declares the scene options on a command. */
 void AddSceneOptions(CLI::App& command, SceneOptions& options);
 
@@ -126,9 +129,11 @@ void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 /** text's parts between the separators (one empty part for empty text). */
 std::vector<std::string> Split(const std::string& text, char separator);
 
-// Value parsers, exposed for tests. Each throws std::invalid_argument with a
-// message that names what is wrong with the text.
+// Value parsers (option_parsers.cxx), exposed for tests. Each throws
+// std::invalid_argument with a message that names what is wrong with the text.
 Vec3 ParseVec3(const std::string& text);
+Vec3 ParseDirection(const std::string& text); // a Vec3 of non-zero length
+double ParseNonNegative(const std::string& text);
 Rgb ParseRgb(const std::string& text);
 ImageSize ParseSize(const std::string& text);
 Light ParseLight(const std::string& text);

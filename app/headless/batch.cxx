@@ -75,78 +75,85 @@ private:
   bool Enabled;
   std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
-}
 
-int RenderShots(
-  const std::vector<Shot>& shots, const BatchOptions& o, const std::string& commandLine)
+// Per picture size: one context, and the scenes built in it for the
+// current mesh, one per rule, whose actors keep their uploaded buffers.
+struct Context
 {
-  PhaseTimer timer(o.Verbose);
-  std::vector<const Shot*> mine;
-  for (std::size_t i = 0; i < shots.size(); ++i)
+  explicit Context(MeshCache& meshes)
+    : Scenes(meshes)
   {
-    if (static_cast<int>(i % o.ShardCount) == o.ShardIndex)
-    {
-      mine.push_back(&shots[i]);
-    }
   }
-  // One line per failure, naming the shot when there is a scene file.
-  std::size_t failed = 0;
-  const auto fail = [&failed](
-                      const Shot& shot, const std::string& input, const std::string& problem)
+  std::unique_ptr<HeadlessRenderer> Renderer;
+  SceneCache Scenes;
+};
+
+// The shots of one batch, each rendered in its size's context and handed
+// to the writer, which encodes it while the next one renders.
+class Batch
+{
+public:
+  Batch(const BatchOptions& o, const std::string& commandLine)
+    : Options(o)
+    , CommandLine(commandLine)
+    , Timer(o.Verbose)
   {
-    ++failed;
-    ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
-  };
-  if (!o.DumpShaders.empty())
-  {
-    if (const std::string error = ShaderDump::PrepareFolder(o.DumpShaders); !error.empty())
-    {
-      return ReportError(o.DumpShaders, error);
-    }
   }
 
-  const InterruptCatcher catcher;
-  ImageWriterProcess writer;     // started first: it binds OpenImageIO while we render
-  const Shot* writing = nullptr; // submitted to the writer, not yet collected
-  const auto collect = [&]()
+  // One shot: skipped, failed (and reported) or submitted to the writer.
+  void Run(const Shot& shot)
   {
-    if (writing)
-    {
-      if (const std::string error = writer.Collect(); !error.empty())
-      {
-        fail(*writing, writing->Output, error);
-      }
-      writing = nullptr;
-      timer.Lap("write");
-    }
-  };
-  // Per picture size: one context, and the scenes built in it for the
-  // current mesh, one per rule, whose actors keep their uploaded buffers.
-  struct Context
-  {
-    explicit Context(MeshCache& meshes)
-      : Scenes(meshes)
-    {
-    }
-    std::unique_ptr<HeadlessRenderer> Renderer;
-    SceneCache Scenes;
-  };
-  MeshCache meshes;
-  std::map<std::pair<int, int>, Context> contexts;
-  ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
-  std::size_t done = 0, skipped = 0;
-  for (; done < mine.size() && !Interrupted; ++done)
-  {
-    const Shot& shot = *mine[done];
-    progress.Show(static_cast<long long>(done), shot.Output);
     std::error_code exists;
-    if (o.SkipExisting && std::filesystem::exists(shot.Output, exists))
+    if (this->Options.SkipExisting && std::filesystem::exists(shot.Output, exists))
     {
-      ++skipped;
-      continue;
+      ++this->Skipped;
+      return;
     }
-    // A scene file's output template may name folders per mesh or rule:
-    // they are made as needed. A single render's folder must exist.
+    if (!this->PrepareFolder(shot))
+    {
+      return;
+    }
+    const LoadedMesh& loaded = this->Meshes.Get(shot.Scene);
+    this->Timer.Lap("mesh");
+    if (!loaded.Mesh)
+    {
+      this->Fail(shot, shot.Scene.Mesh, loaded.Error);
+      return;
+    }
+    Context* context = this->ContextFor(shot);
+    if (!context)
+    {
+      return;
+    }
+    HeadlessRenderer& renderer = *context->Renderer;
+    // Another mesh: the previous one's buffers go.
+    context->Scenes.ForgetOtherMeshes(loaded.Mesh, renderer.GetRenderer());
+    const SceneCache::Shown shown = context->Scenes.Show(shot.Scene, renderer.GetRenderer());
+    if (!shown.Scene)
+    {
+      this->Fail(shot, shown.Input, shown.Error);
+      return;
+    }
+    this->RenderAndSubmit(shot, *shown.Scene, renderer);
+  }
+
+  // The last picture, written.
+  void Finish() { this->Collect(); }
+
+  std::size_t Failed = 0, Skipped = 0;
+
+private:
+  // One line per failure, naming the shot when there is a scene file.
+  void Fail(const Shot& shot, const std::string& input, const std::string& problem)
+  {
+    ++this->Failed;
+    ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
+  }
+
+  // A scene file's output template may name folders per mesh or rule: they
+  // are made as needed. A single render's folder must exist.
+  bool PrepareFolder(const Shot& shot)
+  {
     std::error_code made;
     if (!shot.Label.empty() && !std::filesystem::path(shot.Output).parent_path().empty())
     {
@@ -154,18 +161,19 @@ int RenderShots(
     }
     if (const std::string error = ImageWriterProcess::CheckFolder(shot.Output); !error.empty())
     {
-      fail(shot, shot.Output, error);
-      continue;
+      this->Fail(shot, shot.Output, error);
+      return false;
     }
-    const LoadedMesh& loaded = meshes.Get(shot.Scene);
-    timer.Lap("mesh");
-    if (!loaded.Mesh)
-    {
-      fail(shot, shot.Scene.Mesh, loaded.Error);
-      continue;
-    }
+    return true;
+  }
+
+  // The context for the shot's picture size, started on first use; null
+  // (and reported) when it cannot start.
+  Context* ContextFor(const Shot& shot)
+  {
     Context& context =
-      contexts.try_emplace({ shot.Scene.Size.Width, shot.Scene.Size.Height }, meshes).first->second;
+      this->Contexts.try_emplace({ shot.Scene.Size.Width, shot.Scene.Size.Height }, this->Meshes)
+        .first->second;
     if (!context.Renderer)
     {
       context.Renderer = std::make_unique<HeadlessRenderer>();
@@ -174,64 +182,121 @@ int RenderShots(
           !error.empty())
       {
         context.Renderer.reset();
-        fail(shot, "render", error);
-        continue;
+        this->Fail(shot, "render", error);
+        return nullptr;
       }
-      timer.Lap("context");
+      this->Timer.Lap("context");
     }
-    HeadlessRenderer& renderer = *context.Renderer;
-    // Another mesh: the previous one's buffers go.
-    context.Scenes.ForgetOtherMeshes(loaded.Mesh, renderer.GetRenderer());
-    const SceneCache::Shown shown = context.Scenes.Show(shot.Scene, renderer.GetRenderer());
-    if (!shown.Scene)
-    {
-      fail(shot, shown.Input, shown.Error);
-      continue;
-    }
+    return &context;
+  }
+
+  void RenderAndSubmit(const Shot& shot, const BuiltScene& scene, HeadlessRenderer& renderer)
+  {
     std::unique_ptr<ShaderDump> dump;
-    if (!o.DumpShaders.empty())
+    if (!this->Options.DumpShaders.empty())
     {
-      dump = std::make_unique<ShaderDump>(shown.Scene->Actor->GetMapper(), o.DumpShaders,
+      dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), this->Options.DumpShaders,
         std::string(ToString(shot.Scene.ShadingRule)) + "-" + ToString(shot.Scene.ReflectionModel));
     }
     const FloatImage image = renderer.Render();
-    timer.Lap("frame");
+    this->Timer.Lap("frame");
     if (!renderer.GetError().empty())
     {
-      fail(shot, "render", renderer.GetError());
-      continue;
+      this->Fail(shot, "render", renderer.GetError());
+      return;
     }
     if (dump && !dump->GetError().empty())
     {
-      fail(shot, dump->GetErrorFile(), dump->GetError());
-      continue;
+      this->Fail(shot, dump->GetErrorFile(), dump->GetError());
+      return;
     }
     const auto metadata = DescribePicture(
-      commandLine, shot.Scene, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
-    collect(); // the previous picture, encoded while this one rendered
-    if (const std::string error = writer.Submit(shot.Output, image, shot.Pixels, metadata);
+      this->CommandLine, shot.Scene, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
+    this->Collect(); // the previous picture, encoded while this one rendered
+    if (const std::string error = this->Writer.Submit(shot.Output, image, shot.Pixels, metadata);
         !error.empty())
     {
-      fail(shot, shot.Output, error);
-      continue;
+      this->Fail(shot, shot.Output, error);
+      return;
     }
-    writing = &shot;
+    this->Writing = &shot;
   }
-  collect();
+
+  // The picture submitted before, once the writer has written it.
+  void Collect()
+  {
+    if (this->Writing)
+    {
+      if (const std::string error = this->Writer.Collect(); !error.empty())
+      {
+        this->Fail(*this->Writing, this->Writing->Output, error);
+      }
+      this->Writing = nullptr;
+      this->Timer.Lap("write");
+    }
+  }
+
+  const BatchOptions& Options;
+  const std::string& CommandLine;
+  PhaseTimer Timer;
+  ImageWriterProcess Writer;     // started first: it binds OpenImageIO while we render
+  const Shot* Writing = nullptr; // submitted to the writer, not yet collected
+  MeshCache Meshes;
+  std::map<std::pair<int, int>, Context> Contexts;
+};
+
+// This shard's shots: those whose index mod the count is the shard's index.
+std::vector<const Shot*> ShardOf(const std::vector<Shot>& shots, const BatchOptions& o)
+{
+  std::vector<const Shot*> mine;
+  for (std::size_t i = 0; i < shots.size(); ++i)
+  {
+    if (static_cast<int>(i % o.ShardCount) == o.ShardIndex)
+    {
+      mine.push_back(&shots[i]);
+    }
+  }
+  return mine;
+}
+}
+
+int RenderShots(
+  const std::vector<Shot>& shots, const BatchOptions& o, const std::string& commandLine)
+{
+  const std::vector<const Shot*> mine = ShardOf(shots, o);
+  if (!o.DumpShaders.empty())
+  {
+    if (const std::string error = ShaderDump::PrepareFolder(o.DumpShaders); !error.empty())
+    {
+      return ReportError(o.DumpShaders, error);
+    }
+  }
+  const InterruptCatcher catcher;
+  Batch batch(o, commandLine);
+  ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
+  std::size_t done = 0;
+  for (; done < mine.size() && !Interrupted; ++done)
+  {
+    progress.Show(static_cast<long long>(done), mine[done]->Output);
+    batch.Run(*mine[done]);
+  }
+  batch.Finish();
   progress.Finish();
   if (Interrupted)
   {
     std::cerr << "shadelab: interrupted (" << (Interrupted == SIGINT ? "SIGINT" : "SIGTERM")
               << ") after " << done << " of " << mine.size()
-              << " shots: " << done - failed - skipped << " written, " << skipped << " skipped, "
-              << failed << " failed; every picture there is whole; --skip-existing renders the rest"
+              << " shots: " << done - batch.Failed - batch.Skipped << " written, " << batch.Skipped
+              << " skipped, " << batch.Failed
+              << " failed; every picture there is whole; --skip-existing renders the rest"
               << std::endl;
     return 128 + Interrupted;
   }
-  if (failed > 0 && mine.size() > 1)
+  if (batch.Failed > 0 && mine.size() > 1)
   {
-    std::cerr << "shadelab: " << failed << " of " << mine.size() << " shots failed" << std::endl;
+    std::cerr << "shadelab: " << batch.Failed << " of " << mine.size() << " shots failed"
+              << std::endl;
   }
-  return failed > 0 ? ExitFailure : 0;
+  return batch.Failed > 0 ? ExitFailure : 0;
 }
 }

@@ -1,4 +1,4 @@
-// Rendering shots (issue 7): one from the command line, or a scene file's
+// Rendering shots: one from the command line, or a scene file's
 // many in one process. Each mesh is read (and its normals computed) once,
 // each picture size gets one OpenGL context whose compiled shader programs
 // serve every shot of that size, and one image-writer process writes all

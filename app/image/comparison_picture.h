@@ -1,4 +1,4 @@
-// The comparison picture (issue 5): rendered panels side by side, a label
+// The comparison picture: rendered panels side by side, a label
 // strip above each, and for a difference panel its heat map and colour bar
 // with the scale. Pixels only: the panels come from whichever backend
 // rendered them, the text from VTK's FreeType tools, no OpenGL.

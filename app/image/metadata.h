@@ -1,4 +1,4 @@
-// What a picture carries about how it was made (issue 2, "Images out"):
+// What a picture carries about how it was made, so that it can be made again:
 // the command line, shading, material, lights, camera and shadelab version.
 #ifndef shadelab_metadata_h
 #define shadelab_metadata_h

@@ -1,4 +1,4 @@
-// What a comparison shows (issue 5): one panel per mode of --modes, each the
+// What a comparison shows: one panel per mode of --modes, each the
 // command line's scene with the mode's changes, optionally split into the
 // illumination's ambient, diffuse and specular terms. Shared by `compare`
 // (one picture) and `view --compare` (a window).

@@ -1,4 +1,4 @@
-// Scene files (issue 7): `shadelab render --scene FILE.json` takes every
+// Scene files: `shadelab render --scene FILE.json` takes every
 // scene option, and many shots, from one JSON file. The format is
 // data/scene.schema.json (`shadelab render --print-schema`); README.md
 // shows it. Every value goes through the command line's own parsers, so a

@@ -1,0 +1,140 @@
+#include "scene/scene_file_settings.h"
+
+#include "vtkShadelabMeshNormals.h"
+
+#include <algorithm>
+
+namespace shadelab
+{
+namespace scene_file
+{
+namespace
+{
+const std::vector<std::string> CameraKeys{ "position", "focal_point", "view_up", "view_angle",
+  "orthographic", "parallel_scale" };
+
+// The camera's keys; each one's path comes from where, which knows whether
+// the shot or the defaults gave it.
+void ConvertCamera(const json& v, const std::string& path, const PathOfKey& where, SceneOptions& o)
+{
+  ExpectObject(v, path, CameraKeys);
+  for (const auto& c : v.items())
+  {
+    const std::string at = where("camera." + c.key());
+    if (c.key() == "orthographic")
+    {
+      o.Orthographic = Flag(c.value(), at);
+    }
+    else if (c.key() == "view_angle" || c.key() == "parallel_scale")
+    {
+      Apply(o,
+        { "--" + std::string(c.key() == "view_angle" ? "view-angle" : "parallel-scale"),
+          Number(c.value(), at) },
+        at);
+    }
+    else
+    {
+      std::string option = "--camera-" + c.key();
+      std::replace(option.begin(), option.end(), '_', '-');
+      Apply(o, { option, Triple(c.value(), at) }, at);
+    }
+  }
+}
+
+void ConvertSize(const json& v, const std::string& path, SceneOptions& o)
+{
+  if (v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer())
+  {
+    Apply(o,
+      { "--size",
+        std::to_string(v[0].get<long long>()) + "x" + std::to_string(v[1].get<long long>()) },
+      path);
+  }
+  else
+  {
+    throw SceneError{ path, "expected [width, height] in pixels, not " + Quoted(v) };
+  }
+}
+
+// A key whose value is one of an option's choices.
+void ConvertChoice(const std::string& key, const json& v, const std::string& path, SceneOptions& o)
+{
+  std::vector<std::string> known;
+  if (key == "shading")
+  {
+    known = Names<Shading>();
+  }
+  else if (key == "reflection")
+  {
+    known = Names<Reflection>();
+  }
+  else if (key == "normals")
+  {
+    known = Names<NormalsMode>();
+  }
+  else
+  {
+    known = Names<vtkShadelabMeshNormals::Weightings>();
+  }
+  Apply(o, { "--" + key, Choice(v, path, key.c_str(), known) }, path);
+}
+}
+
+void ConvertShot(
+  const json& settings, Shot& shot, const std::filesystem::path& folder, const PathOfKey& where)
+{
+  SceneOptions& o = shot.Scene;
+  for (const auto& item : settings.items())
+  {
+    const std::string& key = item.key();
+    const json& v = item.value();
+    const std::string path = where(key);
+    if (key == "name" || key == "output")
+    {
+      Text(v, path); // used by the output template
+    }
+    else if (key == "mesh")
+    {
+      const std::filesystem::path mesh(Text(v, path));
+      o.Mesh = (mesh.is_absolute() ? mesh : folder / mesh).lexically_normal().string();
+    }
+    else if (key == "shading" || key == "reflection" || key == "normals" || key == "weighting")
+    {
+      ConvertChoice(key, v, path, o);
+    }
+    else if (key == "pixel_type")
+    {
+      shot.Pixels = *FromName<PixelType>(Choice(v, path, "pixel type", Names<PixelType>()));
+    }
+    else if (key == "material")
+    {
+      ConvertMaterial(v, path, o);
+    }
+    else if (key == "ambient" || key == "background")
+    {
+      Apply(o, { "--" + key, Triple(v, path) }, path);
+    }
+    else if (key == "lights")
+    {
+      ConvertLights(v, path, o);
+    }
+    else if (key == "camera")
+    {
+      ConvertCamera(v, path, where, o);
+    }
+    else if (key == "size")
+    {
+      ConvertSize(v, path, o);
+    }
+    else if (key == "feature_angle")
+    {
+      Apply(o, { "--feature-angle", Number(v, path) }, path);
+    }
+    else if (key == "orient")
+    {
+      o.Computed.Orient = Flag(v, path);
+    }
+  }
+}
+}
+}

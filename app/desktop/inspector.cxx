@@ -219,7 +219,7 @@ int Inspector::Run(void* display)
   this->Hud->GetTextProperty()->SetColor(0.9, 0.9, 0.6);
   this->Hud->SetPosition(8, 8);
   this->Overlay->AddActor2D(this->Hud);
-  this->Help->SetInput(ViewKeysHelp);
+  this->Help->SetInput(ViewKeysHelp().c_str());
   this->Help->GetTextProperty()->SetFontSize(17);
   this->Help->GetTextProperty()->SetFontFamilyToCourier();
   this->Help->GetTextProperty()->SetBackgroundColor(0.05, 0.05, 0.1);

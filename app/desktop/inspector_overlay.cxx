@@ -29,6 +29,27 @@ const char* ToString(LightMode mode)
   }
   return "?";
 }
+
+// The key list with every line padded to the longest: in a monospace font,
+// centring the block then leaves the keys and their meanings in columns. A
+// space each side keeps the text off the background box's edges.
+std::string AlignedKeysHelp()
+{
+  std::vector<std::string> lines;
+  std::istringstream help(ViewKeysHelp());
+  std::size_t width = 0;
+  for (std::string line; std::getline(help, line);)
+  {
+    width = std::max(width, line.size());
+    lines.push_back(line);
+  }
+  std::string block;
+  for (const std::string& line : lines)
+  {
+    block += (block.empty() ? " " : "\n ") + line + std::string(width - line.size() + 1, ' ');
+  }
+  return block;
+}
 }
 
 std::string Fixed(double value, int digits)
@@ -44,7 +65,7 @@ void Inspector::SetUpOverlay()
   this->Hud->GetTextProperty()->SetColor(0.9, 0.9, 0.6);
   this->Hud->SetPosition(8, 8);
   this->Overlay->AddActor2D(this->Hud);
-  this->Help->SetInput(ViewKeysHelp().c_str());
+  this->Help->SetInput(AlignedKeysHelp().c_str());
   vtkTextProperty* help = this->Help->GetTextProperty();
   help->SetFontSize(17);
   help->SetFontFamilyToCourier();

@@ -1,7 +1,8 @@
-// `shadelab view` in a real window (issue 5): an X server of its own (Xvfb),
+// `shadelab view` in a real window (the desktop inspector): an X server of its own (Xvfb),
 // keys sent to the window as X events (xdotool), and what the window shows
 // read back through the inspector's own screenshot key `p`.
 #include "cli_test_support.h"
+#include "desktop/view_keys.h"
 
 #include <gtest/gtest.h>
 
@@ -338,6 +339,44 @@ TEST(View, MaterialReflectionLightAndShininessKeysChangeThePicture)
     EXPECT_GT(Compare(before, after).Pixels, 20) << "key " << key;
     before = after;
   }
+}
+
+// Every key of the table (desktop/view_keys.h) is answered: from the start
+// each changes the picture. Not here: p and q (their own tests), r (a
+// camera that moved first: RResetsTheCamera). A term key turns its term
+// back on after, lest the black mesh hide what the next key does.
+TEST(View, EveryKeyOfTheTableChangesThePicture)
+{
+  const auto xdotoolName = [](std::string_view key) -> std::string {
+    return key == "+" ? "plus" : key == "-" ? "minus" : std::string(key);
+  };
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  Image before = viewer.Screenshot();
+  for (const shadelab::ViewKey& row : shadelab::ViewKeys)
+  {
+    if (row.Action == shadelab::ViewAction::Screenshot ||
+      row.Action == shadelab::ViewAction::Quit || row.Action == shadelab::ViewAction::ResetCamera)
+    {
+      continue;
+    }
+    for (int which = 0; !shadelab::NthViewKey(row.Keys, which).empty(); ++which)
+    {
+      const std::string key = xdotoolName(shadelab::NthViewKey(row.Keys, which));
+      viewer.Keys({ key });
+      const Image after = viewer.Screenshot();
+      ASSERT_EQ(after.Width, W) << key;
+      EXPECT_GT(Compare(before, after).Pixels, 20) << "key " << key;
+      before = after;
+      if (row.Action == shadelab::ViewAction::Term)
+      {
+        viewer.Keys({ key });
+        before = viewer.Screenshot();
+      }
+    }
+  }
+  viewer.Keys({ "equal" }); // + without shift
+  EXPECT_GT(Compare(before, viewer.Screenshot()).Pixels, 20) << "key =";
 }
 
 TEST(View, HelpOverlayAppearsAndGoes)

@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/sibling_executable.h"
+#include "desktop/view_keys.h"
 #include "scene/camera.h"
 #include "scene/comparison_panels.h"
 
@@ -9,28 +10,27 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 
 namespace shadelab
 {
-const char* const ViewKeysHelp =
-  "Keys:\n"
-  "  0 1 2 3   shading none, flat, gouraud, phong\n"
-  "  b         Blinn-Phong / Phong reflection\n"
-  "  m M       next / previous material\n"
-  "  l         lights: point at camera, directional, spot\n"
-  "  + -       shininess up / down\n"
-  "  a d s     ambient, diffuse, specular term on / off\n"
-  "  w         normal weighting (computed once each)\n"
-  "  n         normal glyphs\n"
-  "  e         edges\n"
-  "  c         comparison layout (as compare's options), linked cameras\n"
-  "  r         reset the camera\n"
-  "  p         screenshot (its name is printed)\n"
-  "  h         this help\n"
-  "  q Esc     quit\n"
-  "Mouse: left rotate, middle pan, right or wheel zoom.";
+std::string ViewKeysHelp()
+{
+  std::size_t width = 0;
+  for (const ViewKey& key : ViewKeys)
+  {
+    width = std::max(width, std::strlen(key.Keys));
+  }
+  std::string help = "Keys:\n";
+  for (const ViewKey& key : ViewKeys)
+  {
+    help += "  " + std::string(key.Keys) + std::string(width + 3 - std::strlen(key.Keys), ' ') +
+      key.Help + "\n";
+  }
+  return help + ViewMouseHelp;
+}
 
 CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
 {
@@ -53,7 +53,7 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
       "(scripts/bench-view)")
     ->check(CLI::Range(1, 100000))
     ->option_text("N");
-  view->footer(std::string(ViewKeysHelp) + "\n\n" + CameraHelp);
+  view->footer(ViewKeysHelp() + "\n\n" + CameraHelp);
   return view;
 }
 

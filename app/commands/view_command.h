@@ -1,4 +1,4 @@
-// `shadelab view MESH [options]` (issue 5): the desktop inspector, a real
+// `shadelab view MESH [options]`: the desktop inspector, a real
 // window through VTK's native backend. shadelab itself links OSMesa first
 // (the headless backend), so the window runs in an executable of its own,
 // shadelab-view, which shadelab becomes (exec) after checking the command
@@ -41,8 +41,8 @@ int ExecViewer(int argc, char** argv);
 /** Opens the window and runs until it is closed (shadelab-view); the exit code. */
 int RunView(const ViewOptions& options, const std::string& commandLine);
 
-/** The keys, as `h` shows them and --help lists them. */
-extern const char* const ViewKeysHelp;
+/** The key table (desktop/view_keys.h) as `h` shows it and --help lists it. */
+std::string ViewKeysHelp();
 }
 
 #endif

@@ -1,264 +1,17 @@
-// `shadelab view` in a real window (issue 5): an X server of its own (Xvfb),
-// keys sent to the window as X events (xdotool), and what the window shows
-// read back through the inspector's own screenshot key `p`.
-#include "cli_test_support.h"
+// `shadelab view` in a real window (the desktop inspector): what it shows,
+// and what each key and the mouse change (harness: viewer.h).
+#include "desktop/view_keys.h"
+#include "viewer.h"
 
 #include <gtest/gtest.h>
-
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 using namespace shadelab_test;
 using namespace std::chrono_literals;
-
-namespace
-{
-constexpr int W = 480;
-constexpr int H = 360;
-// The HUD's three lines at the bottom left; its ms/frame changes frame to
-// frame, so pictures are compared above it.
-constexpr int HudHeight = 70;
-
-std::string Slurp(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// An X server for this test program: Xvfb on the first free display,
-// which it names through -displayfd once it accepts connections.
-class XServer : public ::testing::Environment
-{
-public:
-  void SetUp() override
-  {
-    int fds[2];
-    ASSERT_EQ(pipe(fds), 0);
-    this->Pid = fork();
-    if (this->Pid == 0)
-    {
-      close(fds[0]);
-      const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
-        "tcp", static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    close(fds[1]);
-    std::string number;
-    char c;
-    while (read(fds[0], &c, 1) == 1 && c != '\n')
-    {
-      number += c;
-    }
-    close(fds[0]);
-    ASSERT_FALSE(number.empty()) << "Xvfb did not start (is the xvfb package installed?)";
-    setenv("DISPLAY", (":" + number).c_str(), 1);
-  }
-  void TearDown() override
-  {
-    if (this->Pid > 0)
-    {
-      kill(this->Pid, SIGTERM);
-      waitpid(this->Pid, nullptr, 0);
-    }
-  }
-
-private:
-  pid_t Pid = -1;
-};
-
-const auto* const Server = ::testing::AddGlobalTestEnvironment(new XServer);
-
-int Run(const std::string& command)
-{
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// A running `shadelab view MESH ARGS...` in a temporary folder (where its
-// screenshots go), under a file-size limit if one is given.
-class Viewer
-{
-public:
-  explicit Viewer(const std::vector<std::string>& args,
-    const std::string& size = std::to_string(W) + "x" + std::to_string(H),
-    rlim_t fileSizeLimit = RLIM_INFINITY)
-    : Title("shadelab - spot.obj")
-  {
-    std::vector<std::string> words{ SHADELAB_BINARY, "view", TestMesh("spot.obj").string(),
-      "--size", size, "--camera-position", "3.9,1.5,-2.2" };
-    words.insert(words.end(), args.begin(), args.end());
-    this->Pid = fork();
-    if (this->Pid == 0)
-    {
-      const rlimit limit{ fileSizeLimit, fileSizeLimit };
-      if ((fileSizeLimit != RLIM_INFINITY && setrlimit(RLIMIT_FSIZE, &limit) != 0) ||
-        chdir(this->Dir.path().c_str()) != 0 ||
-        !freopen((this->Dir / "stdout").c_str(), "w", stdout) ||
-        !freopen((this->Dir / "stderr").c_str(), "w", stderr))
-      {
-        _exit(127);
-      }
-      std::vector<char*> argv;
-      for (std::string& w : words)
-      {
-        argv.push_back(w.data());
-      }
-      argv.push_back(nullptr);
-      execv(argv[0], argv.data());
-      _exit(127);
-    }
-    // The window exists once xdotool finds it by its title.
-    const std::string search =
-      "timeout 60 xdotool search --sync --name '^" + this->Title + "$' 2>/dev/null | head -1";
-    FILE* found = popen(search.c_str(), "r");
-    char line[64] = {};
-    if (found && fgets(line, sizeof line, found))
-    {
-      this->Window = std::string(line, std::strcspn(line, "\n"));
-    }
-    if (found)
-    {
-      pclose(found);
-    }
-  }
-
-  ~Viewer()
-  {
-    if (this->Pid > 0 && !this->Exited)
-    {
-      kill(this->Pid, SIGKILL);
-      waitpid(this->Pid, nullptr, 0);
-    }
-  }
-
-  bool HasWindow() const { return !this->Window.empty(); }
-
-  /** Sends keys (xdotool names) to the window, one X event each. */
-  void Keys(const std::vector<std::string>& keys)
-  {
-    for (const std::string& key : keys)
-    {
-      Run("xdotool key --window " + this->Window + " " + key + " 2>/dev/null");
-    }
-  }
-
-  /** The mouse: press at (x, y) in the window, move by dx, and release unless `hold`. */
-  void Drag(int x, int y, int dx, bool hold)
-  {
-    const std::string w = " --window " + this->Window;
-    Run("xdotool mousemove" + w + " " + std::to_string(x) + " " + std::to_string(y) +
-      " mousedown 1 mousemove_relative -- " + std::to_string(dx) + " 0 2>/dev/null");
-    if (!hold)
-    {
-      Run("xdotool mouseup 1 2>/dev/null");
-    }
-  }
-
-  void Release() { Run("xdotool mouseup 1 2>/dev/null"); }
-
-  /** Presses p and reads the screenshot the viewer names on its stdout. */
-  Image Screenshot()
-  {
-    const std::size_t before = this->Shots;
-    this->Keys({ "p" });
-    const auto deadline = std::chrono::steady_clock::now() + 30s;
-    while (std::chrono::steady_clock::now() < deadline)
-    {
-      std::istringstream out(Slurp(this->Dir / "stdout"));
-      std::vector<std::string> paths;
-      for (std::string line; std::getline(out, line);)
-      {
-        const std::string tag = "shadelab: screenshot ";
-        if (line.rfind(tag, 0) == 0)
-        {
-          paths.push_back(line.substr(tag.size()));
-        }
-      }
-      if (paths.size() > before)
-      {
-        this->Shots = paths.size();
-        return ReadImage(paths.back());
-      }
-      std::this_thread::sleep_for(50ms);
-    }
-    return {};
-  }
-
-  /** Waits up to 20 s for the viewer to end; its exit code, or -1 if it did not. */
-  int Wait()
-  {
-    const auto deadline = std::chrono::steady_clock::now() + 20s;
-    int status = 0;
-    while (std::chrono::steady_clock::now() < deadline)
-    {
-      if (waitpid(this->Pid, &status, WNOHANG) == this->Pid)
-      {
-        this->Exited = true;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      }
-      std::this_thread::sleep_for(50ms);
-    }
-    return -1;
-  }
-
-  std::string Stderr() const { return Slurp(this->Dir / "stderr"); }
-
-  /** The files in the viewer's folder (stdout and stderr among them). */
-  std::vector<std::string> Files() const { return this->Dir.Files(); }
-
-  const std::string Title;
-
-private:
-  TempDir Dir;
-  pid_t Pid = -1;
-  bool Exited = false;
-  std::string Window;
-  std::size_t Shots = 0;
-};
-
-// The largest difference of two screenshots above the HUD, and how many
-// pixels differ there by more than `by`.
-struct Change
-{
-  float Largest = 0;
-  long long Pixels = 0;
-};
-
-Change Compare(const Image& a, const Image& b, float by = 2, int top = 0,
-  int bottom = H - HudHeight, int left = 0, int right = W)
-{
-  Change change;
-  for (int y = top; y < bottom; ++y)
-  {
-    for (int x = left; x < right; ++x)
-    {
-      float d = 0;
-      for (int c = 0; c < 3; ++c)
-      {
-        const size_t i = (static_cast<size_t>(y) * a.Width + x) * a.Channels + c;
-        d = std::max(d, std::fabs(a.Pixels[i] - b.Pixels[i]));
-      }
-      change.Largest = std::max(change.Largest, d);
-      change.Pixels += d > by;
-    }
-  }
-  return change;
-}
-}
 
 TEST(View, TheWindowShowsWhatRenderRenders)
 {
@@ -338,6 +91,44 @@ TEST(View, MaterialReflectionLightAndShininessKeysChangeThePicture)
     EXPECT_GT(Compare(before, after).Pixels, 20) << "key " << key;
     before = after;
   }
+}
+
+// Every key of the table (desktop/view_keys.h) is answered: from the start
+// each changes the picture. Not here: p and q (their own tests), r (a
+// camera that moved first: RResetsTheCamera). A term key turns its term
+// back on after, lest the black mesh hide what the next key does.
+TEST(View, EveryKeyOfTheTableChangesThePicture)
+{
+  const auto xdotoolName = [](std::string_view key) -> std::string {
+    return key == "+" ? "plus" : key == "-" ? "minus" : std::string(key);
+  };
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  Image before = viewer.Screenshot();
+  for (const shadelab::ViewKey& row : shadelab::ViewKeys)
+  {
+    if (row.Action == shadelab::ViewAction::Screenshot ||
+      row.Action == shadelab::ViewAction::Quit || row.Action == shadelab::ViewAction::ResetCamera)
+    {
+      continue;
+    }
+    for (int which = 0; !shadelab::NthViewKey(row.Keys, which).empty(); ++which)
+    {
+      const std::string key = xdotoolName(shadelab::NthViewKey(row.Keys, which));
+      viewer.Keys({ key });
+      const Image after = viewer.Screenshot();
+      ASSERT_EQ(after.Width, W) << key;
+      EXPECT_GT(Compare(before, after).Pixels, 20) << "key " << key;
+      before = after;
+      if (row.Action == shadelab::ViewAction::Term)
+      {
+        viewer.Keys({ key });
+        before = viewer.Screenshot();
+      }
+    }
+  }
+  viewer.Keys({ "equal" }); // + without shift
+  EXPECT_GT(Compare(before, viewer.Screenshot()).Pixels, 20) << "key =";
 }
 
 TEST(View, HelpOverlayAppearsAndGoes)

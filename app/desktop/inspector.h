@@ -1,0 +1,146 @@
+// The desktop inspector: `shadelab view` in a window of VTK's native backend
+// (shadelab-view, without the OSMesa linkage). The mesh is shown under the
+// lecture's shaders and every setting changes live with a key; the
+// comparison layout shows compare's panels with one camera. Its parts:
+// inspector.cxx starts it and follows the camera, inspector_panels.cxx lays
+// out the panels, inspector_overlay.cxx draws the HUD and the help,
+// inspector_keys.cxx acts on the keys, inspector_pictures.cxx reads the
+// window back (screenshots, the difference cell).
+#ifndef shadelab_inspector_h
+#define shadelab_inspector_h
+
+#include "commands/view_command.h"
+#include "core/milliseconds.h"
+#include "desktop/view_keys.h"
+#include "desktop/vtkShadelabInteractorStyle.h"
+#include "image/comparison_picture.h"
+#include "image/image_writer_process.h"
+#include "scene/mesh_cache.h"
+#include "scene/scene_cache.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkImageActor.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+// The `l` key's cycle. Lights other than the given ones follow the camera,
+// as the lecture's light "at the viewpoint" does.
+enum class LightMode
+{
+  Given,         // --light, fixed in the world
+  PointAtCamera, // the lecture's default
+  Directional,   // shining along the view direction
+  Spot           // at the camera, along the view direction
+};
+
+/** value with `digits` decimals, as the HUD and the drag's timing print it. */
+std::string Fixed(double value, int digits);
+
+class Inspector
+{
+public:
+  Inspector(const ViewOptions& options, const std::string& commandLine)
+    : Options(options)
+    , CommandLine(commandLine)
+    , CompareOn(options.Compare)
+  {
+  }
+
+  int Run(void* display);
+
+private:
+  // A panel of the window: its renderer, and per rule and mesh the actor
+  // built for it (hidden while another shows), so that switching back
+  // reuses the compiled program and the uploaded buffers.
+  struct Slot
+  {
+    explicit Slot(MeshCache& meshes)
+      : Scenes(meshes)
+    {
+    }
+    vtkSmartPointer<vtkRenderer> Renderer;
+    vtkSmartPointer<vtkTextActor> Label;
+    SceneCache Scenes;
+    std::map<vtkPolyData*, vtkSmartPointer<vtkActor>> Glyphs, Edges;
+  };
+
+  // inspector.cxx: start-up, the camera and the lights that follow it, the
+  // drag's timing.
+  int Load();
+  void SetUpWindow(void* display);
+  void ObserveFrames();
+  void ObserveDrags();
+  std::vector<Light> CameraLights(const SceneOptions& scene) const;
+  void FollowCamera();
+  void ResetCamera();
+  int MeasureDrag();
+
+  // inspector_panels.cxx: the panels, one or compare's grid.
+  void Apply();
+  void MakeSlots(std::size_t count, int columns, bool difference);
+  void ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* shown);
+  vtkActor* GlyphsOf(Slot& slot, vtkPolyData* mesh);
+  vtkActor* EdgesOf(Slot& slot, vtkPolyData* mesh);
+
+  // inspector_overlay.cxx: the texts over the panels.
+  void SetUpOverlay();
+  void UpdateHud();
+
+  // inspector_keys.cxx: the key table's actions.
+  void OnKey(const std::string& key);
+  bool Act(ViewAction action, int which);
+  void StepMaterial(int step);
+  void NextLights();
+  void NextWeighting();
+
+  // inspector_pictures.cxx: the window's pixels read back.
+  FloatImage GrabWindow();
+  void RefreshDifference();
+  void Screenshot();
+
+  ViewOptions Options; // Options.Scene: the command line's, then as the keys change it
+  std::string CommandLine;
+  LightMode Lights = LightMode::PointAtCamera;
+  bool Ambient = true, Diffuse = true, Specular = true;
+  bool GlyphsOn = false, EdgesOn = false, CompareOn = false, HelpOn = false, Dragging = false;
+  bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
+  std::string Problem;      // the last thing that went wrong, shown in the HUD
+  MeshCache Meshes;
+  double Bounds[6] = {};
+  vtkIdType Triangles = 0;
+
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkShadelabInteractorStyle> Style;
+  vtkNew<vtkCamera> Camera;     // every panel's: linked cameras
+  vtkNew<vtkRenderer> Backdrop; // the whole window, beneath the panels
+  vtkNew<vtkRenderer> Overlay;
+  vtkNew<vtkTextActor> Hud;
+  vtkNew<vtkTextActor> Help;
+  std::vector<Slot> Slots;
+  Comparison Plan;             // what the comparison layout shows
+  int Columns = 1, Rows = 1;   // the panels' grid
+  bool DifferenceCell = false; // the last cell holds the difference of two panels
+  vtkNew<vtkRenderer> DifferenceRenderer;
+  vtkNew<vtkImageActor> DifferenceImage;
+  Clock::time_point FrameStart;
+  std::deque<double> FrameMs; // the last frames' times
+  std::unique_ptr<ImageWriterProcess> Writer;
+};
+}
+
+#endif

@@ -1,0 +1,149 @@
+// The inspector's keys: each key of the table (desktop/view_keys.h) to its
+// row's action.
+#include "desktop/inspector.h"
+
+#include "scene/scene.h"
+#include "vtkShadelabMeshNormals.h"
+
+#include <algorithm>
+
+namespace shadelab
+{
+namespace
+{
+const std::vector<std::string> Weightings = Names<vtkShadelabMeshNormals::Weightings>();
+
+// The table's name of a key that arrives under another: X names Esc
+// "Escape", and = is + without shift on a US keyboard.
+std::string TableName(const std::string& key)
+{
+  if (key == "Escape")
+  {
+    return "Esc";
+  }
+  return key == "=" ? "+" : key;
+}
+}
+
+void Inspector::OnKey(const std::string& key)
+{
+  const ViewKeyPress press = FindViewKey(TableName(key));
+  if (!press.Row || !this->Act(press.Row->Action, press.Which))
+  {
+    return;
+  }
+  this->Apply();
+  this->Window->Render();
+  this->RefreshDifference();
+}
+
+// Does `action`, `which` the key's place in its row; whether the picture is
+// to be drawn again.
+bool Inspector::Act(ViewAction action, int which)
+{
+  SceneOptions& s = this->Options.Scene;
+  switch (action)
+  {
+    case ViewAction::Shading:
+      s.ShadingRule = static_cast<Shading>(which); // the row is in Shading's order
+      return true;
+    case ViewAction::Reflection:
+      s.ReflectionModel =
+        s.ReflectionModel == Reflection::BlinnPhong ? Reflection::Phong : Reflection::BlinnPhong;
+      return true;
+    case ViewAction::Material:
+      this->StepMaterial(which == 0 ? 1 : -1);
+      return true;
+    case ViewAction::Lights:
+      this->NextLights();
+      return true;
+    case ViewAction::Shininess:
+    {
+      const double ns = s.EffectiveMaterial().Ns;
+      s.Ns = which == 1 ? ns / 1.5 : std::max(1.0, ns * 1.5);
+      return true;
+    }
+    case ViewAction::Term:
+    {
+      bool& term = which == 0 ? this->Ambient : which == 1 ? this->Diffuse : this->Specular;
+      term = !term;
+      return true;
+    }
+    case ViewAction::Weighting:
+      this->NextWeighting();
+      return true;
+    case ViewAction::Glyphs:
+      this->GlyphsOn = !this->GlyphsOn;
+      return true;
+    case ViewAction::Edges:
+      this->EdgesOn = !this->EdgesOn;
+      return true;
+    case ViewAction::Compare:
+      this->CompareOn = !this->CompareOn;
+      this->Apply();
+      this->ResetCamera(); // the panels' aspect
+      return true;
+    case ViewAction::ResetCamera:
+      this->ResetCamera();
+      return true;
+    case ViewAction::Screenshot:
+      this->Screenshot();
+      return false;
+    case ViewAction::Help:
+      this->HelpOn = !this->HelpOn;
+      return true;
+    case ViewAction::Quit:
+      this->Interactor->TerminateApp();
+      return false;
+  }
+  return false;
+}
+
+// The lecture's material `step` places along its table, round.
+void Inspector::StepMaterial(int step)
+{
+  SceneOptions& s = this->Options.Scene;
+  const auto& materials = LectureMaterials();
+  const auto current = std::find_if(materials.begin(), materials.end(),
+    [&s](const Material& m) { return m.Name == s.MaterialName; });
+  const int n = static_cast<int>(materials.size());
+  const int index = current == materials.end() ? -1 : static_cast<int>(current - materials.begin());
+  s.MaterialName = materials[(index + step + n) % n].Name;
+  s.Ka.reset(); // the command line's coefficients were for its material
+  s.Kd.reset();
+  s.Ks.reset();
+  s.Ns.reset();
+}
+
+// LightMode's cycle; the given lights only when there are any.
+void Inspector::NextLights()
+{
+  const bool given = !this->Options.Scene.Lights.empty();
+  const int next = static_cast<int>(this->Lights) + 1;
+  this->Lights = static_cast<LightMode>(next > static_cast<int>(LightMode::Spot)
+      ? (given ? 0 : static_cast<int>(LightMode::PointAtCamera))
+      : next);
+}
+
+// The cycle: the file's normals (when it has them), then each weighting.
+void Inspector::NextWeighting()
+{
+  SceneOptions& s = this->Options.Scene;
+  const bool fromFile = s.Normals != NormalsMode::Compute && this->FileNormals;
+  const auto at = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);
+  if (fromFile)
+  {
+    s.Normals = NormalsMode::Compute;
+    s.Computed.Weighting = Weightings.front();
+  }
+  else if (at == Weightings.end() || at + 1 == Weightings.end())
+  {
+    s.Computed.Weighting = Weightings.front();
+    s.Normals = this->FileNormals ? NormalsMode::Auto : NormalsMode::Compute;
+  }
+  else
+  {
+    s.Computed.Weighting = *(at + 1);
+  }
+}
+}

@@ -1,0 +1,114 @@
+// The texts over the inspector's panels: the HUD at the bottom left and the
+// key list (key h) in the middle.
+#include "desktop/inspector.h"
+
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+namespace
+{
+const char* ToString(LightMode mode)
+{
+  switch (mode)
+  {
+    case LightMode::Given:
+      return "the given lights";
+    case LightMode::PointAtCamera:
+      return "point light at camera";
+    case LightMode::Directional:
+      return "directional light along the view";
+    case LightMode::Spot:
+      return "spot light at camera (8 deg, e 4)";
+  }
+  return "?";
+}
+
+// The key list with every line padded to the longest: in a monospace font,
+// centring the block then leaves the keys and their meanings in columns. A
+// space each side keeps the text off the background box's edges.
+std::string AlignedKeysHelp()
+{
+  std::vector<std::string> lines;
+  std::istringstream help(ViewKeysHelp());
+  std::size_t width = 0;
+  for (std::string line; std::getline(help, line);)
+  {
+    width = std::max(width, line.size());
+    lines.push_back(line);
+  }
+  std::string block;
+  for (const std::string& line : lines)
+  {
+    block += (block.empty() ? " " : "\n ") + line + std::string(width - line.size() + 1, ' ');
+  }
+  return block;
+}
+}
+
+std::string Fixed(double value, int digits)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", digits, value);
+  return text;
+}
+
+void Inspector::SetUpOverlay()
+{
+  this->Hud->GetTextProperty()->SetFontSize(15);
+  this->Hud->GetTextProperty()->SetColor(0.9, 0.9, 0.6);
+  this->Hud->SetPosition(8, 8);
+  this->Overlay->AddActor2D(this->Hud);
+  this->Help->SetInput(AlignedKeysHelp().c_str());
+  vtkTextProperty* help = this->Help->GetTextProperty();
+  help->SetFontSize(17);
+  help->SetFontFamilyToCourier();
+  help->SetBackgroundColor(0.05, 0.05, 0.1);
+  help->SetBackgroundOpacity(0.85);
+  help->SetJustificationToCentered();
+  help->SetVerticalJustificationToCentered();
+  this->Help->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  this->Help->SetPosition(0.5, 0.5);
+  this->Help->VisibilityOff();
+  this->Overlay->AddActor2D(this->Help);
+}
+
+void Inspector::UpdateHud()
+{
+  const SceneOptions& s = this->Options.Scene;
+  const Material m = s.EffectiveMaterial();
+  std::ostringstream hud;
+  hud << (this->CompareOn ? "compare: " + this->Options.Panels.Modes
+                          : std::string(ToString(s.ShadingRule)) + " shading")
+      << " | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") << " | "
+      << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << ToString(this->Lights) << "\n";
+  hud << this->Triangles << " triangles | normals: "
+      << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
+                                                                 : s.Computed.Weighting.c_str())
+      << " | terms:" << (this->Ambient ? " ambient" : "") << (this->Diffuse ? " diffuse" : "")
+      << (this->Specular ? " specular" : "") << "\n";
+  double mean = 0;
+  for (double ms : this->FrameMs)
+  {
+    mean += ms / this->FrameMs.size();
+  }
+  hud << Fixed(mean, 1) << " ms/frame";
+  if (this->Options.InteractiveShading && !this->CompareOn)
+  {
+    hud << " | while dragging: " << ToString(*this->Options.InteractiveShading)
+        << (this->Dragging ? " (now)" : "");
+  }
+  hud << " | h: keys";
+  if (!this->Problem.empty())
+  {
+    hud << "\n" << this->Problem;
+  }
+  this->Hud->SetInput(hud.str().c_str());
+}
+}

@@ -1,0 +1,191 @@
+// The inspector's panels: one, or compare's grid with linked cameras and the
+// difference cell; the glyphs and edges drawn over a panel's mesh.
+#include "desktop/inspector.h"
+
+#include "scene/comparison_panels.h"
+#include "scene/scene.h"
+
+#include <vtkBoundingBox.h>
+#include <vtkExtractEdges.h>
+#include <vtkHedgeHog.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab
+{
+namespace
+{
+// An unlit actor of lines' output, added to renderer.
+vtkSmartPointer<vtkActor> AddLines(vtkRenderer* renderer, vtkAlgorithm* lines, const Rgb& colour)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(lines->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  renderer->AddActor(actor);
+  return actor;
+}
+}
+
+// Shows the settings as they are now: the panels' scenes, their extras and
+// labels, the help and the HUD.
+void Inspector::Apply()
+{
+  SceneOptions base = this->Options.Scene;
+  ShowTerms(base, this->Ambient, this->Diffuse, this->Specular);
+  std::vector<Panel> panels;
+  if (this->CompareOn)
+  {
+    this->Plan = PlanComparison(this->Options.Panels, base); // checked at start
+    panels = this->Plan.Panels;
+  }
+  else
+  {
+    // The drag-time rule only outside the comparison, where the rules are the point.
+    if (this->Dragging && this->Options.InteractiveShading)
+    {
+      base.ShadingRule = *this->Options.InteractiveShading;
+    }
+    panels.push_back({ base, "", "", Terms::All });
+  }
+  this->MakeSlots(panels.size(), this->CompareOn ? this->Plan.Columns : 0,
+    this->CompareOn && this->Plan.DifferenceA >= 0);
+  this->Problem.clear();
+  for (std::size_t i = 0; i < panels.size(); ++i)
+  {
+    Slot& slot = this->Slots[i];
+    const SceneOptions& scene = panels[i].Scene;
+    const std::vector<Light> lights = CameraLights(scene);
+    const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights);
+    if (!shown.Scene)
+    {
+      this->Problem = shown.Error;
+      continue;
+    }
+    this->ShowExtras(slot, scene, shown.Mesh->Mesh);
+    slot.Label->SetInput(panels[i].Label.c_str());
+    slot.Label->SetVisibility(this->CompareOn);
+  }
+  this->Help->SetVisibility(this->HelpOn);
+  this->UpdateHud();
+}
+
+// The glyphs and edges that are on, over the panel's mesh `shown`.
+void Inspector::ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* shown)
+{
+  for (auto* extras : { &slot.Glyphs, &slot.Edges })
+  {
+    for (auto& [mesh, actor] : *extras)
+    {
+      actor->VisibilityOff();
+    }
+  }
+  if (this->GlyphsOn)
+  {
+    // The vertex normals that gouraud and phong use, whatever this rule.
+    SceneOptions lit = scene;
+    lit.ShadingRule = Shading::Phong;
+    if (vtkPolyData* normals = this->Meshes.Get(lit).Mesh)
+    {
+      this->GlyphsOf(slot, normals)->VisibilityOn();
+    }
+  }
+  if (this->EdgesOn)
+  {
+    this->EdgesOf(slot, shown)->VisibilityOn();
+  }
+}
+
+void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
+{
+  const int cells = static_cast<int>(count) + (difference ? 1 : 0);
+  const ComparisonLayout grid = LayOut(cells, 1, 1, columns, false);
+  if (this->Slots.size() == count && this->Columns == grid.Columns && this->Rows == grid.Rows &&
+    this->DifferenceCell == difference)
+  {
+    return;
+  }
+  for (Slot& slot : this->Slots)
+  {
+    this->Window->RemoveRenderer(slot.Renderer);
+  }
+  this->Window->RemoveRenderer(this->DifferenceRenderer);
+  this->Slots.clear();
+  while (this->Slots.size() < count)
+  {
+    this->Slots.emplace_back(this->Meshes);
+  }
+  this->Columns = grid.Columns;
+  this->Rows = grid.Rows;
+  this->DifferenceCell = difference;
+  const auto place = [&grid](vtkRenderer* renderer, int cell)
+  {
+    const int column = cell % grid.Columns, row = cell / grid.Columns;
+    renderer->SetViewport(static_cast<double>(column) / grid.Columns,
+      1 - static_cast<double>(row + 1) / grid.Rows, static_cast<double>(column + 1) / grid.Columns,
+      1 - static_cast<double>(row) / grid.Rows);
+  };
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    Slot& slot = this->Slots[i];
+    slot.Renderer = vtkSmartPointer<vtkRenderer>::New();
+    place(slot.Renderer, static_cast<int>(i));
+    slot.Renderer->SetActiveCamera(this->Camera);
+    slot.Renderer->SetBackground(this->Options.Scene.Background.data());
+    slot.Label = vtkSmartPointer<vtkTextActor>::New();
+    slot.Label->GetTextProperty()->SetFontSize(16);
+    slot.Label->GetTextProperty()->SetVerticalJustificationToTop();
+    slot.Label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    slot.Label->SetPosition(0.02, 0.98);
+    slot.Renderer->AddActor2D(slot.Label);
+    this->Window->AddRenderer(slot.Renderer);
+  }
+  if (difference)
+  {
+    // The grid's last cell, bottom right: away from the HUD at the bottom left.
+    place(this->DifferenceRenderer, grid.Columns * grid.Rows - 1);
+    this->DifferenceImage->VisibilityOff(); // until RefreshDifference
+    this->Window->AddRenderer(this->DifferenceRenderer);
+  }
+  // The panels' aspect changes with their number.
+  this->Slots.front().Renderer->ResetCameraClippingRange(this->Bounds);
+}
+
+vtkActor* Inspector::GlyphsOf(Slot& slot, vtkPolyData* mesh)
+{
+  auto& actor = slot.Glyphs[mesh];
+  if (!actor)
+  {
+    vtkNew<vtkHedgeHog> hedgehog;
+    hedgehog->SetInputData(mesh);
+    hedgehog->SetVectorModeToUseNormal();
+    // About twice the vertices' spacing (n points spread over the mesh's
+    // extent), so that neighbours' glyphs barely overlap.
+    const double diagonal = vtkBoundingBox(this->Bounds).GetDiagonalLength();
+    const double spacing =
+      diagonal / std::sqrt(static_cast<double>(std::max<vtkIdType>(mesh->GetNumberOfPoints(), 1)));
+    hedgehog->SetScaleFactor(std::clamp(2 * spacing, 0.004 * diagonal, 0.05 * diagonal));
+    actor = AddLines(slot.Renderer, hedgehog, { 0.2, 0.9, 1.0 });
+  }
+  return actor;
+}
+
+vtkActor* Inspector::EdgesOf(Slot& slot, vtkPolyData* mesh)
+{
+  auto& actor = slot.Edges[mesh];
+  if (!actor)
+  {
+    vtkNew<vtkExtractEdges> edges;
+    edges->SetInputData(mesh);
+    actor = AddLines(slot.Renderer, edges, { 0.05, 0.05, 0.05 });
+  }
+  return actor;
+}
+}

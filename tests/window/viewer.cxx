@@ -1,0 +1,224 @@
+#include "viewer.h"
+
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+using namespace std::chrono_literals;
+
+namespace shadelab_test
+{
+namespace
+{
+// An X server for this test program: Xvfb on the first free display,
+// which it names through -displayfd once it accepts connections.
+class XServer : public ::testing::Environment
+{
+public:
+  void SetUp() override
+  {
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
+    this->Pid = fork();
+    if (this->Pid == 0)
+    {
+      close(fds[0]);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
+        "tcp", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    std::string number;
+    char c;
+    while (read(fds[0], &c, 1) == 1 && c != '\n')
+    {
+      number += c;
+    }
+    close(fds[0]);
+    ASSERT_FALSE(number.empty()) << "Xvfb did not start (is the xvfb package installed?)";
+    setenv("DISPLAY", (":" + number).c_str(), 1);
+  }
+  void TearDown() override
+  {
+    if (this->Pid > 0)
+    {
+      kill(this->Pid, SIGTERM);
+      waitpid(this->Pid, nullptr, 0);
+    }
+  }
+
+private:
+  pid_t Pid = -1;
+};
+
+const auto* const Server = ::testing::AddGlobalTestEnvironment(new XServer);
+}
+
+std::string Slurp(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int Run(const std::string& command)
+{
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+Viewer::Viewer(const std::vector<std::string>& args, const std::string& size, rlim_t fileSizeLimit)
+  : Title("shadelab - spot.obj")
+{
+  std::vector<std::string> words{ SHADELAB_BINARY, "view", TestMesh("spot.obj").string(), "--size",
+    size, "--camera-position", "3.9,1.5,-2.2" };
+  words.insert(words.end(), args.begin(), args.end());
+  this->Pid = fork();
+  if (this->Pid == 0)
+  {
+    const rlimit limit{ fileSizeLimit, fileSizeLimit };
+    if ((fileSizeLimit != RLIM_INFINITY && setrlimit(RLIMIT_FSIZE, &limit) != 0) ||
+      chdir(this->Dir.path().c_str()) != 0 ||
+      !freopen((this->Dir / "stdout").c_str(), "w", stdout) ||
+      !freopen((this->Dir / "stderr").c_str(), "w", stderr))
+    {
+      _exit(127);
+    }
+    std::vector<char*> argv;
+    for (std::string& w : words)
+    {
+      argv.push_back(w.data());
+    }
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  // The window exists once xdotool finds it by its title.
+  const std::string search =
+    "timeout 60 xdotool search --sync --name '^" + this->Title + "$' 2>/dev/null | head -1";
+  FILE* found = popen(search.c_str(), "r");
+  char line[64] = {};
+  if (found && fgets(line, sizeof line, found))
+  {
+    this->Window = std::string(line, std::strcspn(line, "\n"));
+  }
+  if (found)
+  {
+    pclose(found);
+  }
+}
+
+Viewer::~Viewer()
+{
+  if (this->Pid > 0 && !this->Exited)
+  {
+    kill(this->Pid, SIGKILL);
+    waitpid(this->Pid, nullptr, 0);
+  }
+}
+
+void Viewer::Keys(const std::vector<std::string>& keys)
+{
+  for (const std::string& key : keys)
+  {
+    Run("xdotool key --window " + this->Window + " " + key + " 2>/dev/null");
+  }
+}
+
+void Viewer::Drag(int x, int y, int dx, bool hold)
+{
+  const std::string w = " --window " + this->Window;
+  Run("xdotool mousemove" + w + " " + std::to_string(x) + " " + std::to_string(y) +
+    " mousedown 1 mousemove_relative -- " + std::to_string(dx) + " 0 2>/dev/null");
+  if (!hold)
+  {
+    Run("xdotool mouseup 1 2>/dev/null");
+  }
+}
+
+void Viewer::Release()
+{
+  Run("xdotool mouseup 1 2>/dev/null");
+}
+
+Image Viewer::Screenshot()
+{
+  const std::size_t before = this->Shots;
+  this->Keys({ "p" });
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (std::chrono::steady_clock::now() < deadline)
+  {
+    std::istringstream out(Slurp(this->Dir / "stdout"));
+    std::vector<std::string> paths;
+    for (std::string line; std::getline(out, line);)
+    {
+      const std::string tag = "shadelab: screenshot ";
+      if (line.rfind(tag, 0) == 0)
+      {
+        paths.push_back(line.substr(tag.size()));
+      }
+    }
+    if (paths.size() > before)
+    {
+      this->Shots = paths.size();
+      return ReadImage(paths.back());
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  return {};
+}
+
+int Viewer::Wait()
+{
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline)
+  {
+    if (waitpid(this->Pid, &status, WNOHANG) == this->Pid)
+    {
+      this->Exited = true;
+      return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  return -1;
+}
+
+std::string Viewer::Stderr() const
+{
+  return Slurp(this->Dir / "stderr");
+}
+
+Change Compare(const Image& a, const Image& b, float by, int top, int bottom, int left, int right)
+{
+  Change change;
+  for (int y = top; y < bottom; ++y)
+  {
+    for (int x = left; x < right; ++x)
+    {
+      float d = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const size_t i = (static_cast<size_t>(y) * a.Width + x) * a.Channels + c;
+        d = std::max(d, std::fabs(a.Pixels[i] - b.Pixels[i]));
+      }
+      change.Largest = std::max(change.Largest, d);
+      change.Pixels += d > by;
+    }
+  }
+  return change;
+}
+}

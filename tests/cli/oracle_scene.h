@@ -1,7 +1,7 @@
 // Planar scenes rendered by `shadelab render` and their expected pictures
-// through the double-precision CPU oracle (filters/shadelabShadingOracle.h),
-// interior pixels only: the machinery of the shading-oracle tests (issue 3)
-// and of the extremes suite (issue 6).
+// through the double-precision CPU oracle (filters/illumination/shadelabShadingOracle.h),
+// interior pixels only: the machinery of the shading-oracle tests
+// and of the extremes suite.
 //
 // Every scene is a grid of triangles over [-1, 1]^2 in local coordinates,
 // on the plane z = SlopeX*x + SlopeY*y, seen by an orthographic camera on +Z

@@ -1,4 +1,4 @@
-// `shadelab advise` end to end (issue 6): its verdicts from measurements
+// `shadelab advise` end to end: its verdicts from measurements
 // whose power laws are known exactly, and its errors.
 #include "cli_test_support.h"
 

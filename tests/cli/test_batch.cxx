@@ -1,4 +1,4 @@
-// `shadelab render --scene` end to end (issue 7): a batch equals its shots
+// `shadelab render --scene` end to end: a batch equals its shots
 // rendered one by one, shards cover every shot once, a failing shot does
 // not stop the rest, the same scene gives the same bytes, and the pictures
 // say which scene and shot they come from.

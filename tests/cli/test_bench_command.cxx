@@ -1,4 +1,4 @@
-// `shadelab bench --quick` end to end (issue 6): the files it writes and
+// `shadelab bench --quick` end to end: the files it writes and
 // what its measurements must show.
 #include "bench/speed_accuracy.h"
 #include "cli_test_support.h"

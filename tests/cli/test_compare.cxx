@@ -1,4 +1,4 @@
-// `shadelab compare` end to end (issue 5): the picture holds one panel per
+// `shadelab compare` end to end: the picture holds one panel per
 // mode at the panel size, each exactly what `shadelab render` gives for
 // that mode, labelled; the difference panel is zero for identical inputs
 // and marks exactly the pixels where two rules differ; the components add

@@ -1,5 +1,5 @@
 // "Model only what a scene requires": the GLSL that --dump-shaders writes is
-// the code that ran, generated for the scene (issue 3, part 4).
+// the code that ran, generated for the scene.
 #include "cli_test_support.h"
 
 #include <gtest/gtest.h>

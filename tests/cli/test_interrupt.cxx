@@ -1,4 +1,4 @@
-// Nothing lost (issue 8): a batch stopped by SIGINT or SIGTERM leaves only
+// Nothing lost: a batch stopped by SIGINT or SIGTERM leaves only
 // whole pictures and says how far it got; --skip-existing then renders the
 // rest and leaves the others alone.
 #include "cli_test_support.h"

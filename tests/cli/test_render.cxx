@@ -201,7 +201,7 @@ TEST(Render, HelpDocumentsTheCameraConventions)
 
 // The teapot has degenerate (zero-area) triangles at its poles, and a
 // zero-area triangle and a zero normal here: no rule may turn them into NaN
-// or Inf anywhere in the float picture (issue 3, numerical safety).
+// or Inf anywhere in the float picture (numerical safety).
 TEST(Render, DegenerateTrianglesGiveNoNaN)
 {
   TempDir dir;

@@ -1,6 +1,6 @@
 // The lecture's illumination model, pixel by pixel: orthographic renders of
 // planar meshes by `shadelab render` against the double-precision CPU oracle,
-// interior pixels only (issue 3). The scenes and the oracle's pictures are
+// interior pixels only. The scenes and the oracle's pictures are
 // oracle_scene.h's; this file lists the cases.
 #include "oracle_scene.h"
 

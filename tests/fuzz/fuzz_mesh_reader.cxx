@@ -1,4 +1,4 @@
-// libFuzzer target (issue 8): bytes as a mesh file of one format, read by
+// libFuzzer target: bytes as a mesh file of one format, read by
 // vtkShadelabMeshReader exactly as `shadelab render` reads it, then given to
 // the normals filter. Built once per format with SHADELAB_FUZZ_EXTENSION
 // (".obj", ".ply", ".stl", ".vtk"). A finding is a crash, a sanitizer

@@ -1,4 +1,4 @@
-// libFuzzer target (issue 8): the command line's value parsers (colours,
+// libFuzzer target: the command line's value parsers (colours,
 // points, lights, sizes, numbers, shards, comparison modes and --diff). The first byte picks the
 // parser, the rest is the text. They may only answer or throw std::invalid_argument; what they
 // accept must be in range.

@@ -1,4 +1,4 @@
-// libFuzzer target (issue 8): bytes as a scene file (`render --scene`),
+// libFuzzer target: bytes as a scene file (`render --scene`),
 // parsed by ReadSceneFile. A finding is a crash, a sanitizer report, an
 // exception that escapes, or a file that parses but gives a shot without a
 // mesh or an output.

@@ -1,4 +1,4 @@
-// Numerical stability at the extremes (issue 6): pictures and normals where
+// Numerical stability at the extremes: pictures and normals where
 // float arithmetic is pushed hardest, each against the double-precision
 // oracle with a stated bound, and never a NaN or an Inf.
 //

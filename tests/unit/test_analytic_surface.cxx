@@ -1,4 +1,4 @@
-// The ground truth of the accuracy measurements (issue 6): the analytic
+// The ground truth of the accuracy measurements: the analytic
 // surfaces' rays and normals, their tessellations, and the exact picture.
 #include "shadelabAnalyticSurface.h"
 #include "shadelabExactImage.h"

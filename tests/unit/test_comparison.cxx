@@ -1,4 +1,4 @@
-// The comparison's pieces (issue 5): modes parsed onto the base scene,
+// The comparison's pieces: modes parsed onto the base scene,
 // terms split by zeroing coefficients, --diff resolved, the difference of
 // two pictures and its heat map, and the layout.
 #include "image/comparison_picture.h"

@@ -1,4 +1,4 @@
-// The option-value parsers of the command line (app/options.h).
+// The option-value parsers of the command line (app/core/options.h).
 #include "core/options.h"
 
 #include <gtest/gtest.h>

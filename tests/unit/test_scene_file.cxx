@@ -1,4 +1,4 @@
-// Scene files (issue 7): what a valid file gives, each kind of invalid one
+// Scene files: what a valid file gives, each kind of invalid one
 // with its message, output templates, and the schema held to the parser.
 #include "scene/scene_file.h"
 #include "vtkShadelabMeshNormals.h"

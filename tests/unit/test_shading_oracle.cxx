@@ -1,4 +1,4 @@
-// The double-precision oracle (filters/shadelabShadingOracle) against the
+// The double-precision oracle (filters/illumination/shadelabShadingOracle) against the
 // lecture's equations written out independently here, in their plainest
 // form, and its case rules and guards.
 #include "shadelabShadingOracle.h"

@@ -87,15 +87,6 @@ void CheckCounts(const Header& header, std::size_t fileSize);
 /** Throws "truncated: header declares N <element>s but the file ends after M". */
 [[noreturn]] void Truncated(const Element& element, std::uint64_t items);
 
-/**
- * Every PLY scalar is read as a double; a count or an index converts to an
- * integer only where int64 holds it (a uint64 can say 1.8e19, and the cast
- * of a double beyond the range is undefined: a finding of fuzz_ply).
- */
-inline bool FitsInt64(double value)
-{
-  return value >= -0x1p63 && value < 0x1p63;
-}
 }
 
 #endif

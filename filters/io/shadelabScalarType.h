@@ -31,6 +31,16 @@ bool IsInteger(ScalarType type);
 
 /** The SizeOf(type) bytes at `bytes`, in the given byte order, as a double. */
 double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian);
+
+/**
+ * Binary mesh files' scalars are read as doubles; a count or an index
+ * converts to an integer only where int64 holds it (a uint64 can say 1.8e19,
+ * and the cast of a double beyond the range, or of NaN, is undefined).
+ */
+inline bool FitsInt64(double value)
+{
+  return value >= -0x1p63 && value < 0x1p63;
+}
 }
 
 #endif

@@ -19,16 +19,19 @@ vtkStandardNewMacro(vtkShadelabLegacyVTKReader);
 
 namespace
 {
+using shadelab::FitsInt64;
 using shadelab::MeshReadError;
 using shadelab::Quote;
 using shadelab::ScalarType;
 using shadelab::ToLower;
 using shadelab::ToUpper;
 
-// A ReadValues store that appends each value to `ids`.
+// A ReadValues store that appends each value to `ids`; one beyond int64
+// becomes -1, which the mesh's checks then report as out of range.
 auto AppendTo(std::vector<vtkIdType>& ids)
 {
-  return [&ids](std::uint64_t, double value) { ids.push_back(static_cast<vtkIdType>(value)); };
+  return [&ids](std::uint64_t, double value)
+  { ids.push_back(FitsInt64(value) ? static_cast<vtkIdType>(value) : vtkIdType{ -1 }); };
 }
 
 // The sections of a legacy VTK file of polydata; vtkDataReader compares

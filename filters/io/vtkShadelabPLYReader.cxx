@@ -20,6 +20,7 @@ vtkStandardNewMacro(vtkShadelabPLYReader);
 namespace
 {
 using namespace shadelab::ply;
+using shadelab::FitsInt64;
 using shadelab::MeshReadError;
 
 // Where the items of a vertex, face or tristrips element go in the mesh.

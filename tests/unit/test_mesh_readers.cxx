@@ -1006,6 +1006,24 @@ TEST_F(MeshReaders, BadLegacyVtk)
     { "truncated: POLYGONS declares 8 values but the file ends after 4" });
   this->ExpectError("cell.vtk", header + points + "POLYGONS 2 8\n3 0 1 2\n9 0 2 3\n",
     { "POLYGONS cell 1 does not fit the section's 8 values" });
+  // A binary uint64 point id beyond int64 is an error, not an undefined cast.
+  std::string huge =
+    "# vtk DataFile Version 5.1\nsquare\nBINARY\nDATASET POLYDATA\nPOINTS 4 float\n";
+  for (float v : { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 })
+  {
+    Put(huge, v, true);
+  }
+  huge += "\nPOLYGONS 3 6\nOFFSETS vtktypeint64\n";
+  for (std::int64_t v : { 0, 3, 6 })
+  {
+    Put(huge, v, true);
+  }
+  huge += "\nCONNECTIVITY vtktypeuint64\n";
+  for (std::uint64_t v : { 0ull, 1ull, 2ull, 0ull, 2ull, ~0ull })
+  {
+    Put(huge, v, true);
+  }
+  this->ExpectError("huge.vtk", huge + "\n", { "face 1 refers to vertex -1" });
   this->ExpectError("size.vtk", header + points + "POLYGONS 2 99999999999\n3 0 1 2\n",
     { "POLYGONS declares 99999999999 values, more than a", "-byte file can hold" });
   this->ExpectError("normals.vtk",

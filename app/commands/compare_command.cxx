@@ -65,7 +65,13 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
 
   MeshCache meshes;
   HeadlessRenderer renderer;
-  if (const std::string error = renderer.Start(o.Scene.Size.Width, o.Scene.Size.Height);
+  ImageSize rendered;
+  if (const std::string error = RenderedSize(o.Scene, rendered); !error.empty())
+  {
+    return ReportError("render", error);
+  }
+  if (const std::string error =
+        renderer.Start(o.Scene.Size.Width, o.Scene.Size.Height, o.Scene.Supersampling);
       !error.empty())
   {
     return ReportError("render", error);

@@ -37,6 +37,9 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
   CLI::App* view =
     program.add_subcommand("view", "Open MESH in a window (needs a display) and inspect it live");
   AddSceneOptions(*view, o.Scene);
+  // The window draws live at the screen's resolution: supersampling is for
+  // pictures (render, compare).
+  view->remove_option(view->get_option("--ssaa"));
   view->get_option("MESH")->required();
   view->get_option("--size")->description("Window size in pixels (default 1024x768)");
   view

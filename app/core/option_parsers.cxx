@@ -120,6 +120,20 @@ ImageSize ParseSize(const std::string& text)
   return { width, height };
 }
 
+std::string RenderedSize(const SceneOptions& o, ImageSize& rendered)
+{
+  const long long n = o.Supersampling;
+  const long long width = o.Size.Width * n, height = o.Size.Height * n;
+  if (width > MaxImageSide || height > MaxImageSide || width * height > MaxImagePixels)
+  {
+    return "--ssaa " + std::to_string(n) + " renders " + std::to_string(width) + "x" +
+      std::to_string(height) + ", beyond " + std::to_string(MaxImageSide) + " a side and " +
+      std::to_string(MaxImagePixels) + " pixels in all: a smaller --size or --ssaa";
+  }
+  rendered = { static_cast<int>(width), static_cast<int>(height) };
+  return {};
+}
+
 Light ParseLight(const std::string& text)
 {
   const auto parts = Split(text, ':');

@@ -84,6 +84,12 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
     "Image size in pixels (default " + std::to_string(o.Size.Width) + "x" +
       std::to_string(o.Size.Height) + ")")
     ->option_text("WxH");
+  command
+    .add_option("--ssaa", o.Supersampling,
+      "Anti-aliasing: N x N samples per pixel, averaged in float before quantising; exactly "
+      "the box average of the picture rendered N times as large (default 1)")
+    ->check(CLI::Range(1, MaxSupersampling))
+    ->option_text("N");
   AddParsed(command, "--camera-position", o.CameraPosition, ParseVec3, "Camera position")
     ->option_text("X,Y,Z");
   AddParsed(

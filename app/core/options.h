@@ -80,6 +80,7 @@ struct SceneOptions
   Rgb Ambient{ 0.2, 0.2, 0.2 };
   std::vector<Light> Lights; // empty: one white point light at the camera
   ImageSize Size;
+  int Supersampling = 1; // --ssaa N: N x N samples per pixel, box-averaged in float
   std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
   double ViewAngle = 30;
   bool Orthographic = false;
@@ -138,6 +139,15 @@ Rgb ParseRgb(const std::string& text);
 ImageSize ParseSize(const std::string& text);
 Light ParseLight(const std::string& text);
 double ParseNumber(const std::string& text);
+
+/**
+ * What the headless backend renders for o: Size times Supersampling a side;
+ * an error text when that is beyond the limits below, else "".
+ */
+std::string RenderedSize(const SceneOptions& o, ImageSize& rendered);
+
+/** The largest supersampling, N x N samples a pixel. */
+constexpr int MaxSupersampling = 8;
 
 /** The largest image side and area: the float read-back of 8192x8192 is 1 GiB. */
 constexpr int MaxImageSide = 16384;

@@ -24,6 +24,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <tuple>
 
 namespace shadelab
 {
@@ -167,18 +168,25 @@ private:
     return true;
   }
 
-  // The context for the shot's picture size, started on first use; null
-  // (and reported) when it cannot start.
+  // The context for the shot's picture size and supersampling, started on
+  // first use; null (and reported) when it cannot start.
   Context* ContextFor(const Shot& shot)
   {
+    const SceneOptions& s = shot.Scene;
+    ImageSize rendered;
+    if (const std::string error = RenderedSize(s, rendered); !error.empty())
+    {
+      this->Fail(shot, "render", error);
+      return nullptr;
+    }
     Context& context =
-      this->Contexts.try_emplace({ shot.Scene.Size.Width, shot.Scene.Size.Height }, this->Meshes)
+      this->Contexts.try_emplace({ s.Size.Width, s.Size.Height, s.Supersampling }, this->Meshes)
         .first->second;
     if (!context.Renderer)
     {
       context.Renderer = std::make_unique<HeadlessRenderer>();
       if (const std::string error =
-            context.Renderer->Start(shot.Scene.Size.Width, shot.Scene.Size.Height);
+            context.Renderer->Start(s.Size.Width, s.Size.Height, s.Supersampling);
           !error.empty())
       {
         context.Renderer.reset();
@@ -242,7 +250,7 @@ private:
   ImageWriterProcess Writer;     // started first: it binds OpenImageIO while we render
   const Shot* Writing = nullptr; // submitted to the writer, not yet collected
   MeshCache Meshes;
-  std::map<std::pair<int, int>, Context> Contexts;
+  std::map<std::tuple<int, int, int>, Context> Contexts; // width, height, supersampling
 };
 
 // This shard's shots: those whose index mod the count is the shard's index.

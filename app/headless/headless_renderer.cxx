@@ -30,11 +30,12 @@ HeadlessRenderer::~HeadlessRenderer()
   this->Window->Finalize();
 }
 
-std::string HeadlessRenderer::Start(int width, int height)
+std::string HeadlessRenderer::Start(int width, int height, int samples)
 {
   vtkShadelabOSMesaRenderWindow::ChooseRasterizerThreads();
   this->Window->SetMultiSamples(0); // exact, repeatable pixels
-  this->Window->SetSize(width, height);
+  this->Samples = samples;
+  this->Window->SetSize(width * samples, height * samples);
   const MessageScope messages;
   this->Window->Initialize();
   if (!this->Window->GetContextReady())
@@ -50,6 +51,8 @@ FloatImage HeadlessRenderer::Render()
   this->Window->Render();
   this->Error = messages.FirstError();
   ReportWarnings("render", messages.Warnings());
-  return { this->Capture->GetWidth(), this->Capture->GetHeight(), this->Capture->GetPixels() };
+  FloatImage samples{ this->Capture->GetWidth(), this->Capture->GetHeight(),
+    this->Capture->GetPixels() };
+  return this->Samples > 1 ? BoxAverage(samples, this->Samples) : samples;
 }
 }

@@ -21,8 +21,11 @@ public:
   HeadlessRenderer();
   ~HeadlessRenderer();
 
-  /** Creates the OpenGL context for width x height pictures; an error text or "". */
-  std::string Start(int width, int height);
+  /**
+   * Creates the OpenGL context for width x height pictures, each pixel
+   * `samples` x `samples` rendered samples (--ssaa); an error text or "".
+   */
+  std::string Start(int width, int height, int samples = 1);
 
   /** The renderer to fill with the scene. */
   vtkRenderer* GetRenderer() const { return this->Renderer; }
@@ -40,6 +43,7 @@ private:
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkShadelabFloatCapturePass> Capture;
   std::string Error;
+  int Samples = 1;
 };
 }
 

@@ -21,6 +21,13 @@ struct FloatImage
   std::vector<float> Rgba;
 };
 
+/**
+ * image with each n x n block of pixels averaged into one: the sum of its
+ * samples in double, row by row, divided by n*n and rounded to float. What
+ * --ssaa stores, and what its test computes from an n-times picture.
+ */
+FloatImage BoxAverage(const FloatImage& image, int n);
+
 /** The pixel type that Auto means for path: float for EXR, HDR and PFM, else 8-bit. */
 PixelType ResolvePixelType(const std::string& path, PixelType requested);
 

@@ -126,6 +126,10 @@ void ConvertShot(
     {
       ConvertSize(v, path, o);
     }
+    else if (key == "ssaa")
+    {
+      Apply(o, { "--ssaa", Number(v, path) }, path);
+    }
     else if (key == "feature_angle")
     {
       Apply(o, { "--feature-angle", Number(v, path) }, path);

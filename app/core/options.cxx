@@ -98,6 +98,30 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
   AddParsed(
     command, "--camera-view-up", o.CameraViewUp, ParseDirection, "Up direction (default 0,1,0)")
     ->option_text("X,Y,Z");
+  AddChoice(command, "--up", o.Up,
+    "The world axis up on the screen when the camera is fitted (default +Y)");
+  AddChoice(command, "--view", o.View,
+    "Where the fitted camera looks from: for up +Y front looks along -Z, for up +Z along +Y; "
+    "iso from front, right and above (default front)");
+  AddParsed(command, "--azimuth", o.Azimuth, ParseNumber,
+    "Turn the camera by DEG about the view-up through the focal point")
+    ->option_text("DEG");
+  AddParsed(command, "--elevation", o.Elevation, ParseNumber,
+    "Then by DEG up about the horizontal through the focal point")
+    ->option_text("DEG");
+  AddParsed(
+    command, "--zoom", o.Zoom,
+    [](const std::string& t)
+    {
+      const double f = ParseNumber(t);
+      if (!(f > 0))
+      {
+        throw std::invalid_argument("'" + t + "' is not positive");
+      }
+      return f;
+    },
+    "Magnify by F: the view angle (orthographic: the parallel scale) divided by F (default 1)")
+    ->option_text("F");
   AddParsed(
     command, "--view-angle", o.ViewAngle,
     [](const std::string& t)

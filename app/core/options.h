@@ -52,6 +52,47 @@ struct NameTable<PixelType>
   };
 };
 
+/** --up: the world axis that points up on the screen when the camera is fitted. */
+enum class UpAxis
+{
+  PlusX,
+  MinusX,
+  PlusY,
+  MinusY,
+  PlusZ,
+  MinusZ
+};
+
+template <>
+struct NameTable<UpAxis>
+{
+  static constexpr std::array<std::pair<UpAxis, const char*>, 6> Entries{ { { UpAxis::PlusX, "+X" },
+    { UpAxis::MinusX, "-X" }, { UpAxis::PlusY, "+Y" }, { UpAxis::MinusY, "-Y" },
+    { UpAxis::PlusZ, "+Z" }, { UpAxis::MinusZ, "-Z" } } };
+};
+
+/** --view: where a fitted camera looks from, about the up axis. */
+enum class ViewPreset
+{
+  Front,
+  Back,
+  Left,
+  Right,
+  Top,
+  Bottom,
+  Iso
+};
+
+template <>
+struct NameTable<ViewPreset>
+{
+  static constexpr std::array<std::pair<ViewPreset, const char*>, 7> Entries{
+    { { ViewPreset::Front, "front" }, { ViewPreset::Back, "back" }, { ViewPreset::Left, "left" },
+      { ViewPreset::Right, "right" }, { ViewPreset::Top, "top" }, { ViewPreset::Bottom, "bottom" },
+      { ViewPreset::Iso, "iso" } }
+  };
+};
+
 struct ImageSize
 {
   int Width = 1024;
@@ -82,6 +123,10 @@ struct SceneOptions
   ImageSize Size;
   int Supersampling = 1; // --ssaa N: N x N samples per pixel, box-averaged in float
   std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
+  UpAxis Up = UpAxis::PlusY;
+  ViewPreset View = ViewPreset::Front;
+  double Azimuth = 0, Elevation = 0; // degrees, turning the camera about the focal point
+  double Zoom = 1;                   // vtkCamera::Zoom: the view angle (or scale) divided by it
   double ViewAngle = 30;
   bool Orthographic = false;
   std::optional<double> ParallelScale;

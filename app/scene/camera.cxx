@@ -12,10 +12,12 @@ const char* const CameraHelp =
   "Camera: positions and directions are in the mesh's world coordinates. Given options are "
   "used as they are; missing ones are fitted to the mesh, as VTK's ResetCamera does: the focal "
   "point defaults to the centre of the mesh's bounding box; the position to the focal point "
-  "plus +Z times the distance at which the mesh's bounding sphere (half the box diagonal, "
-  "grown to enclose the mesh around a given focal point) fills the narrower of the two view "
-  "angles; the view-up to +Y, or, for a camera looking straight along Y, to -Z looking "
-  "down and +Z looking up. Orthographic: "
+  "plus, in the direction --view and --up name (by default front, +Y up: +Z), the distance at "
+  "which the mesh's bounding sphere (half the box diagonal, grown to enclose the mesh around a "
+  "given focal point) fills the narrower of the two view angles; the view-up to --up's axis, "
+  "or, for a camera looking straight along it (top, bottom), to the front's direction: away "
+  "from it looking down, towards it looking up. --azimuth, --elevation and --zoom then turn "
+  "and magnify the camera, given or fitted, about its focal point. Orthographic: "
   "--parallel-scale is half the view height in world units, fitted to the same sphere when "
   "not given. The near and far planes always enclose the mesh.";
 
@@ -24,6 +26,83 @@ namespace
 double Distance(const double a[3], const double b[3])
 {
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+}
+
+// The right-handed frame of an up axis: Up, Front (from the focal point
+// towards a camera that sees the front: +Z for up +Y, -Y for up +Z) and
+// Right = Up x Front, which is +X for every up axis but the X ones.
+struct Frame
+{
+  Vec3 Up, Front, Right;
+};
+
+Frame FrameOf(UpAxis axis)
+{
+  Frame f;
+  switch (axis)
+  {
+    case UpAxis::PlusX:
+      f = { { 1, 0, 0 }, { 0, 0, 1 }, {} };
+      break;
+    case UpAxis::MinusX:
+      f = { { -1, 0, 0 }, { 0, 0, 1 }, {} };
+      break;
+    case UpAxis::PlusY:
+      f = { { 0, 1, 0 }, { 0, 0, 1 }, {} };
+      break;
+    case UpAxis::MinusY:
+      f = { { 0, -1, 0 }, { 0, 0, -1 }, {} };
+      break;
+    case UpAxis::PlusZ:
+      f = { { 0, 0, 1 }, { 0, -1, 0 }, {} };
+      break;
+    case UpAxis::MinusZ:
+      f = { { 0, 0, -1 }, { 0, 1, 0 }, {} };
+      break;
+  }
+  vtkMath::Cross(f.Up.data(), f.Front.data(), f.Right.data());
+  return f;
+}
+
+Vec3 Scaled(const Vec3& v, double s)
+{
+  return { s * v[0], s * v[1], s * v[2] };
+}
+
+// Where a fitted camera sits, as a unit direction from the focal point, and
+// its view-up: --view about the frame. From above the front is at the bottom
+// of the picture, from below at the top.
+void Preset(ViewPreset view, const Frame& f, Vec3& eye, Vec3& up)
+{
+  up = f.Up;
+  switch (view)
+  {
+    case ViewPreset::Front:
+      eye = f.Front;
+      break;
+    case ViewPreset::Back:
+      eye = Scaled(f.Front, -1);
+      break;
+    case ViewPreset::Right:
+      eye = f.Right;
+      break;
+    case ViewPreset::Left:
+      eye = Scaled(f.Right, -1);
+      break;
+    case ViewPreset::Top:
+      eye = f.Up;
+      up = Scaled(f.Front, -1);
+      break;
+    case ViewPreset::Bottom:
+      eye = Scaled(f.Up, -1);
+      up = f.Front;
+      break;
+    case ViewPreset::Iso:
+      eye = { f.Front[0] + f.Right[0] + f.Up[0], f.Front[1] + f.Right[1] + f.Up[1],
+        f.Front[2] + f.Right[2] + f.Up[2] };
+      vtkMath::Normalize(eye.data());
+      break;
+  }
 }
 }
 
@@ -50,17 +129,22 @@ std::string ApplyCamera(
   const double halfAngle = vtkMath::RadiansFromDegrees(o.ViewAngle) / 2;
   const double narrowHalfAngle = aspect >= 1 ? halfAngle : std::atan(std::tan(halfAngle) * aspect);
 
+  const Frame frame = FrameOf(o.Up);
+  Vec3 eye, presetUp;
+  Preset(o.View, frame, eye, presetUp);
   double position[3] = { 0, 0, 0 };
   if (o.CameraPosition)
   {
     std::copy(o.CameraPosition->begin(), o.CameraPosition->end(), position);
+    presetUp = frame.Up;
   }
   else
   {
     const double distance = radius / std::sin(narrowHalfAngle);
-    position[0] = focal[0];
-    position[1] = focal[1];
-    position[2] = focal[2] + distance;
+    for (int i = 0; i < 3; ++i)
+    {
+      position[i] = focal[i] + distance * eye[i];
+    }
   }
   double direction[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
   if (vtkMath::Normalize(direction) == 0)
@@ -68,7 +152,7 @@ std::string ApplyCamera(
     return "the camera position is the focal point";
   }
 
-  double up[3] = { 0, 1, 0 };
+  double up[3] = { presetUp[0], presetUp[1], presetUp[2] };
   if (o.CameraViewUp)
   {
     std::copy(o.CameraViewUp->begin(), o.CameraViewUp->end(), up);
@@ -81,9 +165,12 @@ std::string ApplyCamera(
     {
       return "--camera-view-up is parallel to the view direction";
     }
-    up[0] = 0;
-    up[1] = 0;
-    up[2] = direction[1] > 0 ? 1 : -1;
+    // A given position straight above or below: as the top and bottom views.
+    const double sign = vtkMath::Dot(direction, frame.Up.data()) > 0 ? 1 : -1;
+    for (int i = 0; i < 3; ++i)
+    {
+      up[i] = sign * frame.Front[i];
+    }
   }
 
   camera->SetFocalPoint(focal);
@@ -93,6 +180,18 @@ std::string ApplyCamera(
   camera->SetViewAngle(o.ViewAngle);
   camera->SetParallelProjection(o.Orthographic);
   camera->SetParallelScale(o.ParallelScale.value_or(aspect >= 1 ? radius : radius / aspect));
+  // Turns and magnification after everything else, given cameras too; none
+  // by default, so that a default camera is exactly as set above.
+  if (o.Azimuth != 0 || o.Elevation != 0)
+  {
+    camera->Azimuth(o.Azimuth);
+    camera->Elevation(o.Elevation);
+    camera->OrthogonalizeViewUp();
+  }
+  if (o.Zoom != 1)
+  {
+    camera->Zoom(o.Zoom);
+  }
   return {};
 }
 }

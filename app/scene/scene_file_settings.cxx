@@ -11,7 +11,7 @@ namespace scene_file
 namespace
 {
 const std::vector<std::string> CameraKeys{ "position", "focal_point", "view_up", "view_angle",
-  "orthographic", "parallel_scale" };
+  "orthographic", "parallel_scale", "view", "azimuth", "elevation", "zoom" };
 
 // The camera's keys; each one's path comes from where, which knows whether
 // the shot or the defaults gave it.
@@ -25,12 +25,16 @@ void ConvertCamera(const json& v, const std::string& path, const PathOfKey& wher
     {
       o.Orthographic = Flag(c.value(), at);
     }
-    else if (c.key() == "view_angle" || c.key() == "parallel_scale")
+    else if (c.key() == "view")
     {
-      Apply(o,
-        { "--" + std::string(c.key() == "view_angle" ? "view-angle" : "parallel-scale"),
-          Number(c.value(), at) },
-        at);
+      Apply(o, { "--view", Choice(c.value(), at, "view", Names<ViewPreset>()) }, at);
+    }
+    else if (c.key() == "view_angle" || c.key() == "parallel_scale" || c.key() == "azimuth" ||
+      c.key() == "elevation" || c.key() == "zoom")
+    {
+      std::string option = "--" + c.key();
+      std::replace(option.begin(), option.end(), '_', '-');
+      Apply(o, { option, Number(c.value(), at) }, at);
     }
     else
     {
@@ -125,6 +129,11 @@ void ConvertShot(
     else if (key == "size")
     {
       ConvertSize(v, path, o);
+    }
+    else if (key == "up")
+    {
+      // "=": CLI11 would take "-Z" for an option of its own.
+      Apply(o, { "--up=" + Choice(v, path, "up axis", Names<UpAxis>()) }, path);
     }
     else if (key == "ssaa")
     {

@@ -133,7 +133,10 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
       "shots[3].lights[0]: spot half-angle '120' is outside (0, 90] degrees" },
     { head + R"({ "camera": { "view_angle": 200 } } ] })",
       "shots[3].camera.view_angle: '200' is outside (0, 180) degrees" },
-    { head + R"({ "camera": { "zoom": 2 } } ] })", "shots[3].camera.zoom: unknown key" },
+    { head + R"({ "camera": { "dolly": 2 } } ] })", "shots[3].camera.dolly: unknown key" },
+    { head + R"({ "camera": { "view": "sideways" } } ] })",
+      "shots[3].camera.view: unknown view \"sideways\" (known: front, back, left, right, top, "
+      "bottom, iso)" },
     { head + R"({ "camera": { "orthographic": "yes" } } ] })",
       "shots[3].camera.orthographic: expected true or false, not \"yes\"" },
     { head + R"({ "size": [100000, 10] } ] })", "shots[3].size: '100000x10' is outside 1x1 to" },
@@ -206,6 +209,9 @@ TEST(SceneSchema, ListsTheNameTablesChoices)
   EXPECT_EQ(shot["weighting"]["enum"].get<std::vector<std::string>>(),
     Names<vtkShadelabMeshNormals::Weightings>());
   EXPECT_EQ(shot["pixel_type"]["enum"].get<std::vector<std::string>>(), Names<PixelType>());
+  EXPECT_EQ(shot["up"]["enum"].get<std::vector<std::string>>(), Names<UpAxis>());
+  EXPECT_EQ(shot["camera"]["properties"]["view"]["enum"].get<std::vector<std::string>>(),
+    Names<ViewPreset>());
 }
 
 TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
@@ -231,8 +237,8 @@ TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
     light.insert(item.key());
   }
   EXPECT_EQ(camera,
-    (std::set<std::string>{
-      "position", "focal_point", "view_up", "view_angle", "orthographic", "parallel_scale" }));
+    (std::set<std::string>{ "position", "focal_point", "view_up", "view_angle", "orthographic",
+      "parallel_scale", "view", "azimuth", "elevation", "zoom" }));
   EXPECT_EQ(light,
     (std::set<std::string>{ "kind", "position", "direction", "color", "half_angle", "exponent" }));
   // The example scenes use only what the schema describes (the parser reads them all).

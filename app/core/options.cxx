@@ -149,8 +149,25 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
     },
     "Orthographic: half the view height in world units")
     ->option_text("S");
-  AddParsed(command, "--background", o.Background, ParseRgb, "Background (default 0,0,0)")
-    ->option_text("R,G,B");
+  command
+    .add_option_function<std::string>(
+      "--background",
+      [&o](const std::string& text)
+      {
+        // Transparent: alpha 0 around the mesh, whose colours stay those
+        // it has over black (OpenImageIO's associated alpha).
+        o.TransparentBackground = text == "transparent";
+        try
+        {
+          o.Background = o.TransparentBackground ? Rgb{ 0, 0, 0 } : ParseRgb(text);
+        }
+        catch (const std::invalid_argument& e)
+        {
+          throw CLI::ValidationError("--background", e.what());
+        }
+      },
+      "Background colour, or transparent (alpha in PNG, TIFF and EXR) (default 0,0,0)")
+    ->option_text("R,G,B|transparent");
 }
 }
 

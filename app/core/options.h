@@ -131,6 +131,7 @@ struct SceneOptions
   bool Orthographic = false;
   std::optional<double> ParallelScale;
   Rgb Background{ 0, 0, 0 };
+  bool TransparentBackground = false; // --background transparent: alpha 0 where no surface is
   NormalsMode Normals = NormalsMode::Auto;
   NormalsSettings Computed; // how normals are computed, when they are
 

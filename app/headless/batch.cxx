@@ -206,7 +206,8 @@ private:
       dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), this->Options.DumpShaders,
         std::string(ToString(shot.Scene.ShadingRule)) + "-" + ToString(shot.Scene.ReflectionModel));
     }
-    const FloatImage image = renderer.Render();
+    FloatImage image = renderer.Render();
+    image.Alpha = shot.Scene.TransparentBackground;
     this->Timer.Lap("frame");
     if (!renderer.GetError().empty())
     {

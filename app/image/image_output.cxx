@@ -64,6 +64,12 @@ std::unique_ptr<OIIO::ImageOutput> Open(const std::string& path, const OIIO::Ima
     error = "cannot encode: " + OneLine(out->geterror());
     return nullptr;
   }
+  if (spec.alpha_channel >= 0 && !out->supports("alpha"))
+  {
+    error = std::string("the ") + out->format_name() +
+      " format cannot store transparency (--background transparent: .png, .tif or .exr)";
+    return nullptr;
+  }
   if (out->spec().format != spec.format)
   {
     error = std::string("the ") + out->format_name() + " format cannot store " +
@@ -76,10 +82,16 @@ std::unique_ptr<OIIO::ImageOutput> Open(const std::string& path, const OIIO::Ima
 
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
   const std::vector<std::pair<std::string, std::string>>& metadata,
-  const std::vector<std::uint8_t>* rgb8)
+  const std::vector<std::uint8_t>* pixels8)
 {
   const PixelType resolved = ResolvePixelType(path, type);
-  OIIO::ImageSpec spec(image.Width, image.Height, 3, ToTypeDesc(resolved));
+  OIIO::ImageSpec spec(image.Width, image.Height, Channels(image), ToTypeDesc(resolved));
+  if (image.Alpha)
+  {
+    // Associated alpha (the colours are over black), as OpenImageIO takes
+    // it; PNG's writer stores it unassociated.
+    spec.alpha_channel = 3;
+  }
   for (const auto& [key, value] : metadata)
   {
     spec.attribute(key, value);
@@ -101,11 +113,11 @@ std::string WriteImage(const std::string& path, const FloatImage& image, PixelTy
     case PixelType::Half:
     case PixelType::Float:
       written = out->write_image(
-        OIIO::TypeDesc::FLOAT, ToTopDownRgb<float>(image, [](float v) { return v; }).data());
+        OIIO::TypeDesc::FLOAT, ToTopDown<float>(image, [](float v) { return v; }).data());
       break;
     default:
       written = out->write_image(
-        OIIO::TypeDesc::UINT8, rgb8 ? rgb8->data() : Quantise<uint8_t>(image, 255).data());
+        OIIO::TypeDesc::UINT8, pixels8 ? pixels8->data() : Quantise<uint8_t>(image, 255).data());
       break;
   }
   if (!written || !out->close())

@@ -21,12 +21,12 @@ namespace shadelab
  * becomes string attributes of the file (ImageDescription, Software, ...).
  * Returns an error text (an unknown format, an unwritable path, a pixel type
  * the format cannot store), or an empty string; on error no file is left.
- * rgb8, when given, is the 8-bit picture already quantised (Quantise<uint8_t>),
+ * pixels8, when given, is the 8-bit picture already quantised (Quantise<uint8_t>),
  * used instead of image's pixels when the type resolves to 8-bit.
  */
 std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
   const std::vector<std::pair<std::string, std::string>>& metadata,
-  const std::vector<std::uint8_t>* rgb8 = nullptr);
+  const std::vector<std::uint8_t>* pixels8 = nullptr);
 }
 
 #endif

@@ -16,7 +16,7 @@ PixelType ResolvePixelType(const std::string& path, PixelType requested)
 
 FloatImage BoxAverage(const FloatImage& image, int n)
 {
-  FloatImage average{ image.Width / n, image.Height / n, {} };
+  FloatImage average{ image.Width / n, image.Height / n, {}, image.Alpha };
   average.Rgba.resize(static_cast<std::size_t>(average.Width) * average.Height * 4);
   const double samples = static_cast<double>(n) * n;
   for (int y = 0; y < average.Height; ++y)

@@ -19,6 +19,7 @@ struct FloatImage
   int Width = 0;
   int Height = 0;
   std::vector<float> Rgba;
+  bool Alpha = false; // files keep the alpha channel (--background transparent), else RGB
 };
 
 /**
@@ -31,32 +32,39 @@ FloatImage BoxAverage(const FloatImage& image, int n);
 /** The pixel type that Auto means for path: float for EXR, HDR and PFM, else 8-bit. */
 PixelType ResolvePixelType(const std::string& path, PixelType requested);
 
-/** The picture as top-down RGB of type T, each value through convert. */
-template <typename T, typename Convert>
-std::vector<T> ToTopDownRgb(const FloatImage& image, Convert convert)
+/** The channels a file of image stores: RGBA with Alpha, else RGB. */
+inline int Channels(const FloatImage& image)
 {
-  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * 3);
+  return image.Alpha ? 4 : 3;
+}
+
+/** The picture as top-down RGB (or RGBA) of type T, each value through convert. */
+template <typename T, typename Convert>
+std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
+{
+  const int channels = Channels(image);
+  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * channels);
   for (int y = 0; y < image.Height; ++y)
   {
     const float* src =
       image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
-    T* dst = out.data() + static_cast<size_t>(y) * image.Width * 3;
+    T* dst = out.data() + static_cast<size_t>(y) * image.Width * channels;
     for (int x = 0; x < image.Width; ++x)
     {
-      for (int c = 0; c < 3; ++c)
+      for (int c = 0; c < channels; ++c)
       {
-        dst[3 * x + c] = convert(src[4 * x + c]);
+        dst[channels * x + c] = convert(src[4 * x + c]);
       }
     }
   }
   return out;
 }
 
-/** round(scale*clamp(I, 0, 1)), the contract's rule for integer files, top-down RGB. */
+/** round(scale*clamp(I, 0, 1)), the contract's rule for integer files, top-down as ToTopDown. */
 template <typename T>
 std::vector<T> Quantise(const FloatImage& image, double scale)
 {
-  return ToTopDownRgb<T>(image,
+  return ToTopDown<T>(image,
     [scale](double v)
     {
       // NaN compares false and lands on 0.

@@ -24,7 +24,7 @@ int main()
   while (shadelab::ReceiveImageRequest(STDIN_FILENO, request))
   {
     std::string reply = shadelab::WriteImage(request.Path, request.Image, request.Type,
-      request.Metadata, request.Rgb8.empty() ? nullptr : &request.Rgb8);
+      request.Metadata, request.Pixels8.empty() ? nullptr : &request.Pixels8);
     std::replace(reply.begin(), reply.end(), '\n', ' ');
     reply += '\n';
     if (write(STDOUT_FILENO, reply.data(), reply.size()) != static_cast<ssize_t>(reply.size()))

@@ -138,9 +138,10 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
   ImageRequest request{ path, type, metadata, {}, {} };
   request.Image.Width = image.Width;
   request.Image.Height = image.Height;
+  request.Image.Alpha = image.Alpha;
   if (ResolvePixelType(path, type) == PixelType::UInt8)
   {
-    request.Rgb8 = Quantise<std::uint8_t>(image, 255); // a quarter of the floats' bytes to send
+    request.Pixels8 = Quantise<std::uint8_t>(image, 255); // a quarter of the floats' bytes to send
   }
   else
   {

@@ -83,10 +83,10 @@ bool SendImageRequest(int fd, const ImageRequest& r)
   {
     ok = ok && SendText(fd, key) && SendText(fd, value);
   }
-  const bool bytes = !r.Rgb8.empty();
+  const bool bytes = !r.Pixels8.empty();
   return ok && Send<int32_t>(fd, r.Image.Width) && Send<int32_t>(fd, r.Image.Height) &&
-    Send<uint32_t>(fd, bytes ? 1 : 0) &&
-    (bytes ? WriteAll(fd, r.Rgb8.data(), r.Rgb8.size())
+    Send<uint32_t>(fd, bytes ? 1 : 0) && Send<uint32_t>(fd, r.Image.Alpha ? 1 : 0) &&
+    (bytes ? WriteAll(fd, r.Pixels8.data(), r.Pixels8.size())
            : WriteAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float)));
 }
 
@@ -114,21 +114,22 @@ bool ReceiveImageRequest(int fd, ImageRequest& r)
   {
     return false;
   }
-  uint32_t bytes = 0;
-  if (!Receive(fd, bytes) || bytes > 1)
+  uint32_t bytes = 0, alpha = 0;
+  if (!Receive(fd, bytes) || bytes > 1 || !Receive(fd, alpha) || alpha > 1)
   {
     return false;
   }
   r.Image.Width = width;
   r.Image.Height = height;
+  r.Image.Alpha = alpha == 1;
   const size_t pixels = static_cast<size_t>(width) * height;
   if (bytes)
   {
     r.Image.Rgba.clear();
-    r.Rgb8.resize(pixels * 3);
-    return ReadAll(fd, r.Rgb8.data(), r.Rgb8.size());
+    r.Pixels8.resize(pixels * Channels(r.Image));
+    return ReadAll(fd, r.Pixels8.data(), r.Pixels8.size());
   }
-  r.Rgb8.clear();
+  r.Pixels8.clear();
   r.Image.Rgba.resize(pixels * 4);
   return ReadAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float));
 }

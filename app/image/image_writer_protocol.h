@@ -19,8 +19,8 @@ struct ImageRequest
   std::string Path;
   PixelType Type = PixelType::Auto;
   std::vector<std::pair<std::string, std::string>> Metadata;
-  FloatImage Image;               // its Width and Height always; its pixels unless Rgb8 has them
-  std::vector<std::uint8_t> Rgb8; // 8-bit pictures: top-down RGB, quantised by the sender
+  FloatImage Image; // its Width and Height always; its pixels unless Pixels8 has them
+  std::vector<std::uint8_t> Pixels8; // 8-bit pictures: top-down RGB(A), quantised by the sender
 };
 
 /** Writes request to fd; false if the pipe broke. */

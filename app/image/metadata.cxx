@@ -110,7 +110,8 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["camera"] = cam;
   j["size"] = { o.Size.Width, o.Size.Height };
   j["ssaa"] = o.Supersampling;
-  j["background"] = o.Background;
+  j["background"] =
+    o.TransparentBackground ? nlohmann::json("transparent") : nlohmann::json(o.Background);
   j["normals"] = ToString(o.Normals);
   j["weighting"] = o.Computed.Weighting;
   j["feature_angle"] =

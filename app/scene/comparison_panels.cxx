@@ -88,6 +88,11 @@ void AddComparisonOptions(CLI::App& command, ComparisonOptions& o)
 
 Comparison PlanComparison(const ComparisonOptions& o, const SceneOptions& base)
 {
+  if (base.TransparentBackground)
+  {
+    // Panels sit on label strips and beside each other: a picture of render's.
+    throw std::invalid_argument("--background transparent is for render's pictures");
+  }
   Comparison c;
   c.Modes = ParseModes(o.Modes, base);
   c.Panels = o.Components ? SplitIntoTerms(c.Modes) : c.Modes;

@@ -114,6 +114,10 @@ void ConvertShot(
     {
       ConvertMaterial(v, path, o);
     }
+    else if (key == "background" && v.is_string() && v.get<std::string>() == "transparent")
+    {
+      Apply(o, { "--background", "transparent" }, path);
+    }
     else if (key == "ambient" || key == "background")
     {
       Apply(o, { "--" + key, Triple(v, path) }, path);

@@ -4,10 +4,13 @@
 #include "core/errors.h"
 #include "headless/batch.h"
 #include "scene/camera.h"
+#include "scene/mesh_arguments.h"
+#include "scene/scene_file.h"
 
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <map>
 #include <tuple>
 
 namespace shadelab
@@ -17,6 +20,11 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
   CLI::App* render = program.add_subcommand(
     "render", "Render MESH headless into the image OUT, or every shot of a scene file (--scene)");
   AddSceneOptions(*render, o.Scene);
+  // render takes many meshes (files, folders, globs), rendered in one process.
+  render->remove_option(render->get_option("MESH"));
+  render->add_option("MESH", o.Meshes,
+    "Mesh files (.obj .ply .stl .vtp .vtk), folders of them, or quoted globs; with more than "
+    "one, -o is a template such as 'thumbs/{mesh}.png'");
   // With a scene file, the file says all that these say.
   std::vector<CLI::Option*> sceneSettings =
     render->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });
@@ -71,6 +79,51 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
   return render;
 }
 
+namespace
+{
+// The command line's shots: one mesh file to OUT as it is; many meshes (or a
+// folder, or a glob) each to OUT as a template, sharing one process. An exit
+// status on error, else 0.
+int CommandLineShots(const RenderOptions& o, std::vector<Shot>& shots)
+{
+  Shot shot{ o.Scene, o.Output, o.Pixels, "", false };
+  if (IsOneMeshFile(o.Meshes))
+  {
+    shot.Scene.Mesh = o.Meshes[0];
+    shots.push_back(shot);
+    return 0;
+  }
+  std::vector<std::string> meshes;
+  if (const std::string error = ExpandMeshArguments(o.Meshes, meshes); !error.empty())
+  {
+    std::cerr << "shadelab: error: " << error << std::endl;
+    return ExitFailure;
+  }
+  std::map<std::string, std::string> outputs; // output -> the mesh that writes it
+  shot.MakeFolders = true;
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    shot.Scene.Mesh = meshes[i];
+    if (const std::string error =
+          ExpandOutputTemplate(o.Output, shot, "", i, meshes.size(), shot.Output);
+        !error.empty())
+    {
+      ReportError("--output", error);
+      return ExitUsage;
+    }
+    if (const auto [other, added] = outputs.emplace(shot.Output, meshes[i]); !added)
+    {
+      ReportError("--output",
+        "\"" + shot.Output + "\" is the output of " + other->second + " and " + meshes[i] +
+          ": name each mesh's, as with {mesh} or {index}");
+      return ExitUsage;
+    }
+    shots.push_back(shot);
+  }
+  return 0;
+}
+}
+
 int RunRender(const RenderOptions& o, const std::string& commandLine)
 {
   if (o.PrintSchema)
@@ -96,7 +149,7 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
   else
   {
     for (const auto& [missing, what] :
-      { std::pair{ o.Scene.Mesh.empty(), "MESH" }, std::pair{ o.Output.empty(), "--output" } })
+      { std::pair{ o.Meshes.empty(), "MESH" }, std::pair{ o.Output.empty(), "--output" } })
     {
       if (missing)
       {
@@ -106,7 +159,10 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
         return ExitUsage;
       }
     }
-    shots.push_back({ o.Scene, o.Output, o.Pixels, "" });
+    if (const int status = CommandLineShots(o, shots); status != 0)
+    {
+      return status;
+    }
   }
   return RenderShots(shots, batch, commandLine);
 }

@@ -141,8 +141,9 @@ struct SceneOptions
 
 struct RenderOptions
 {
-  SceneOptions Scene;
-  std::string Output; // with a scene file: an output template for every shot
+  SceneOptions Scene;              // its Mesh unused: the meshes are Meshes
+  std::vector<std::string> Meshes; // files, folders, globs
+  std::string Output;              // with a scene file: an output template for every shot
   PixelType Pixels = PixelType::Auto;
   std::string DumpShaders; // a folder, or empty
   bool Verbose = false;

@@ -151,12 +151,13 @@ private:
     ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
   }
 
-  // A scene file's output template may name folders per mesh or rule: they
-  // are made as needed. A single render's folder must exist.
+  // An output template (a scene file's, or many meshes') may name folders
+  // per mesh or rule: they are made as needed. A single render's folder must
+  // exist.
   bool PrepareFolder(const Shot& shot)
   {
     std::error_code made;
-    if (!shot.Label.empty() && !std::filesystem::path(shot.Output).parent_path().empty())
+    if (shot.MakeFolders && !std::filesystem::path(shot.Output).parent_path().empty())
     {
       std::filesystem::create_directories(std::filesystem::path(shot.Output).parent_path(), made);
     }

@@ -128,6 +128,7 @@ std::vector<Shot> ReadShots(
     const PathOfKey where = PathsIn(list[i], prefix);
     Shot shot;
     shot.Label = path + (prefix.empty() ? "" : " " + prefix);
+    shot.MakeFolders = true;
     ConvertShot(merged, shot, folder, where);
     if (shot.Scene.Mesh.empty())
     {

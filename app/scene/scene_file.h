@@ -19,7 +19,8 @@ struct Shot
   SceneOptions Scene;
   std::string Output;
   PixelType Pixels = PixelType::Auto;
-  std::string Label; // "scene.json shots[3]" for a scene file's shot, "" on the command line
+  std::string Label;        // "scene.json shots[3]" for a scene file's shot, "" on the command line
+  bool MakeFolders = false; // the output came from a template: its folders are made as needed
 };
 
 /** The JSON Schema of scene files (data/scene.schema.json, compiled in). */

@@ -8,6 +8,7 @@
 #include "scene/camera.h"
 #include "scene/comparison_panels.h"
 #include "scene/mesh_cache.h"
+#include "scene/overlays.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
@@ -82,11 +83,12 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   std::vector<FloatImage> pictures;
   for (const Panel& panel : panels)
   {
-    if (const SceneCache::Shown shown = scenes.Show(panel.Scene, renderer.GetRenderer());
-        !shown.Scene)
+    const SceneCache::Shown shown = scenes.Show(panel.Scene, renderer.GetRenderer());
+    if (!shown.Scene)
     {
       return ReportError(shown.Input, shown.Error);
     }
+    const SceneOverlays overlays(panel.Scene, shown.Scene->Mesh, meshes, renderer.GetRenderer());
     pictures.push_back(renderer.Render());
     if (!renderer.GetError().empty())
     {

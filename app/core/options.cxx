@@ -103,6 +103,24 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
   AddChoice(command, "--view", o.View,
     "Where the fitted camera looks from: for up +Y front looks along -Z, for up +Z along +Y; "
     "iso from front, right and above (default front)");
+  command.add_flag("--edges", o.Edges, "The triangles' edges over the shading");
+  AddParsed(command, "--edge-color", o.EdgeColor, ParseRgb, "Their colour (default 0.05,0.05,0.05)")
+    ->option_text("R,G,B");
+  AddParsed(
+    command, "--edge-width", o.EdgeWidth,
+    [](const std::string& t)
+    {
+      const double w = ParseNumber(t);
+      if (!(w > 0 && w <= 16))
+      {
+        throw std::invalid_argument("'" + t + "' is outside (0, 16] pixels");
+      }
+      return w;
+    },
+    "Their width in pixels (default 1)")
+    ->option_text("W");
+  command.add_flag("--normal-glyphs", o.NormalGlyphs,
+    "A line along each vertex normal (those gouraud and phong use)");
   AddParsed(command, "--azimuth", o.Azimuth, ParseNumber,
     "Turn the camera by DEG about the view-up through the focal point")
     ->option_text("DEG");

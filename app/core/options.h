@@ -132,6 +132,10 @@ struct SceneOptions
   std::optional<double> ParallelScale;
   Rgb Background{ 0, 0, 0 };
   bool TransparentBackground = false; // --background transparent: alpha 0 where no surface is
+  bool Edges = false;                 // the triangles' edges over the shading
+  Rgb EdgeColor{ 0.05, 0.05, 0.05 };
+  double EdgeWidth = 1;      // pixels
+  bool NormalGlyphs = false; // a line along each vertex normal
   NormalsMode Normals = NormalsMode::Auto;
   NormalsSettings Computed; // how normals are computed, when they are
 

@@ -56,6 +56,8 @@ public:
   Inspector(const ViewOptions& options, const std::string& commandLine)
     : Options(options)
     , CommandLine(commandLine)
+    , GlyphsOn(options.Scene.NormalGlyphs)
+    , EdgesOn(options.Scene.Edges)
     , CompareOn(options.Compare)
   {
   }

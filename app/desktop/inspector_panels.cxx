@@ -3,37 +3,13 @@
 #include "desktop/inspector.h"
 
 #include "scene/comparison_panels.h"
+#include "scene/overlays.h"
 #include "scene/scene.h"
 
-#include <vtkBoundingBox.h>
-#include <vtkExtractEdges.h>
-#include <vtkHedgeHog.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
 #include <vtkTextProperty.h>
-
-#include <algorithm>
-#include <cmath>
 
 namespace shadelab
 {
-namespace
-{
-// An unlit actor of lines' output, added to renderer.
-vtkSmartPointer<vtkActor> AddLines(vtkRenderer* renderer, vtkAlgorithm* lines, const Rgb& colour)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(lines->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  renderer->AddActor(actor);
-  return actor;
-}
-}
-
 // Shows the settings as they are now: the panels' scenes, their extras and
 // labels, the help and the HUD.
 void Inspector::Apply()
@@ -89,10 +65,7 @@ void Inspector::ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* s
   }
   if (this->GlyphsOn)
   {
-    // The vertex normals that gouraud and phong use, whatever this rule.
-    SceneOptions lit = scene;
-    lit.ShadingRule = Shading::Phong;
-    if (vtkPolyData* normals = this->Meshes.Get(lit).Mesh)
+    if (vtkPolyData* normals = LitMesh(scene, this->Meshes))
     {
       this->GlyphsOf(slot, normals)->VisibilityOn();
     }
@@ -163,16 +136,8 @@ vtkActor* Inspector::GlyphsOf(Slot& slot, vtkPolyData* mesh)
   auto& actor = slot.Glyphs[mesh];
   if (!actor)
   {
-    vtkNew<vtkHedgeHog> hedgehog;
-    hedgehog->SetInputData(mesh);
-    hedgehog->SetVectorModeToUseNormal();
-    // About twice the vertices' spacing (n points spread over the mesh's
-    // extent), so that neighbours' glyphs barely overlap.
-    const double diagonal = vtkBoundingBox(this->Bounds).GetDiagonalLength();
-    const double spacing =
-      diagonal / std::sqrt(static_cast<double>(std::max<vtkIdType>(mesh->GetNumberOfPoints(), 1)));
-    hedgehog->SetScaleFactor(std::clamp(2 * spacing, 0.004 * diagonal, 0.05 * diagonal));
-    actor = AddLines(slot.Renderer, hedgehog, { 0.2, 0.9, 1.0 });
+    actor = MakeNormalGlyphs(mesh, this->Bounds);
+    slot.Renderer->AddActor(actor);
   }
   return actor;
 }
@@ -182,9 +147,9 @@ vtkActor* Inspector::EdgesOf(Slot& slot, vtkPolyData* mesh)
   auto& actor = slot.Edges[mesh];
   if (!actor)
   {
-    vtkNew<vtkExtractEdges> edges;
-    edges->SetInputData(mesh);
-    actor = AddLines(slot.Renderer, edges, { 0.05, 0.05, 0.05 });
+    const SceneOptions& s = this->Options.Scene;
+    actor = MakeEdges(mesh, s.EdgeColor, s.EdgeWidth);
+    slot.Renderer->AddActor(actor);
   }
   return actor;
 }

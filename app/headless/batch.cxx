@@ -8,6 +8,7 @@
 #include "image/image_writer_process.h"
 #include "image/metadata.h"
 #include "scene/mesh_cache.h"
+#include "scene/overlays.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
@@ -207,6 +208,7 @@ private:
       dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), this->Options.DumpShaders,
         std::string(ToString(shot.Scene.ShadingRule)) + "-" + ToString(shot.Scene.ReflectionModel));
     }
+    const SceneOverlays overlays(shot.Scene, scene.Mesh, this->Meshes, renderer.GetRenderer());
     FloatImage image = renderer.Render();
     image.Alpha = shot.Scene.TransparentBackground;
     this->Timer.Lap("frame");

@@ -18,7 +18,8 @@ using namespace scene_file;
 
 const std::vector<std::string> ShotKeys{ "name", "mesh", "output", "shading", "reflection",
   "material", "ambient", "lights", "camera", "size", "background", "normals", "weighting",
-  "feature_angle", "orient", "pixel_type", "ssaa", "up" };
+  "feature_angle", "orient", "pixel_type", "ssaa", "up", "edges", "edge_color", "edge_width",
+  "normal_glyphs" };
 
 // The file's JSON (comments allowed): "" or the problem.
 std::string ParseSceneJson(const std::string& path, json& scene)

@@ -151,6 +151,22 @@ void ConvertShot(
     {
       o.Computed.Orient = Flag(v, path);
     }
+    else if (key == "edges")
+    {
+      o.Edges = Flag(v, path);
+    }
+    else if (key == "normal_glyphs")
+    {
+      o.NormalGlyphs = Flag(v, path);
+    }
+    else if (key == "edge_color")
+    {
+      Apply(o, { "--edge-color", Triple(v, path) }, path);
+    }
+    else if (key == "edge_width")
+    {
+      Apply(o, { "--edge-width", Number(v, path) }, path);
+    }
   }
 }
 }

@@ -65,6 +65,7 @@ int RunNormals(const NormalsOptions& o)
   // they are computed, and not split at the file's vn seams.
   SceneOptions input;
   input.Mesh = o.Mesh;
+  input.ShadingRule = Shading::Phong; // a lit rule: LoadMesh computes normals for those
   input.Normals = NormalsMode::Compute;
   input.Computed = o.Settings;
   const LoadedMesh loaded = LoadMesh(input);

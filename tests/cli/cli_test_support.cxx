@@ -1,6 +1,7 @@
 #include "cli_test_support.h"
 
 #include <OpenImageIO/imageio.h>
+#include <algorithm>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -112,14 +113,20 @@ TempDir::~TempDir()
   std::filesystem::remove_all(this->Path, ignored);
 }
 
-std::vector<std::string> TempDir::Files() const
+std::vector<std::string> FilesIn(const std::filesystem::path& folder)
 {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(this->Path))
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
   {
     names.push_back(entry.path().filename().string());
   }
+  std::sort(names.begin(), names.end());
   return names;
+}
+
+std::vector<std::string> TempDir::Files() const
+{
+  return FilesIn(this->Path);
 }
 
 Image ReadImage(const std::filesystem::path& path)

@@ -28,6 +28,9 @@ int StartShadelab(const std::vector<std::string>& args, const std::filesystem::p
 /** Waits for a process StartShadelab started; its exit code (128 + signal when killed). */
 int WaitShadelab(int pid);
 
+/** The names of the files in folder, sorted. */
+std::vector<std::string> FilesIn(const std::filesystem::path& folder);
+
 /** A fresh empty folder under the system's temporary folder, removed by the destructor. */
 class TempDir
 {
@@ -36,7 +39,7 @@ public:
   ~TempDir();
   std::filesystem::path operator/(const std::string& name) const { return this->Path / name; }
   const std::filesystem::path& path() const { return this->Path; }
-  /** The names of the files in it. */
+  /** The names of the files in it, sorted. */
   std::vector<std::string> Files() const;
 
 private:

@@ -4,24 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 using namespace shadelab_test;
-
-namespace
-{
-// The names of the files in folder, sorted.
-std::vector<std::string> TempDirFiles(const std::filesystem::path& folder)
-{
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-  {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-}
 
 TEST(ManyMeshes, EachPictureIsTheOneItsMeshAloneGives)
 {
@@ -57,12 +40,12 @@ TEST(ManyMeshes, FoldersAndGlobsNameTheirMeshFiles)
                           (out / "folder" / "{index}-{mesh}.png").string(), "--size", "32x32" })
               .ExitCode,
     0);
-  EXPECT_EQ(TempDirFiles(out / "folder"), (std::vector<std::string>{ "0-a.png", "1-b.png" }));
+  EXPECT_EQ(FilesIn(out / "folder"), (std::vector<std::string>{ "0-a.png", "1-b.png" }));
   ASSERT_EQ(RunShadelab({ "render", (meshes / "*.obj").string(), "-o",
                           (out / "glob" / "{mesh}.png").string(), "--size", "32x32" })
               .ExitCode,
     0);
-  EXPECT_EQ(TempDirFiles(out / "glob"), (std::vector<std::string>{ "b.png" }));
+  EXPECT_EQ(FilesIn(out / "glob"), (std::vector<std::string>{ "b.png" }));
 }
 
 TEST(ManyMeshes, MistakesAreOneLineErrors)

@@ -15,7 +15,6 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -96,16 +95,6 @@ void ExpectNoTemporaries(const std::vector<std::string>& files)
   {
     EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "left behind: " << name;
   }
-}
-
-std::vector<std::string> Names(const fs::path& folder)
-{
-  std::vector<std::string> names;
-  for (const fs::path& file : fs::directory_iterator(folder))
-  {
-    names.push_back(file.filename().string());
-  }
-  return names;
 }
 
 std::string Bytes(const fs::path& path)
@@ -224,7 +213,7 @@ TEST(NothingLost, MeshesComparisonsShadersAndBenchResultsOnAFullDisk)
   }
   EXPECT_GE(failures, 1u) << b.Stderr;
   EXPECT_EQ(Count(b.Stderr, "\n"), failures) << b.Stderr;
-  ExpectNoTemporaries(Names(bench));
+  ExpectNoTemporaries(FilesIn(bench));
 }
 
 TEST(NothingLost, DumpedShadersAreWholeOrAbsent)
@@ -249,7 +238,7 @@ TEST(NothingLost, DumpedShadersAreWholeOrAbsent)
   {
     EXPECT_EQ(Bytes(file), Bytes(full / "glsl" / file.filename())) << file;
   }
-  ExpectNoTemporaries(Names(limited / "glsl"));
+  ExpectNoTemporaries(FilesIn(limited / "glsl"));
   EXPECT_FALSE(fs::exists(limited / "a.png")) << "a shot whose shaders failed wrote a picture";
 }
 

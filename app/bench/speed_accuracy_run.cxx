@@ -52,14 +52,7 @@ SceneOptions RenderScene(const BenchScene& b, Shading rule, ImageSize size)
 
 IlluminationInputs ExactInputs(const BenchScene& b)
 {
-  const SceneOptions o = RenderScene(b, Shading::Phong, {});
-  IlluminationInputs in;
-  in.Surface = o.EffectiveMaterial();
-  in.Ambient = o.Ambient;
-  const double identity[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-  in.Lights = { ToFrame(b.Lamp, identity, { 0, 0, 0 }) };
-  in.Model = o.ReflectionModel;
-  return in;
+  return WorldIllumination(RenderScene(b, Shading::Phong, {}), { b.Lamp });
 }
 
 struct Candidate

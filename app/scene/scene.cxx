@@ -25,6 +25,19 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
+{
+  IlluminationInputs in;
+  in.Surface = options.EffectiveMaterial();
+  in.Ambient = options.Ambient;
+  in.Model = options.ReflectionModel;
+  for (const Light& light : lights)
+  {
+    in.Lights.push_back(ToFrame(light));
+  }
+  return in;
+}
+
 BuiltScene BuildScene(
   const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
 {

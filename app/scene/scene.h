@@ -4,6 +4,7 @@
 #define shadelab_scene_h
 
 #include "core/options.h"
+#include "shadelabShadingOracle.h"
 
 #include <vtkSmartPointer.h>
 
@@ -43,6 +44,12 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
 
 /** The lights the scene uses: the given ones, or the lecture's default. */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
+
+/**
+ * The oracle's inputs for options' scene lit by `lights`, in world
+ * coordinates: material, Ia, reflection model; the view is the caller's.
+ */
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights);
 }
 
 #endif

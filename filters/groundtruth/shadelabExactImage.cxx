@@ -11,15 +11,9 @@ namespace shadelab
 ExactImage RenderExactImage(const AnalyticSurface& surface, const PinholeCamera& camera, int width,
   int height, IlluminationInputs in)
 {
-  in.Orthographic = false;
+  in.Orthographic = camera.Orthographic;
   in.Eye = camera.Position;
-  // vtkCamera's frame: the view-up made orthogonal to the direction of view.
-  const Vec3 forward = normalize(camera.FocalPoint - camera.Position);
-  const Vec3 right = normalize(cross(forward, camera.ViewUp));
-  const Vec3 up = cross(right, forward);
-  const double tanHalf = std::tan(camera.ViewAngle * 3.14159265358979323846 / 360);
-  const double aspect = static_cast<double>(width) / height;
-
+  in.ViewDirection = normalize(camera.FocalPoint - camera.Position);
   ExactImage image;
   image.Width = width;
   image.Height = height;
@@ -29,13 +23,11 @@ ExactImage RenderExactImage(const AnalyticSurface& surface, const PinholeCamera&
   {
     for (int j = first; j < height; j += step)
     {
-      // The pixel centre in normalised device coordinates, as glViewport maps it.
-      const double y = (2 * (j + 0.5) / height - 1) * tanHalf;
       for (int i = 0; i < width; ++i)
       {
-        const double x = (2 * (i + 0.5) / width - 1) * tanHalf * aspect;
-        const Vec3 direction = normalize(forward + x * right + y * up);
-        const RayHit hit = surface.Intersect(camera.Position, direction);
+        // Row j from the bottom: the pixel centre from the top is height - j - 0.5.
+        const Ray ray = PictureRay(camera, width, height, i + 0.5, height - j - 0.5);
+        const RayHit hit = surface.Intersect(ray.Origin, ray.Direction);
         if (!hit.Hit)
         {
           continue;

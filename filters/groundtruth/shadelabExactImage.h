@@ -7,21 +7,13 @@
 #define shadelabExactImage_h
 
 #include "shadelabAnalyticSurface.h"
+#include "shadelabPixelRays.h"
 #include "shadelabShadingOracle.h"
 
 #include <vector>
 
 namespace shadelab
 {
-/** A perspective camera as vtkCamera defines one (view angle: vertical, degrees). */
-struct PinholeCamera
-{
-  Vec3 Position{ 0, 0, 1 };
-  Vec3 FocalPoint{};
-  Vec3 ViewUp{ 0, 1, 0 };
-  double ViewAngle = 30;
-};
-
 /** Intensities per pixel, bottom row first as OpenGL reads them. */
 struct ExactImage
 {
@@ -33,8 +25,9 @@ struct ExactImage
 
 /**
  * Renders surface through camera at width x height. `in` is in world
- * coordinates; its Eye is set to the camera's position (perspective). The
- * surface is closed, so every hit faces the camera.
+ * coordinates; its view (Eye, or the direction of an orthographic camera)
+ * is set to the camera's. The surface is closed, so every hit faces the
+ * camera.
  */
 ExactImage RenderExactImage(const AnalyticSurface& surface, const PinholeCamera& camera, int width,
   int height, IlluminationInputs in);

@@ -28,53 +28,80 @@ bool Usable(double len, double shortest)
 }
 
 // The light's direction L (unit, towards the light) and its colour as it
-// reaches P, with the spot's cone and fall-off; false if it adds nothing.
-bool LightAt(const FrameLight& light, const Vec3& P, Vec3& L, Rgb& Il)
+// reaches P, with the spot's cone and fall-off: the first fields of terms.
+void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
 {
-  Il = light.Color;
+  t.Il = light.Color;
   if (light.Kind == LightKind::Directional)
   {
-    L = -light.Direction;
-    return true;
+    t.L = -light.Direction;
+    t.Reaches = true;
+    return;
   }
   const Vec3 toLight = light.Position - P;
   const double distance = length(toLight);
   if (!(distance > TinyLength))
   {
-    return false; // the light is at P: no direction
+    t.Il = { 0, 0, 0 };
+    return; // the light is at P: no direction
   }
-  L = (1 / distance) * toLight;
+  t.L = (1 / distance) * toLight;
+  t.Reaches = true;
   if (light.Kind == LightKind::Spot)
   {
-    const double cosAngle = dot(-L, light.Direction);
-    if (cosAngle < light.CosCutoff)
-    {
-      return false;
-    }
-    const double falloff =
-      light.Exponent == 0 ? 1.0 : (cosAngle > 0 ? std::pow(cosAngle, light.Exponent) : 0.0);
-    Il = falloff * Il;
+    t.SpotCos = dot(-t.L, light.Direction);
+    t.Reaches = t.SpotCos >= light.CosCutoff;
+    t.SpotFactor = !t.Reaches ? 0.0
+      : light.Exponent == 0   ? 1.0
+                              : (t.SpotCos > 0 ? std::pow(t.SpotCos, light.Exponent) : 0.0);
+    t.Il = t.SpotFactor * t.Il;
   }
-  return true;
 }
 
-// d = 1 - cos of the specular angle, or a negative value when the lecture's
-// case rules give no specular term (base <= 0 or undefined H).
-double SpecularD(const IlluminationInputs& in, const Vec3& N, const Vec3& L, const Vec3& V)
+// H or R and the specular base; returns d = 1 - cos of the specular angle,
+// or a negative value when the lecture's case rules give no specular term
+// (base <= 0 or undefined H).
+double SpecularD(const IlluminationInputs& in, const Vec3& N, const Vec3& V, LightTerms& t)
 {
   if (in.Model == Reflection::BlinnPhong)
   {
-    const Vec3 sum = L + V;
+    const Vec3 sum = t.L + V;
     const double len = length(sum);
     if (!(len > TinyLength))
     {
       return -1; // L = -V: H undefined
     }
-    const Vec3 H = (1 / len) * sum;
-    return dot(N, H) > 0 ? 0.5 * dot(N - H, N - H) : -1;
+    t.HR = (1 / len) * sum;
+    t.Base = dot(N, t.HR);
+    return t.Base > 0 ? 0.5 * dot(N - t.HR, N - t.HR) : -1;
   }
-  const Vec3 R = (2 * dot(N, L)) * N - L;
-  return dot(V, R) > 0 ? 0.5 * dot(V - R, V - R) : -1;
+  t.HR = (2 * t.NdotL) * N - t.L;
+  t.Base = dot(V, t.HR);
+  return t.Base > 0 ? 0.5 * dot(V - t.HR, V - t.HR) : -1;
+}
+
+// One light's terms at P, lit with unit normal N seen along V.
+LightTerms LightTermsAt(const IlluminationInputs& in, const FrameLight& light, const Vec3& P,
+  const Vec3& N, const Vec3& V)
+{
+  const Material& m = in.Surface;
+  LightTerms t;
+  LightAt(light, P, t);
+  t.NdotL = dot(N, t.L);
+  const double d = SpecularD(in, N, V, t);
+  // "N.L <= 0": no diffuse and, by the lecture's cases, no specular.
+  t.Lit = t.Reaches && t.NdotL > GrazingLimit;
+  t.Specular = t.Lit && d >= 0;
+  if (t.Lit)
+  {
+    t.DiffuseTerm = Mul(t.Il, t.NdotL * m.Kd);
+  }
+  if (t.Specular)
+  {
+    t.Power = SpecularFalloff(d, m.Ns);
+    t.SpecularTerm = Mul(t.Il, t.Power * m.Ks);
+  }
+  return t;
 }
 }
 
@@ -98,6 +125,12 @@ FrameLight ToFrame(const Light& light, const double r[3][3], const Vec3& t)
   return f;
 }
 
+FrameLight ToFrame(const Light& light)
+{
+  const double identity[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  return ToFrame(light, identity, { 0, 0, 0 });
+}
+
 double SpecularFalloff(double d, double ns)
 {
   if (d < 0.01)
@@ -110,43 +143,43 @@ double SpecularFalloff(double d, double ns)
   return std::pow(1 - d, ns);
 }
 
-Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N)
+Rgb IlluminationTerms::Total() const
 {
-  const Material& m = in.Surface;
-  Rgb I = Mul(m.Ka, in.Ambient);
-  Vec3 V = -in.ViewDirection;
-  if (!in.Orthographic)
+  Rgb I = this->Ambient;
+  for (const LightTerms& light : this->Lights)
   {
-    const Vec3 toEye = in.Eye - P;
-    const double len = length(toEye);
-    V = len > TinyLength ? (1 / len) * toEye : Vec3{ 0, 0, 0 };
-  }
-  for (const FrameLight& light : in.Lights)
-  {
-    Vec3 L;
-    Rgb Il;
-    if (!LightAt(light, P, L, Il))
-    {
-      continue;
-    }
-    const double NdotL = dot(N, L);
-    if (!(NdotL > GrazingLimit))
-    {
-      continue; // no diffuse and, by the lecture's cases, no specular
-    }
-    Rgb term = NdotL * m.Kd;
-    const double d = SpecularD(in, N, L, V);
-    if (d >= 0)
-    {
-      term = term + SpecularFalloff(d, m.Ns) * m.Ks;
-    }
-    I = I + Mul(Il, term);
+    I = I + (light.DiffuseTerm + light.SpecularTerm);
   }
   return I;
 }
 
-Rgb ShadeFragment(const IlluminationInputs& in, const Vec3& P, const Vec3& interpolatedN,
-  const Vec3& geometricN, bool frontFacing)
+IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, const Vec3& N)
+{
+  IlluminationTerms terms;
+  terms.P = P;
+  terms.N = N;
+  terms.Ambient = Mul(in.Surface.Ka, in.Ambient);
+  terms.V = -in.ViewDirection;
+  if (!in.Orthographic)
+  {
+    const Vec3 toEye = in.Eye - P;
+    const double len = length(toEye);
+    terms.V = len > TinyLength ? (1 / len) * toEye : Vec3{ 0, 0, 0 };
+  }
+  for (const FrameLight& light : in.Lights)
+  {
+    terms.Lights.push_back(LightTermsAt(in, light, P, N, terms.V));
+  }
+  return terms;
+}
+
+Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N)
+{
+  return IlluminateTerms(in, P, N).Total();
+}
+
+IlluminationTerms ShadeFragment(const IlluminationInputs& in, const Vec3& P,
+  const Vec3& interpolatedN, const Vec3& geometricN, bool frontFacing)
 {
   const double len = length(interpolatedN);
   Vec3 N;
@@ -162,21 +195,19 @@ Rgb ShadeFragment(const IlluminationInputs& in, const Vec3& P, const Vec3& inter
   {
     N = (1 / length(geometricN)) * geometricN; // already facing the viewer
   }
-  return Illuminate(in, P, N);
+  return IlluminateTerms(in, P, N);
 }
 
-Rgb ShadeVertex(const IlluminationInputs& in, const Vec3& P, const Vec3& N, bool front)
+IlluminationTerms ShadeVertex(
+  const IlluminationInputs& in, const Vec3& P, const Vec3& N, bool front)
 {
   const double len = length(N);
-  if (!Usable(len, TinyLength))
-  {
-    return Mul(in.Surface.Ka, in.Ambient);
-  }
-  const Vec3 unit = (1 / len) * N;
-  return Illuminate(in, P, front ? unit : -unit);
+  // No usable normal: N = 0 makes N.L = 0 for every light, ambient only.
+  const Vec3 unit = Usable(len, TinyLength) ? (1 / len) * N : Vec3{ 0, 0, 0 };
+  return IlluminateTerms(in, P, front ? unit : -unit);
 }
 
-Rgb ShadeFlat(
+IlluminationTerms ShadeFlat(
   const IlluminationInputs& in, const Vec3& P0, const Vec3& P1, const Vec3& P2, bool frontFacing)
 {
   const Vec3 face = cross(P1 - P0, P2 - P0);

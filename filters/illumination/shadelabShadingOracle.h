@@ -41,6 +41,9 @@ struct IlluminationInputs
 /** Moves lights into the computation's frame (p' = R p + t, d' = R d). */
 FrameLight ToFrame(const Light& light, const double rotation[3][3], const Vec3& translation);
 
+/** The light as it is: for computations in world coordinates. */
+FrameLight ToFrame(const Light& light);
+
 /**
  * (1 - d)^ns for 0 <= d < 1, where d = 1 - cos of the specular angle,
  * computed as d = |A - B|^2 / 2 for unit A, B (no cancellation near 1).
@@ -49,13 +52,51 @@ FrameLight ToFrame(const Light& light, const double rotation[3][3], const Vec3& 
  */
 double SpecularFalloff(double d, double ns);
 
+/** One light's share of the equation at a point, and the quantities it comes from. */
+struct LightTerms
+{
+  // It reaches P: it has a direction there (a point light is not at P itself)
+  // and, a spot, P lies inside its cone.
+  bool Reaches = false;
+  Vec3 L{};              // unit, towards the light; a directional light's is minus its direction
+  double SpotCos = 1;    // spot: cos of the angle between its axis and the ray from it to P
+  double SpotFactor = 1; // spot: (SpotCos)^e inside the cone (1 for e = 0), 0 outside
+  Rgb Il{};              // its colour as it reaches P: the colour times SpotFactor
+  double NdotL = 0;
+  bool Lit = false; // N.L > 0 (taken as N.L > 1e-5, see Illuminate): it adds a diffuse term
+  // Blinn-Phong: H = normalize(L + V), or 0 where L = -V leaves it undefined;
+  // Phong: R = 2(N.L)N - L.
+  Vec3 HR{};
+  double Base = 0;       // N.H or V.R
+  bool Specular = false; // Lit and Base > 0 (H defined): it adds a specular term
+  double Power = 0;      // Base^ns through SpecularFalloff where Specular, else 0
+  Rgb DiffuseTerm{};     // kd*Il*(N.L) where Lit, else 0
+  Rgb SpecularTerm{};    // ks*Il*Base^ns where Specular, else 0
+};
+
+/** The equation at one point, term by term: what Illuminate adds up. */
+struct IlluminationTerms
+{
+  Vec3 P{};
+  Vec3 N{};                       // the unit normal it was lit with; 0 lights as ambient only
+  Vec3 V{};                       // unit, towards the viewer
+  Rgb Ambient{};                  // ka*Ia
+  std::vector<LightTerms> Lights; // in the order of IlluminationInputs::Lights
+
+  /** I = ka*Ia + sum_l (diffuse_l + specular_l). */
+  Rgb Total() const;
+};
+
 /**
- * I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l] at point P with unit normal N.
- * S_l = 0 when N.L <= 0 or the specular base is <= 0; a light at P itself
- * (L undefined) and L = -V (H undefined) add nothing undefined. "N.L <= 0"
- * is taken as N.L <= 1e-5, so that float rounding cannot decide the case
- * where N.L is exactly 0 (see GrazingLimit).
+ * I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l] at point P with unit normal N,
+ * term by term. S_l = 0 when N.L <= 0 or the specular base is <= 0; a light
+ * at P itself (L undefined) and L = -V (H undefined) add nothing undefined.
+ * "N.L <= 0" is taken as N.L <= 1e-5, so that float rounding cannot decide
+ * the case where N.L is exactly 0 (see GrazingLimit).
  */
+IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
+
+/** IlluminateTerms(in, P, N).Total(): the intensity. */
 Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
 
 /**
@@ -64,22 +105,23 @@ Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
  * geometric normal (facing the viewer). Back faces are lit with the normal
  * flipped.
  */
-Rgb ShadeFragment(const IlluminationInputs& in, const Vec3& P, const Vec3& interpolatedN,
-  const Vec3& geometricN, bool frontFacing);
+IlluminationTerms ShadeFragment(const IlluminationInputs& in, const Vec3& P,
+  const Vec3& interpolatedN, const Vec3& geometricN, bool frontFacing);
 
 /**
- * Gouraud shading: the colour at one vertex, for the front (N) or the back
- * (-N); the rasteriser interpolates it and the fragment picks by facing.
- * A zero-length or non-finite normal lights as ambient only.
+ * Gouraud shading: the terms at one vertex, for the front (N) or the back
+ * (-N); the rasteriser interpolates their sum and the fragment picks by
+ * facing. A zero-length or non-finite normal lights as ambient only.
  */
-Rgb ShadeVertex(const IlluminationInputs& in, const Vec3& P, const Vec3& N, bool front);
+IlluminationTerms ShadeVertex(
+  const IlluminationInputs& in, const Vec3& P, const Vec3& N, bool front);
 
 /**
  * Flat shading: the equation once for triangle (P0, P1, P2), at its
  * provoking vertex (OpenGL's last vertex, P2) with the face normal
  * normalize((P1 - P0) x (P2 - P0)), flipped for a back face.
  */
-Rgb ShadeFlat(
+IlluminationTerms ShadeFlat(
   const IlluminationInputs& in, const Vec3& P0, const Vec3& P1, const Vec3& P2, bool frontFacing);
 }
 

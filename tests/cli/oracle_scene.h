@@ -9,14 +9,18 @@
 // normals and the triangles' vertex order are exactly the test's. A whole
 // scene can be scaled and translated (mesh, lights, camera, parallel scale).
 // The expected image follows DESIGN.md's shading rules through the oracle's
-// functions, in world coordinates: orthographic, so screen-linear
-// interpolation is perspective-correct and barycentric coordinates of a pixel
-// centre in the xy plane are those of the fragment.
+// functions, in world coordinates: the ray through each pixel centre meets
+// the mesh in double precision (filters/groundtruth/shadelabPixelRays.h) and
+// the fragment it meets is shaded by its rule
+// (filters/illumination/shadelabTriangleFragment.h), as `shadelab probe`
+// explains a pixel.
 #ifndef shadelab_oracle_scene_h
 #define shadelab_oracle_scene_h
 
 #include "cli_test_support.h"
+#include "shadelabPixelRays.h"
 #include "shadelabShadingOracle.h"
+#include "shadelabTriangleFragment.h"
 #include "shadelabVec3.h"
 
 #include <gtest/gtest.h>
@@ -57,12 +61,6 @@ constexpr double ParallelScale = 1.1;
 // boundary or another curve where a term switches on or off.
 constexpr double EdgeMargin = 1.5;
 
-// z of the cross product of two xy vectors: twice the signed area.
-inline double Cross2(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[1] - a[1] * b[0];
-}
-
 inline std::string Num(double v)
 {
   char text[32];
@@ -84,9 +82,9 @@ inline std::string Show(const std::array<double, 3>& v)
 
 struct Mesh
 {
-  std::vector<Vec3> Positions;               // local coordinates
-  std::vector<Vec3> Normals;                 // per vertex, float-exact (what the reader keeps)
-  std::vector<std::array<int, 3>> Triangles; // draw order; the third is the provoking vertex
+  std::vector<Vec3> Positions; // local coordinates
+  std::vector<Vec3> Normals;   // per vertex, float-exact (what the reader keeps)
+  std::vector<shadelab::TriangleCorners> Triangles; // draw order; the third is the provoking vertex
 };
 
 struct GridSpec
@@ -156,9 +154,9 @@ inline Mesh Grid(const GridSpec& g)
       // Counter-clockwise seen from +Z, the diagonal alternating; the vertex
       // order is rotated from cell to cell so that every corner of a cell is
       // somewhere the provoking (third) vertex.
-      std::vector<std::array<int, 3>> pair = (i + j) % 2
-        ? std::vector<std::array<int, 3>>{ { v00, v10, v01 }, { v10, v11, v01 } }
-        : std::vector<std::array<int, 3>>{ { v00, v10, v11 }, { v00, v11, v01 } };
+      std::vector<shadelab::TriangleCorners> pair = (i + j) % 2
+        ? std::vector<shadelab::TriangleCorners>{ { v00, v10, v01 }, { v10, v11, v01 } }
+        : std::vector<shadelab::TriangleCorners>{ { v00, v10, v11 }, { v00, v11, v01 } };
       for (auto& t : pair)
       {
         std::rotate(t.begin(), t.begin() + (i + 2 * j) % 3, t.end());
@@ -186,7 +184,7 @@ inline Mesh Grid(const GridSpec& g)
     m.Normals.push_back(normal);
     return static_cast<int>(m.Positions.size() - 1);
   };
-  std::vector<std::array<int, 3>> triangles;
+  std::vector<shadelab::TriangleCorners> triangles;
   for (const auto& t : m.Triangles)
   {
     const Vec3 a = m.Positions[t[0]], b = m.Positions[t[1]], c = m.Positions[t[2]];
@@ -316,7 +314,7 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
   for (const auto& t : m.Triangles)
   {
     obj << "f";
-    for (int v : t)
+    for (const auto v : t)
     {
       obj << " " << v + 1 << "//" << v + 1;
     }
@@ -372,69 +370,51 @@ struct Expected
   } What = Skipped;
   int Triangle = -1;
   Rgb Value{};
-  // Where the rule evaluates the equation (world): the pixel centre on the
-  // mesh, or for flat the provoking vertex.
-  Vec3 P{};
-  Vec3 N{}; // the normal the rule lights with there (unit, facing the viewer)
-  bool Front = true;
+  // How the rule lit the pixel (world): where (the pixel centre on the mesh,
+  // or for flat the provoking vertex), with which normal (unit, facing the
+  // viewer; gouraud: the vertices' mixed), and each light's terms.
+  shadelab::IlluminationTerms Terms;
 };
 
+// The pixels of a scene as the oracle sees them: the library's rays through
+// the pixel centres (shadelabPixelRays) and its shading of the fragment met
+// (shadelabTriangleFragment), as `shadelab probe` explains a pixel.
 class Oracle
 {
 public:
   explicit Oracle(const Scene& s)
     : S(s)
     , M(Grid(s.Geometry))
+    , Triangles(Camera(s), s.Size, s.Size, WorldPositions(s, this->M), this->M.Triangles)
   {
     this->In.Surface = s.Surface;
     this->In.Ambient = s.Ambient;
     this->In.Model = s.Model;
     this->In.Orthographic = true;
     this->In.ViewDirection = { 0, 0, -1 };
-    const double identity[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
     for (const Light& l : WorldLights(s))
     {
-      this->In.Lights.push_back(shadelab::ToFrame(l, identity, { 0, 0, 0 }));
+      this->In.Lights.push_back(shadelab::ToFrame(l));
     }
-    for (const Vec3& p : this->M.Positions)
-    {
-      this->WorldPositions.push_back(s.World(p));
-    }
-  }
-
-  double PixelSize() const { return 2 * ParallelScale / this->S.Size; } // local units
-
-  // The pixel centre (x, y), y from the top, in local coordinates (z = 0).
-  Vec3 Centre(double x, double y) const
-  {
-    const double h = this->S.Size / 2.0;
-    return { (x + 0.5 - h) * this->PixelSize(), (h - (y + 0.5)) * this->PixelSize(), 0 };
   }
 
   Expected At(int x, int y) const
   {
-    const Vec3 q = this->Centre(x, y);
-    double nearest = 1e300; // distance to the mesh, in pixels
-    for (int t = 0; t < static_cast<int>(this->M.Triangles.size()); ++t)
-    {
-      std::array<double, 3> w;
-      const double d = this->Distance(t, q, w);
-      nearest = std::min(nearest, d);
-      if (w[0] > 0 && w[1] > 0 && w[2] > 0)
-      {
-        Expected e;
-        e.Triangle = t;
-        if (-d <= EdgeMargin || this->NearSwitch(t, q))
-        {
-          return e;
-        }
-        this->Shade(t, w, e);
-        e.What = Expected::Interior;
-        return e;
-      }
-    }
+    const double cx = x + 0.5, cy = y + 0.5; // the pixel centre
+    const shadelab::PictureTriangles::Hit hit = this->Triangles.Under(cx, cy);
     Expected e;
-    e.What = nearest > EdgeMargin ? Expected::Background : Expected::Skipped;
+    if (hit.Triangle < 0)
+    {
+      e.What = hit.EdgeDistance > EdgeMargin ? Expected::Background : Expected::Skipped;
+      return e;
+    }
+    e.Triangle = static_cast<int>(hit.Triangle);
+    if (hit.EdgeDistance <= EdgeMargin || this->NearSwitch(e.Triangle, hit.Front, cx, cy))
+    {
+      return e;
+    }
+    this->Shade(e.Triangle, hit.Weights, hit.Front, e);
+    e.What = Expected::Interior;
     return e;
   }
 
@@ -443,55 +423,41 @@ public:
   std::string Describe(const Expected& e) const
   {
     std::ostringstream s;
-    s << "P " << Show(e.P) << (e.Front ? " front" : " back") << ", N " << Show(e.N)
-      << ", V (0, 0, 1)";
-    for (const FrameLight& l : this->In.Lights)
+    s << "P " << Show(e.Terms.P) << ", N " << Show(e.Terms.N) << ", V " << Show(e.Terms.V);
+    for (std::size_t l = 0; l < e.Terms.Lights.size(); ++l)
     {
-      const Vec3 L = l.Kind == LightKind::Directional ? -l.Direction : normalize(l.Position - e.P);
-      s << "; " << shadelab::ToString(l.Kind) << " L " << Show(L) << " N.L " << dot(e.N, L);
-      if (l.Kind == LightKind::Spot)
+      const shadelab::LightTerms& t = e.Terms.Lights[l];
+      const FrameLight& light = this->In.Lights[l];
+      s << "; " << shadelab::ToString(light.Kind) << " L " << Show(t.L) << " N.L " << t.NdotL;
+      if (light.Kind == LightKind::Spot)
       {
-        s << " cos " << -dot(L, l.Direction) << " (cut-off " << l.CosCutoff << ")";
+        s << " cos " << t.SpotCos << " (cut-off " << light.CosCutoff << ")";
       }
     }
     return s.str();
   }
 
 private:
-  // Barycentric coordinates w of q (xy) in triangle t and the distance in
-  // pixels from q to the triangle's boundary: negative inside.
-  double Distance(int t, const Vec3& q, std::array<double, 3>& w) const
+  // The scene's camera: orthographic on +Z, looking at the origin, +Y up.
+  static shadelab::PinholeCamera Camera(const Scene& s)
   {
-    const auto& tri = this->M.Triangles[t];
-    const Vec3& a = this->M.Positions[tri[0]];
-    const Vec3& b = this->M.Positions[tri[1]];
-    const Vec3& c = this->M.Positions[tri[2]];
-    const double area = Cross2(b - a, c - a);
-    w = { Cross2(b - q, c - q) / area, Cross2(c - q, a - q) / area, 0 };
-    w[2] = 1 - w[0] - w[1];
-    const bool inside = w[0] > 0 && w[1] > 0 && w[2] > 0;
-    double d = 1e300;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec3& a0 = this->M.Positions[tri[k]];
-      const Vec3& a1 = this->M.Positions[tri[(k + 1) % 3]];
-      const Vec3 p0{ a0[0], a0[1], 0 }, e{ a1[0] - a0[0], a1[1] - a0[1], 0 }; // in the xy plane
-      const double along = std::clamp(dot(q - p0, e) / dot(e, e), 0.0, 1.0);
-      const Vec3 off = q - (p0 + along * e);
-      d = std::min(d, std::hypot(off[0], off[1]));
-    }
-    d /= this->PixelSize();
-    return inside ? -d : d;
+    shadelab::PinholeCamera c;
+    c.Position = s.World({ 0, 0, s.CameraDistance });
+    c.FocalPoint = s.World({ 0, 0, 0 });
+    c.ViewUp = { 0, 1, 0 };
+    c.Orthographic = true;
+    c.ParallelScale = s.Scale * ParallelScale;
+    return c;
   }
 
-  Vec3 WorldPoint(int t, const std::array<double, 3>& w) const
+  static std::vector<Vec3> WorldPositions(const Scene& s, const Mesh& m)
   {
-    Vec3 p{ 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
+    std::vector<Vec3> world;
+    for (const Vec3& p : m.Positions)
     {
-      p = p + w[k] * this->WorldPositions[this->M.Triangles[t][k]];
+      world.push_back(s.World(p));
     }
-    return p;
+    return world;
   }
 
   // The lecture's cases at a fragment, per light: whether it reaches P (a
@@ -501,47 +467,45 @@ private:
   // Values within rounding of 0 (float normals: 3e-8) count as 0, so that a
   // light in the surface's plane is compared (it is a case of its own), not
   // skipped; a real crossing moves by 1e-6/0.005 = 2e-4 pixel for it.
-  std::vector<bool> Switches(const Expected& at) const
+  static std::vector<bool> Switches(const Expected& at)
   {
     constexpr double Rounding = 1e-6;
     std::vector<bool> on;
-    for (const FrameLight& l : this->In.Lights)
+    for (const shadelab::LightTerms& t : at.Terms.Lights)
     {
-      const Vec3 L = l.Kind == LightKind::Directional ? -l.Direction : normalize(l.Position - at.P);
-      const Vec3 V{ 0, 0, 1 };
-      const double NdotL = dot(at.N, L);
-      const double base = this->S.Model == Reflection::BlinnPhong ? dot(at.N, normalize(L + V))
-                                                                  : dot(V, 2 * NdotL * at.N - L);
-      on.push_back(l.Kind != LightKind::Spot || -dot(L, l.Direction) >= l.CosCutoff);
-      on.push_back(NdotL > Rounding);
-      on.push_back(base > Rounding);
+      on.push_back(t.Reaches);
+      on.push_back(t.NdotL > Rounding);
+      on.push_back(t.Base > Rounding);
     }
     return on;
   }
 
   // Per-fragment lighting only (phong; flat and gouraud decide at vertices):
-  // whether one of the switches above changes within EdgeMargin pixels of q,
-  // found on a ring of that radius (the switching curves bend over many
-  // pixels, so one passing this close cuts the ring).
-  bool NearSwitch(int t, const Vec3& q) const
+  // whether one of the switches above changes within EdgeMargin pixels of
+  // picture point (x, y) on triangle t, found on a ring of that radius (the
+  // switching curves bend over many pixels, so one passing this close cuts
+  // the ring).
+  bool NearSwitch(int t, bool front, double x, double y) const
   {
     if (this->S.Rule != Shading::Phong)
     {
       return false;
     }
-    const auto switches = [&](const Vec3& local)
+    const auto switches = [&](double px, double py)
     {
-      std::array<double, 3> w;
-      this->Distance(t, local, w);
+      const auto& c = this->M.Triangles[t];
+      const auto& p = this->Triangles.GetPoints();
+      const shadelab::TriangleHit h =
+        shadelab::IntersectTriangle(this->Triangles.RayAt(px, py), p[c[0]], p[c[1]], p[c[2]]);
       Expected at;
-      this->Frame(t, w, at);
-      return this->Switches(at);
+      this->Shade(t, h.Weights, front, at);
+      return Switches(at);
     };
-    const std::vector<bool> centre = switches(q);
+    const std::vector<bool> centre = switches(x, y);
     for (int k = 0; k < 32; ++k)
     {
-      const double a = 2 * Pi * k / 32, r = EdgeMargin * this->PixelSize();
-      if (switches(q + Vec3{ r * std::cos(a), r * std::sin(a), 0 }) != centre)
+      const double a = 2 * Pi * k / 32;
+      if (switches(x + EdgeMargin * std::cos(a), y + EdgeMargin * std::sin(a)) != centre)
       {
         return true;
       }
@@ -549,67 +513,27 @@ private:
     return false;
   }
 
-  // Where the rules light fragment w of triangle t: P, facing, and the unit
-  // normal (the face normal for flat, else the renormalised interpolated
-  // one, or the geometric normal where that is shorter than 1e-6), facing
-  // the viewer. Returns the interpolated normal as it is and the geometric.
-  std::array<Vec3, 2> Frame(int t, const std::array<double, 3>& w, Expected& e) const
+  // The rules of DESIGN.md through the oracle's functions.
+  void Shade(int t, const std::array<double, 3>& w, bool front, Expected& e) const
   {
-    const auto& tri = this->M.Triangles[t];
-    const Vec3& p0 = this->WorldPositions[tri[0]];
-    const Vec3 face =
-      normalize(cross(this->WorldPositions[tri[1]] - p0, this->WorldPositions[tri[2]] - p0));
-    // The camera looks along -Z with +Y up, so the screen's winding is the
-    // xy plane's: counter-clockwise is a front face.
-    e.Front = face[2] > 0;
-    const Vec3 geometric = e.Front ? face : -face; // towards the viewer
-    e.P = this->S.Rule == Shading::Flat ? this->WorldPositions[tri[2]] : this->WorldPoint(t, w);
-    Vec3 interpolated{ 0, 0, 0 };
+    shadelab::TriangleFragment f;
     for (int k = 0; k < 3; ++k)
     {
-      interpolated = interpolated + w[k] * this->M.Normals[tri[k]];
+      const auto v = this->M.Triangles[t][k];
+      f.Positions[k] = this->Triangles.GetPoints()[v];
+      f.Normals[k] = this->M.Normals[v];
     }
-    const double len = std::sqrt(dot(interpolated, interpolated));
-    e.N = len > 1e-6 && this->S.Rule != Shading::Flat ? ((e.Front ? 1 : -1) / len * interpolated)
-                                                      : geometric;
-    return { interpolated, geometric };
-  }
-
-  // The rules of DESIGN.md through the oracle's functions.
-  void Shade(int t, const std::array<double, 3>& w, Expected& e) const
-  {
-    const auto& tri = this->M.Triangles[t];
-    const auto [interpolated, geometric] = this->Frame(t, w, e);
-    switch (this->S.Rule)
-    {
-      case Shading::None:
-        e.Value = this->S.Surface.Kd;
-        break;
-      case Shading::Flat:
-        e.Value = shadelab::ShadeFlat(this->In, this->WorldPositions[tri[0]],
-          this->WorldPositions[tri[1]], this->WorldPositions[tri[2]], e.Front);
-        break;
-      case Shading::Gouraud:
-        e.Value = { 0, 0, 0 };
-        for (int k = 0; k < 3; ++k)
-        {
-          const Rgb c = shadelab::ShadeVertex(
-            this->In, this->WorldPositions[tri[k]], this->M.Normals[tri[k]], e.Front);
-          for (int ch = 0; ch < 3; ++ch)
-          {
-            e.Value[ch] += w[k] * c[ch];
-          }
-        }
-        break;
-      case Shading::Phong:
-        e.Value = shadelab::ShadeFragment(this->In, e.P, interpolated, geometric, e.Front);
-        break;
-    }
+    f.Weights = w;
+    f.Front = front;
+    const shadelab::ShadedFragment shaded =
+      shadelab::ShadeTriangleFragment(this->In, this->S.Rule, f);
+    e.Value = shaded.Color;
+    e.Terms = shaded.Terms;
   }
 
   const Scene& S;
   Mesh M;
-  std::vector<Vec3> WorldPositions;
+  shadelab::PictureTriangles Triangles; // in world coordinates
   IlluminationInputs In;
 };
 // ---------------------------------------------------------------- cases

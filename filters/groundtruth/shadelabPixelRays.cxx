@@ -1,0 +1,164 @@
+#include "shadelabPixelRays.h"
+
+#include "shadelabVec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadelab
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// vtkCamera's frame: the view-up made orthogonal to the direction of view.
+struct ViewFrame
+{
+  Vec3 Forward, Right, Up;
+};
+
+ViewFrame FrameOf(const PinholeCamera& c)
+{
+  ViewFrame f;
+  f.Forward = normalize(c.FocalPoint - c.Position);
+  f.Right = normalize(cross(f.Forward, c.ViewUp));
+  f.Up = cross(f.Right, f.Forward);
+  return f;
+}
+
+// Half the view's height at unit distance (perspective) or in world units
+// (orthographic).
+double HalfHeight(const PinholeCamera& c)
+{
+  return c.Orthographic ? c.ParallelScale : std::tan(c.ViewAngle * Pi / 360);
+}
+
+// Distance from (x, y) to the segment from a to b, in the plane.
+double SegmentDistance(
+  double x, double y, const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  const double ex = b[0] - a[0], ey = b[1] - a[1];
+  const double length2 = ex * ex + ey * ey;
+  const double along =
+    length2 > 0 ? std::clamp(((x - a[0]) * ex + (y - a[1]) * ey) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(x - (a[0] + along * ex), y - (a[1] + along * ey));
+}
+}
+
+Ray PictureRay(const PinholeCamera& camera, int width, int height, double x, double y)
+{
+  const ViewFrame f = FrameOf(camera);
+  const double half = HalfHeight(camera);
+  // Normalised device coordinates, as glViewport maps them.
+  const double h = (2 * x / width - 1) * half * width / height;
+  const double v = (1 - 2 * y / height) * half;
+  if (camera.Orthographic)
+  {
+    return { camera.Position + h * f.Right + v * f.Up, f.Forward };
+  }
+  return { camera.Position, normalize(f.Forward + h * f.Right + v * f.Up) };
+}
+
+TriangleHit IntersectTriangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  // Moller-Trumbore.
+  TriangleHit hit;
+  const Vec3 e1 = b - a, e2 = c - a;
+  const Vec3 p = cross(ray.Direction, e2);
+  const double det = dot(e1, p);
+  if (det == 0 || !std::isfinite(det))
+  {
+    return hit;
+  }
+  const Vec3 s = ray.Origin - a;
+  const Vec3 q = cross(s, e1);
+  const double u = dot(s, p) / det, v = dot(ray.Direction, q) / det;
+  hit.T = dot(e2, q) / det;
+  hit.Weights = { 1 - u - v, u, v };
+  hit.Inside = u >= 0 && v >= 0 && u + v <= 1 && hit.T > 0;
+  return hit;
+}
+
+PictureTriangles::PictureTriangles(const PinholeCamera& camera, int width, int height,
+  std::vector<Vec3> points, std::vector<TriangleCorners> triangles)
+  : Camera(camera)
+  , Width(width)
+  , Height(height)
+  , Points(std::move(points))
+  , Triangles(std::move(triangles))
+{
+  const ViewFrame f = FrameOf(camera);
+  this->Forward = f.Forward;
+  const double half = HalfHeight(camera);
+  const double aspect = static_cast<double>(width) / height;
+  for (const Vec3& p : this->Points)
+  {
+    const Vec3 d = p - camera.Position;
+    const double depth = dot(d, f.Forward);
+    // The inverse of PictureRay.
+    const double scale = camera.Orthographic ? half : half * depth;
+    const double h = dot(d, f.Right) / (scale * aspect), v = dot(d, f.Up) / scale;
+    this->Projected.push_back({ (h + 1) * width / 2, (1 - v) * height / 2, depth });
+  }
+}
+
+Ray PictureTriangles::RayAt(double x, double y) const
+{
+  return PictureRay(this->Camera, this->Width, this->Height, x, y);
+}
+
+double PictureTriangles::EdgeDistance(std::size_t t, double x, double y) const
+{
+  const TriangleCorners& c = this->Triangles[t];
+  const auto& a = this->Projected[c[0]];
+  const auto& b = this->Projected[c[1]];
+  const auto& d = this->Projected[c[2]];
+  if (!this->Camera.Orthographic && !(a[2] > 0 && b[2] > 0 && d[2] > 0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return std::min(
+    { SegmentDistance(x, y, a, b), SegmentDistance(x, y, b, d), SegmentDistance(x, y, d, a) });
+}
+
+PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
+{
+  const Ray ray = this->RayAt(x, y);
+  Hit hit;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    const TriangleCorners& c = this->Triangles[t];
+    const TriangleHit h =
+      IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
+    if (h.Inside && h.T < nearest)
+    {
+      nearest = h.T;
+      hit.Triangle = static_cast<std::int64_t>(t);
+      hit.Weights = h.Weights;
+    }
+  }
+  // The depth of the point met; only triangles with a corner nearer may cover it.
+  double depth = std::numeric_limits<double>::infinity();
+  if (hit.Triangle >= 0)
+  {
+    const TriangleCorners& c = this->Triangles[hit.Triangle];
+    const Vec3& a = this->Points[c[0]];
+    hit.Front = dot(cross(this->Points[c[1]] - a, this->Points[c[2]] - a), ray.Direction) < 0;
+    depth = dot(ray.Origin + nearest * ray.Direction - this->Camera.Position, this->Forward);
+  }
+  hit.EdgeDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    const TriangleCorners& c = this->Triangles[t];
+    const double closest =
+      std::min({ this->Projected[c[0]][2], this->Projected[c[1]][2], this->Projected[c[2]][2] });
+    if (closest < depth || static_cast<std::int64_t>(t) == hit.Triangle)
+    {
+      hit.EdgeDistance = std::min(hit.EdgeDistance, this->EdgeDistance(t, x, y));
+    }
+  }
+  return hit;
+}
+}

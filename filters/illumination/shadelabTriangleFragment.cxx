@@ -1,0 +1,81 @@
+#include "shadelabTriangleFragment.h"
+
+#include "shadelabVec3.h"
+
+namespace shadelab
+{
+namespace
+{
+template <typename T, typename Get>
+T Mix(const std::array<double, 3>& w, Get get)
+{
+  return w[0] * get(0) + w[1] * get(1) + w[2] * get(2);
+}
+}
+
+IlluminationTerms MixTerms(
+  const std::array<IlluminationTerms, 3>& t, const std::array<double, 3>& w)
+{
+  IlluminationTerms mixed;
+  mixed.P = Mix<Vec3>(w, [&](int k) { return t[k].P; });
+  mixed.N = Mix<Vec3>(w, [&](int k) { return t[k].N; });
+  mixed.V = Mix<Vec3>(w, [&](int k) { return t[k].V; });
+  mixed.Ambient = Mix<Rgb>(w, [&](int k) { return t[k].Ambient; });
+  for (std::size_t l = 0; l < t[0].Lights.size(); ++l)
+  {
+    const auto light = [&](int k) -> const LightTerms& { return t[k].Lights[l]; };
+    LightTerms m;
+    m.Reaches = light(0).Reaches || light(1).Reaches || light(2).Reaches;
+    m.Lit = light(0).Lit || light(1).Lit || light(2).Lit;
+    m.Specular = light(0).Specular || light(1).Specular || light(2).Specular;
+    m.L = Mix<Vec3>(w, [&](int k) { return light(k).L; });
+    m.HR = Mix<Vec3>(w, [&](int k) { return light(k).HR; });
+    m.Il = Mix<Rgb>(w, [&](int k) { return light(k).Il; });
+    m.DiffuseTerm = Mix<Rgb>(w, [&](int k) { return light(k).DiffuseTerm; });
+    m.SpecularTerm = Mix<Rgb>(w, [&](int k) { return light(k).SpecularTerm; });
+    m.SpotCos = Mix<double>(w, [&](int k) { return light(k).SpotCos; });
+    m.SpotFactor = Mix<double>(w, [&](int k) { return light(k).SpotFactor; });
+    m.NdotL = Mix<double>(w, [&](int k) { return light(k).NdotL; });
+    m.Base = Mix<double>(w, [&](int k) { return light(k).Base; });
+    m.Power = Mix<double>(w, [&](int k) { return light(k).Power; });
+    mixed.Lights.push_back(m);
+  }
+  return mixed;
+}
+
+ShadedFragment ShadeTriangleFragment(
+  const IlluminationInputs& in, Shading rule, const TriangleFragment& f)
+{
+  const auto& P = f.Positions;
+  const auto& w = f.Weights;
+  ShadedFragment s;
+  s.Point = Mix<Vec3>(w, [&](int k) { return P[k]; });
+  s.FaceNormal = normalize(cross(P[1] - P[0], P[2] - P[0]));
+  switch (rule)
+  {
+    case Shading::None:
+      s.Color = in.Surface.Kd;
+      return s;
+    case Shading::Flat:
+      s.Terms = ShadeFlat(in, P[0], P[1], P[2], f.Front);
+      break;
+    case Shading::Gouraud:
+      for (int k = 0; k < 3; ++k)
+      {
+        s.Vertices[k] = ShadeVertex(in, P[k], f.Normals[k], f.Front);
+      }
+      s.Terms = MixTerms(s.Vertices, w);
+      s.Color = Mix<Rgb>(w, [&](int k) { return s.Vertices[k].Total(); });
+      return s;
+    case Shading::Phong:
+    {
+      const Vec3 interpolated = Mix<Vec3>(w, [&](int k) { return f.Normals[k]; });
+      const Vec3 geometric = f.Front ? s.FaceNormal : -s.FaceNormal; // towards the viewer
+      s.Terms = ShadeFragment(in, s.Point, interpolated, geometric, f.Front);
+      break;
+    }
+  }
+  s.Color = s.Terms.Total();
+  return s;
+}
+}

@@ -1,0 +1,56 @@
+// One fragment of a triangle under each shading rule (DESIGN.md, "The
+// shading rules"), through the oracle: where the rule evaluates the
+// equation, with which normal, and how the rasteriser mixes what it gives.
+// What the oracle tests expect of a pixel and what `shadelab probe` explains.
+#ifndef shadelabTriangleFragment_h
+#define shadelabTriangleFragment_h
+
+#include "shadelabShadingOracle.h"
+
+#include <array>
+
+namespace shadelab
+{
+/** A triangle as drawn and one fragment of it. */
+struct TriangleFragment
+{
+  std::array<Vec3, 3> Positions{}; // in draw order: the last one provokes (flat)
+  std::array<Vec3, 3> Normals{};   // the vertex normals as drawn (gouraud, phong)
+  // The fragment's barycentric weights, perspective-correct (as the
+  // rasteriser interpolates): those of the point on the triangle itself.
+  std::array<double, 3> Weights{};
+  bool Front = true; // the triangle faces the viewer (counter-clockwise on the screen)
+};
+
+/** The fragment as its rule shades it. */
+struct ShadedFragment
+{
+  Rgb Color{};       // the rule's value: the oracle's intensity of the fragment
+  Vec3 Point{};      // the fragment on the surface: the weights' mix of the positions
+  Vec3 FaceNormal{}; // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
+  // How the rule lit: flat at the provoking vertex with the face normal,
+  // phong at Point with the interpolated normal, gouraud the weights' mix of
+  // Vertices (the colour is interpolated, so its terms are too). Empty for
+  // none, which does not light.
+  IlluminationTerms Terms;
+  std::array<IlluminationTerms, 3> Vertices; // gouraud: the equation at each vertex
+};
+
+/**
+ * Shades fragment f under rule: none gives kd; flat ShadeFlat; gouraud
+ * ShadeVertex at each vertex, mixed by the weights; phong ShadeFragment with
+ * the interpolated normal, falling back to the face normal turned towards
+ * the viewer. Back faces light with their normals flipped.
+ */
+ShadedFragment ShadeTriangleFragment(
+  const IlluminationInputs& in, Shading rule, const TriangleFragment& f);
+
+/**
+ * The terms mixed by weights w: every vector, number and colour; a flag
+ * set where any vertex's is.
+ */
+IlluminationTerms MixTerms(
+  const std::array<IlluminationTerms, 3>& terms, const std::array<double, 3>& w);
+}
+
+#endif

@@ -4,6 +4,7 @@
 #include "commands/bench_command.h"
 #include "commands/compare_command.h"
 #include "commands/normals_command.h"
+#include "commands/probe_command.h"
 #include "commands/render_command.h"
 #include "commands/view_command.h"
 #include "core/errors.h"
@@ -90,6 +91,7 @@ int main(int argc, char** argv)
   shadelab::NormalsOptions normals;
   shadelab::BenchOptions bench;
   shadelab::AdviseOptions advise;
+  shadelab::ProbeOptions probe;
   std::string commandLine; // set once parsed
   const Command commands[] = {
     { [&](CLI::App& p) { return shadelab::AddRenderCommand(p, render); }, &render.Quiet,
@@ -112,6 +114,8 @@ int main(int argc, char** argv)
       [&] { return shadelab::RunBench(bench, commandLine); } },
     { [&](CLI::App& p) { return shadelab::AddAdviseCommand(p, advise); }, nullptr,
       [&] { return shadelab::RunAdvise(advise); } },
+    { [&](CLI::App& p) { return shadelab::AddProbeCommand(p, probe); }, &probe.Quiet,
+      [&] { return shadelab::RunProbe(probe); } },
   };
   std::vector<CLI::App*> added;
   for (const Command& command : commands)

@@ -2,13 +2,13 @@
 
 #include "core/errors.h"
 #include "headless/headless_renderer.h"
+#include "headless/scene_picture.h"
 #include "image/comparison_picture.h"
 #include "image/image_writer_process.h"
 #include "image/metadata.h"
 #include "scene/camera.h"
 #include "scene/comparison_panels.h"
 #include "scene/mesh_cache.h"
-#include "scene/overlays.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
@@ -83,17 +83,12 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   std::vector<FloatImage> pictures;
   for (const Panel& panel : panels)
   {
-    const SceneCache::Shown shown = scenes.Show(panel.Scene, renderer.GetRenderer());
-    if (!shown.Scene)
+    ScenePicture shot = RenderScenePicture(panel.Scene, scenes, meshes, renderer);
+    if (!shot.Error.empty())
     {
-      return ReportError(shown.Input, shown.Error);
+      return ReportError(shot.Input, shot.Error);
     }
-    const SceneOverlays overlays(panel.Scene, shown.Scene->Mesh, meshes, renderer.GetRenderer());
-    pictures.push_back(renderer.Render());
-    if (!renderer.GetError().empty())
-    {
-      return ReportError("render", renderer.GetError());
-    }
+    pictures.push_back(std::move(shot.Picture));
   }
 
   std::vector<ComparisonCell> cells;

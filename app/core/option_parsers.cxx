@@ -120,6 +120,22 @@ ImageSize ParseSize(const std::string& text)
   return { width, height };
 }
 
+Pixel ParsePixel(const std::string& text)
+{
+  const auto whole = [](const std::string& part, int& value)
+  {
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return !part.empty() && error == std::errc() && end == part.data() + part.size() && value >= 0;
+  };
+  const auto parts = Split(text, ',');
+  Pixel p;
+  if (parts.size() != 2 || !whole(parts[0], p.X) || !whole(parts[1], p.Y))
+  {
+    throw std::invalid_argument("'" + text + "' is not a pixel X,Y (whole numbers from 0)");
+  }
+  return p;
+}
+
 std::string RenderedSize(const SceneOptions& o, ImageSize& rendered)
 {
   const long long n = o.Supersampling;

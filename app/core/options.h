@@ -99,6 +99,13 @@ struct ImageSize
   int Height = 768;
 };
 
+/** A pixel of a picture: X from the left, Y from the top, from 0. */
+struct Pixel
+{
+  int X = 0;
+  int Y = 0;
+};
+
 /** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
 struct NormalsSettings
 {
@@ -188,6 +195,7 @@ Vec3 ParseDirection(const std::string& text); // a Vec3 of non-zero length
 double ParseNonNegative(const std::string& text);
 Rgb ParseRgb(const std::string& text);
 ImageSize ParseSize(const std::string& text);
+Pixel ParsePixel(const std::string& text); // "X,Y", each a whole number >= 0
 Light ParseLight(const std::string& text);
 double ParseNumber(const std::string& text);
 

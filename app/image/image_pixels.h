@@ -29,6 +29,14 @@ struct FloatImage
  */
 FloatImage BoxAverage(const FloatImage& image, int n);
 
+/** Pixel (x, y) of image, y from the top, as RGB. */
+inline Rgb PixelRgb(const FloatImage& image, int x, int y)
+{
+  const float* p =
+    image.Rgba.data() + (static_cast<size_t>(image.Height - 1 - y) * image.Width + x) * 4;
+  return { p[0], p[1], p[2] };
+}
+
 /** The pixel type that Auto means for path: float for EXR, HDR and PFM, else 8-bit. */
 PixelType ResolvePixelType(const std::string& path, PixelType requested);
 
@@ -60,17 +68,18 @@ std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
   return out;
 }
 
-/** round(scale*clamp(I, 0, 1)), the contract's rule for integer files, top-down as ToTopDown. */
+/** round(scale*clamp(v, 0, 1)): the contract's rule for integer files; NaN lands on 0. */
+inline double Quantised(double v, double scale)
+{
+  const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0; // NaN compares false
+  return std::floor(scale * clamped + 0.5);
+}
+
+/** The picture through Quantised, top-down as ToTopDown. */
 template <typename T>
 std::vector<T> Quantise(const FloatImage& image, double scale)
 {
-  return ToTopDown<T>(image,
-    [scale](double v)
-    {
-      // NaN compares false and lands on 0.
-      const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0;
-      return static_cast<T>(std::floor(scale * clamped + 0.5));
-    });
+  return ToTopDown<T>(image, [scale](double v) { return static_cast<T>(Quantised(v, scale)); });
 }
 }
 

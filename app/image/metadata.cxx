@@ -37,9 +37,7 @@ std::string QuoteCommandLine(int argc, const char* const* argv)
   return line;
 }
 
-namespace
-{
-nlohmann::ordered_json LightJson(const Light& light)
+nlohmann::ordered_json DescribeLight(const Light& light)
 {
   nlohmann::ordered_json j;
   j["kind"] = ToString(light.Kind);
@@ -59,13 +57,16 @@ nlohmann::ordered_json LightJson(const Light& light)
   }
   return j;
 }
+
+nlohmann::ordered_json DescribeMaterial(const Material& m)
+{
+  return { { "name", m.Name }, { "ka", m.Ka }, { "kd", m.Kd }, { "ks", m.Ks }, { "ns", m.Ns } };
 }
 
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
   const SceneOptions& o, vtkCamera* camera, const std::string& shot,
   const std::vector<std::string>& panels)
 {
-  const Material m = o.EffectiveMaterial();
   Vec3 position, focal, up;
   camera->GetPosition(position.data());
   camera->GetFocalPoint(focal.data());
@@ -85,13 +86,12 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["mesh"] = o.Mesh;
   j["shading"] = ToString(o.ShadingRule);
   j["reflection"] = ToString(o.ReflectionModel);
-  j["material"] = { { "name", m.Name }, { "ka", m.Ka }, { "kd", m.Kd }, { "ks", m.Ks },
-    { "ns", m.Ns } };
+  j["material"] = DescribeMaterial(o.EffectiveMaterial());
   j["ambient"] = o.Ambient;
   auto lights = nlohmann::ordered_json::array();
   for (const Light& light : EffectiveLights(o, position))
   {
-    lights.push_back(LightJson(light));
+    lights.push_back(DescribeLight(light));
   }
   j["lights"] = lights;
   nlohmann::ordered_json cam;

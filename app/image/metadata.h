@@ -5,6 +5,8 @@
 
 #include "core/options.h"
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +27,12 @@ std::string QuoteCommandLine(int argc, const char* const* argv);
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
   const SceneOptions& options, vtkCamera* camera, const std::string& shot = "",
   const std::vector<std::string>& panels = {});
+
+/** A light as the description writes it: kind, position, direction, color, a spot's cone. */
+nlohmann::ordered_json DescribeLight(const Light& light);
+
+/** A material as the description writes it: name, ka, kd, ks, ns. */
+nlohmann::ordered_json DescribeMaterial(const Material& material);
 }
 
 #endif

@@ -2,6 +2,8 @@
 
 #include "shadelabVec3.h"
 
+#include <vtkCamera.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,6 +46,18 @@ double SegmentDistance(
     length2 > 0 ? std::clamp(((x - a[0]) * ex + (y - a[1]) * ey) / length2, 0.0, 1.0) : 0.0;
   return std::hypot(x - (a[0] + along * ex), y - (a[1] + along * ey));
 }
+}
+
+PinholeCamera PinholeCameraOf(vtkCamera* c)
+{
+  PinholeCamera p;
+  c->GetPosition(p.Position.data());
+  c->GetFocalPoint(p.FocalPoint.data());
+  c->GetViewUp(p.ViewUp.data());
+  p.ViewAngle = c->GetViewAngle();
+  p.Orthographic = c->GetParallelProjection();
+  p.ParallelScale = c->GetParallelScale();
+  return p;
 }
 
 Ray PictureRay(const PinholeCamera& camera, int width, int height, double x, double y)
@@ -101,6 +115,19 @@ PictureTriangles::PictureTriangles(const PinholeCamera& camera, int width, int h
     const double h = dot(d, f.Right) / (scale * aspect), v = dot(d, f.Up) / scale;
     this->Projected.push_back({ (h + 1) * width / 2, (1 - v) * height / 2, depth });
   }
+  for (const TriangleCorners& t : this->Triangles)
+  {
+    const auto& a = this->Projected[t[0]];
+    const auto& b = this->Projected[t[1]];
+    const auto& c = this->Projected[t[2]];
+    // A margin far below a pixel and far above the rounding of two routes
+    // to the same point (the projection here, the ray's hit there).
+    constexpr double Margin = 1e-6;
+    this->Footprints.push_back({ std::min({ a[0], b[0], c[0] }) - Margin,
+      std::max({ a[0], b[0], c[0] }) + Margin, std::min({ a[1], b[1], c[1] }) - Margin,
+      std::max({ a[1], b[1], c[1] }) + Margin, std::min({ a[2], b[2], c[2] }),
+      camera.Orthographic || (a[2] > 0 && b[2] > 0 && c[2] > 0) });
+  }
 }
 
 Ray PictureTriangles::RayAt(double x, double y) const
@@ -114,10 +141,6 @@ double PictureTriangles::EdgeDistance(std::size_t t, double x, double y) const
   const auto& a = this->Projected[c[0]];
   const auto& b = this->Projected[c[1]];
   const auto& d = this->Projected[c[2]];
-  if (!this->Camera.Orthographic && !(a[2] > 0 && b[2] > 0 && d[2] > 0))
-  {
-    return std::numeric_limits<double>::infinity();
-  }
   return std::min(
     { SegmentDistance(x, y, a, b), SegmentDistance(x, y, b, d), SegmentDistance(x, y, d, a) });
 }
@@ -129,6 +152,11 @@ PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
   double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < this->Triangles.size(); ++t)
   {
+    const Footprint& f = this->Footprints[t];
+    if (f.Projects && (x < f.Left || x > f.Right || y < f.Top || y > f.Bottom))
+    {
+      continue;
+    }
     const TriangleCorners& c = this->Triangles[t];
     const TriangleHit h =
       IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
@@ -151,10 +179,15 @@ PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
   hit.EdgeDistance = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < this->Triangles.size(); ++t)
   {
-    const TriangleCorners& c = this->Triangles[t];
-    const double closest =
-      std::min({ this->Projected[c[0]][2], this->Projected[c[1]][2], this->Projected[c[2]][2] });
-    if (closest < depth || static_cast<std::int64_t>(t) == hit.Triangle)
+    const Footprint& f = this->Footprints[t];
+    if (!f.Projects || !(f.Nearest < depth || static_cast<std::int64_t>(t) == hit.Triangle))
+    {
+      continue;
+    }
+    // The box is no nearer than any edge: skip triangles it puts too far.
+    const double dx = std::max({ f.Left - x, x - f.Right, 0.0 });
+    const double dy = std::max({ f.Top - y, y - f.Bottom, 0.0 });
+    if (dx * dx + dy * dy < hit.EdgeDistance * hit.EdgeDistance)
     {
       hit.EdgeDistance = std::min(hit.EdgeDistance, this->EdgeDistance(t, x, y));
     }

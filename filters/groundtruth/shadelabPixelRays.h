@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+class vtkCamera;
+
 namespace shadelab
 {
 /** A camera as vtkCamera defines one (no shear, window centre 0). */
@@ -26,6 +28,9 @@ struct PinholeCamera
   bool Orthographic = false;
   double ParallelScale = 1; // orthographic: half the view height in world units
 };
+
+/** vtkCamera's position, focal point, view-up, view angle and projection. */
+PinholeCamera PinholeCameraOf(vtkCamera* camera);
 
 struct Ray
 {
@@ -84,9 +89,18 @@ public:
   const std::vector<TriangleCorners>& GetTriangles() const { return this->Triangles; }
 
 private:
-  // Pixels from (x, y) to the boundary of triangle t's projection; infinite
-  // where a corner is behind a perspective camera.
+  // Pixels from (x, y) to the boundary of triangle t's projection.
   double EdgeDistance(std::size_t t, double x, double y) const;
+
+  // A triangle's projection: its bounding box in the picture (the ray
+  // through a point outside it misses the triangle), its nearest corner's
+  // depth, and whether every corner is ahead of a perspective camera (else
+  // neither box nor edges are known).
+  struct Footprint
+  {
+    double Left, Right, Top, Bottom, Nearest;
+    bool Projects;
+  };
 
   PinholeCamera Camera;
   int Width, Height;
@@ -94,6 +108,7 @@ private:
   std::vector<TriangleCorners> Triangles;
   Vec3 Forward;
   std::vector<std::array<double, 3>> Projected; // per point: x, y, depth along the view
+  std::vector<Footprint> Footprints;            // per triangle
 };
 }
 

@@ -21,18 +21,6 @@ using namespace shadelab::vec3;
 
 namespace
 {
-PinholeCamera FromVtk(vtkCamera* c)
-{
-  PinholeCamera p;
-  c->GetPosition(p.Position.data());
-  c->GetFocalPoint(p.FocalPoint.data());
-  c->GetViewUp(p.ViewUp.data());
-  p.ViewAngle = c->GetViewAngle();
-  p.Orthographic = c->GetParallelProjection();
-  p.ParallelScale = c->GetParallelScale();
-  return p;
-}
-
 // Where vtkCamera puts world point p in a width x height picture: its
 // composite projection, then the viewport, y from the top.
 std::array<double, 2> VtkPicturePoint(vtkCamera* c, int width, int height, const Vec3& p)
@@ -76,7 +64,7 @@ TEST(PixelRays, PassThroughWhatVtkCameraProjectsThere)
       camera->Elevation(-10);
       camera->OrthogonalizeViewUp();
       camera->Zoom(1.5);
-      const PinholeCamera pinhole = FromVtk(camera);
+      const PinholeCamera pinhole = PinholeCameraOf(camera);
       for (int i = 0; i < 200; ++i)
       {
         const Vec3 p{ u(random), u(random), u(random) };

@@ -1,0 +1,97 @@
+#include "probe/pixel_probe.h"
+
+#include "scene/scene.h"
+
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+namespace shadelab
+{
+namespace
+{
+std::vector<Vec3> PointsOf(vtkPolyData* mesh)
+{
+  std::vector<Vec3> points(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    mesh->GetPoint(i, points[i].data());
+  }
+  return points;
+}
+
+// The mesh's triangles in cell order (shadelab's readers give triangles only).
+std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
+{
+  std::vector<TriangleCorners> triangles;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    triangles.push_back({ ids[0], ids[1], ids[2] });
+  }
+  return triangles;
+}
+}
+
+PixelProber::PixelProber(
+  const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size)
+  : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))
+{
+  Vec3 eye;
+  camera->GetPosition(eye.data());
+  PixelProbe& s = this->Scene;
+  s.Size = size;
+  s.Rule = options.ShadingRule;
+  s.Model = options.ReflectionModel;
+  s.Surface = options.EffectiveMaterial();
+  s.Ia = options.Ambient;
+  s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
+  s.Background = options.Background;
+  s.Orthographic = camera->GetParallelProjection();
+  this->In = WorldIllumination(options, s.Lights);
+  this->In.Orthographic = camera->GetParallelProjection();
+  this->In.Eye = eye;
+  camera->GetDirectionOfProjection(this->In.ViewDirection.data());
+  if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
+  {
+    s.HasNormals = true;
+    this->Normals.resize(normals->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      normals->GetTuple(i, this->Normals[i].data());
+    }
+  }
+}
+
+PixelProbe PixelProber::Probe(Pixel at) const
+{
+  PixelProbe p = this->Scene;
+  p.At = at;
+  const PictureTriangles::Hit hit = this->Triangles.Under(at.X + 0.5, at.Y + 0.5);
+  p.EdgeDistance = hit.EdgeDistance;
+  if (hit.Triangle < 0)
+  {
+    return p;
+  }
+  p.Hit = true;
+  p.Triangle = hit.Triangle;
+  const TriangleCorners& corners = this->Triangles.GetTriangles()[hit.Triangle];
+  for (int k = 0; k < 3; ++k)
+  {
+    p.Corners[k] = corners[k];
+    p.Fragment.Positions[k] = this->Triangles.GetPoints()[corners[k]];
+    if (p.HasNormals)
+    {
+      p.Fragment.Normals[k] = this->Normals[corners[k]];
+    }
+  }
+  p.Fragment.Weights = hit.Weights;
+  p.Fragment.Front = hit.Front;
+  p.Shaded = ShadeTriangleFragment(this->In, p.Rule, p.Fragment);
+  return p;
+}
+}

@@ -1,0 +1,69 @@
+// Explaining a pixel (DESIGN.md, "Explaining a pixel"): which triangle lies
+// under pixel (X, Y) of the picture a scene makes, and how the lecture's
+// equation gives its colour there under the scene's rule, from the mesh and
+// camera as `render` draws them. What `shadelab probe` prints; the window
+// can ask the same of a click.
+#ifndef shadelab_pixel_probe_h
+#define shadelab_pixel_probe_h
+
+#include "core/options.h"
+#include "shadelabPixelRays.h"
+#include "shadelabTriangleFragment.h"
+
+#include <vtkType.h>
+
+#include <array>
+#include <vector>
+
+class vtkCamera;
+class vtkPolyData;
+
+namespace shadelab
+{
+/** One pixel explained. */
+struct PixelProbe
+{
+  Pixel At;
+  ImageSize Size;
+  Shading Rule = Shading::Phong;
+  Reflection Model = Reflection::BlinnPhong;
+  Material Surface; // after the overrides
+  Rgb Ia{};
+  std::vector<Light> Lights; // as lit, in world coordinates
+  Rgb Background{};
+  bool Orthographic = false;
+  Rgb Rendered{}; // the picture's value at the pixel: the caller's to set
+
+  // The ray through the pixel's centre meets the mesh; the rest holds only then.
+  bool Hit = false;
+  vtkIdType Triangle = -1;            // its cell index
+  std::array<vtkIdType, 3> Corners{}; // its point indices in draw order: the last provokes
+  bool HasNormals = false;            // the mesh has vertex normals (Fragment.Normals)
+  double EdgeDistance = 0;            // pixels to an edge that may cover the pixel
+  TriangleFragment Fragment;          // positions, normals, weights, facing (world)
+  ShadedFragment Shaded;              // the rule's value and terms: the oracle
+};
+
+/** A scene's picture, ready to explain pixel after pixel. */
+class PixelProber
+{
+public:
+  /**
+   * `mesh` is the mesh as read (BuiltScene::Mesh: triangles, with the
+   * vertex normals the rule uses), `camera` the renderer's after the scene
+   * was built, `size` the picture's: what `render` draws for options.
+   */
+  PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size);
+
+  /** The pixel explained; its Rendered value left at 0. */
+  PixelProbe Probe(Pixel at) const;
+
+private:
+  PixelProbe Scene; // what every pixel shares
+  IlluminationInputs In;
+  PictureTriangles Triangles;
+  std::vector<Vec3> Normals; // per point, when the mesh has them
+};
+}
+
+#endif

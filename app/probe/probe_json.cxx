@@ -1,0 +1,114 @@
+#include "probe/probe_json.h"
+
+#include "image/image_pixels.h"
+#include "image/metadata.h"
+
+namespace shadelab
+{
+namespace
+{
+using nlohmann::ordered_json;
+
+// A light as the scene gives it and its terms at the point.
+ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model)
+{
+  ordered_json j = DescribeLight(light);
+  j["L"] = t.L;
+  if (light.Kind == LightKind::Spot)
+  {
+    j["cos_angle"] = t.SpotCos;
+    j["in_cone"] = t.Reaches;
+    j["spot_factor"] = t.SpotFactor;
+  }
+  j["Il"] = t.Il;
+  j["n_dot_l"] = t.NdotL;
+  j["lit"] = t.Lit;
+  j["diffuse"] = t.DiffuseTerm;
+  j[model == Reflection::BlinnPhong ? "H" : "R"] = t.HR;
+  j["base"] = t.Base;
+  j["power"] = t.Power;
+  j["specular"] = t.SpecularTerm;
+  return j;
+}
+
+// The equation at a point: N, V, ka*Ia and each light's terms.
+void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
+{
+  j["normal"] = t.N;
+  j["view"] = t.V;
+  j["ambient"] = t.Ambient;
+  ordered_json lights = ordered_json::array();
+  for (std::size_t l = 0; l < t.Lights.size(); ++l)
+  {
+    lights.push_back(LightJson(p.Lights[l], t.Lights[l], p.Model));
+  }
+  j["lights"] = lights;
+}
+
+ordered_json VertexJson(const PixelProbe& p, int k)
+{
+  ordered_json v;
+  v["index"] = p.Corners[k];
+  v["weight"] = p.Fragment.Weights[k];
+  v["position"] = p.Fragment.Positions[k];
+  if (p.HasNormals)
+  {
+    v["mesh_normal"] = p.Fragment.Normals[k];
+  }
+  if (p.Rule == Shading::Gouraud)
+  {
+    const IlluminationTerms& t = p.Shaded.Vertices[k];
+    v["color"] = t.Total();
+    AddTerms(v, p, t);
+  }
+  return v;
+}
+}
+
+ordered_json ProbeJson(const PixelProbe& p)
+{
+  ordered_json j;
+  j["pixel"] = { p.At.X, p.At.Y };
+  j["size"] = { p.Size.Width, p.Size.Height };
+  j["hit"] = p.Hit;
+  j["shading"] = ToString(p.Rule);
+  j["reflection"] = ToString(p.Model);
+  j["rendered"] = p.Rendered;
+  j["stored"] = { static_cast<int>(Quantised(p.Rendered[0], 255)),
+    static_cast<int>(Quantised(p.Rendered[1], 255)),
+    static_cast<int>(Quantised(p.Rendered[2], 255)) };
+  j["edge_distance"] = p.EdgeDistance;
+  if (!p.Hit)
+  {
+    j["background"] = p.Background;
+    return j;
+  }
+  j["oracle"] = p.Shaded.Color;
+  j["triangle"] = p.Triangle;
+  j["front_facing"] = p.Fragment.Front;
+  j["material"] = DescribeMaterial(p.Surface);
+  j["ia"] = p.Ia;
+  if (p.Rule == Shading::None)
+  {
+    j["position"] = p.Shaded.Point;
+    j["unlit"] = p.Shaded.Color;
+  }
+  else
+  {
+    j["position"] = p.Shaded.Terms.P;
+    AddTerms(j, p, p.Shaded.Terms);
+  }
+  if (p.Rule == Shading::Flat)
+  {
+    j["provoking_vertex"] = p.Corners[2];
+    j["face_normal"] = p.Shaded.FaceNormal;
+  }
+  ordered_json vertices = ordered_json::array();
+  for (int k = 0; k < 3; ++k)
+  {
+    vertices.push_back(VertexJson(p, k));
+  }
+  j["vertices"] = vertices;
+  return j;
+}
+}

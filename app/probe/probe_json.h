@@ -1,0 +1,15 @@
+// A pixel explained, as JSON: the contract of `shadelab probe --json`
+// (DESIGN.md, "Explaining a pixel"; README.md lists every key).
+#ifndef shadelab_probe_json_h
+#define shadelab_probe_json_h
+
+#include "probe/pixel_probe.h"
+
+#include <nlohmann/json.hpp>
+
+namespace shadelab
+{
+nlohmann::ordered_json ProbeJson(const PixelProbe& probe);
+}
+
+#endif

@@ -1,0 +1,217 @@
+#include "probe/probe_text.h"
+
+#include "core/report_text.h"
+#include "image/image_pixels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace shadelab
+{
+std::string ProbeNumber(double value)
+{
+  return FormatNumber("%.6g", value);
+}
+
+std::string ProbeTriple(const std::array<double, 3>& v)
+{
+  return "(" + ProbeNumber(v[0]) + ", " + ProbeNumber(v[1]) + ", " + ProbeNumber(v[2]) + ")";
+}
+
+namespace
+{
+// The text's lines: a quantity, then what it is in a column of its own.
+class Lines
+{
+public:
+  void Add(const std::string& indent, const std::string& quantity, const std::string& what = "")
+  {
+    std::string line = indent + quantity;
+    if (!what.empty())
+    {
+      line.resize(std::max<std::size_t>(line.size() + 2, 44), ' ');
+      line += what;
+    }
+    this->Text << line << "\n";
+  }
+  std::string Str() const { return this->Text.str(); }
+
+private:
+  std::ostringstream Text;
+};
+
+std::string LightName(const Light& l, std::size_t index)
+{
+  std::string name = "light " + std::to_string(index + 1) + ": " + ToString(l.Kind);
+  if (l.Kind != LightKind::Directional)
+  {
+    name += " at " + ProbeTriple(l.Position);
+  }
+  if (l.Kind != LightKind::Point)
+  {
+    name += " shining along " + ProbeTriple(l.Direction);
+  }
+  if (l.Kind == LightKind::Spot)
+  {
+    name +=
+      ", half-angle " + ProbeNumber(l.HalfAngleDeg) + " deg, exponent " + ProbeNumber(l.Exponent);
+  }
+  return name + ", colour " + ProbeTriple(l.Color);
+}
+
+// One light's terms: L, the spot's cone, N.L and the diffuse term, H or R,
+// the base and its power, the specular term.
+void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::size_t index,
+  const LightTerms& t)
+{
+  const Light& light = p.Lights[index];
+  const bool blinn = p.Model == Reflection::BlinnPhong;
+  out.Add(indent, LightName(light, index));
+  const std::string in = indent + "  ";
+  out.Add(in, "L = " + ProbeTriple(t.L),
+    light.Kind == LightKind::Directional ? "minus the direction it shines along"
+                                         : "normalize(light - P)");
+  if (light.Kind == LightKind::Spot)
+  {
+    out.Add(in, "cos angle = " + ProbeNumber(t.SpotCos),
+      t.Reaches ? "inside the cone (cos half-angle " +
+          ProbeNumber(std::cos(light.HalfAngleDeg * 3.14159265358979323846 / 180)) + ")"
+                : "outside the cone: no light");
+    out.Add(in, "spot factor = " + ProbeNumber(t.SpotFactor), "(cos angle)^e, 1 for e = 0");
+  }
+  out.Add(in, "Il = " + ProbeTriple(t.Il), "the light's colour reaching P");
+  out.Add(in, "N.L = " + ProbeNumber(t.NdotL),
+    !t.Reaches      ? "the light does not reach P: no diffuse, no specular"
+      : t.Lit       ? "> 0: lit"
+      : t.NdotL > 0 ? "not above 1e-5, taken as 0: no diffuse, no specular"
+                    : "<= 0: no diffuse, no specular");
+  out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), "diffuse");
+  const std::string base = blinn ? "N.H" : "V.R";
+  out.Add(
+    in, (blinn ? "H = " : "R = ") + ProbeTriple(t.HR), blinn ? "normalize(L + V)" : "2(N.L)N - L");
+  const bool undefinedH = blinn && t.HR == Vec3{ 0, 0, 0 };
+  out.Add(in, base + " = " + ProbeNumber(t.Base),
+    t.Specular     ? "the specular base, > 0"
+      : !t.Lit     ? "no specular where there is no diffuse"
+      : undefinedH ? "H undefined (L = -V): no specular"
+                   : "<= 0: no specular");
+  out.Add(in, "(" + base + ")^ns = " + ProbeNumber(t.Power), "ns = " + ProbeNumber(p.Surface.Ns));
+  out.Add(in, "ks*Il*(" + base + ")^ns = " + ProbeTriple(t.SpecularTerm), "specular");
+}
+
+// The equation at a point: N, V, ka*Ia, the lights.
+void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
+  const IlluminationTerms& t, const std::string& whatN)
+{
+  out.Add(indent, "N = " + ProbeTriple(t.N), whatN);
+  out.Add(indent, "V = " + ProbeTriple(t.V),
+    p.Orthographic ? "towards the viewer: minus the view direction" : "normalize(eye - P)");
+  out.Add(indent, "ka*Ia = " + ProbeTriple(t.Ambient), "ambient");
+  for (std::size_t l = 0; l < t.Lights.size(); ++l)
+  {
+    AddLight(out, indent, p, l, t.Lights[l]);
+  }
+}
+
+std::string Point(vtkIdType id)
+{
+  return "point " + std::to_string(id);
+}
+
+// What phong lit with: the interpolated normal, unless it was too short.
+std::string PhongNormal(const PixelProbe& p)
+{
+  Vec3 interpolated{ 0, 0, 0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      interpolated[c] += p.Fragment.Weights[k] * p.Fragment.Normals[k][c];
+    }
+  }
+  const double length = std::sqrt(interpolated[0] * interpolated[0] +
+    interpolated[1] * interpolated[1] + interpolated[2] * interpolated[2]);
+  if (!(length > 1e-6))
+  {
+    return "the face normal, towards the viewer: w0*N0 + w1*N1 + w2*N2 is too short";
+  }
+  return std::string("normalize(w0*N0 + w1*N1 + w2*N2)") +
+    (p.Fragment.Front ? "" : ", flipped: a back face");
+}
+}
+
+std::string ProbeText(const PixelProbe& p)
+{
+  Lines out;
+  const std::string pixel = "pixel (" + std::to_string(p.At.X) + ", " + std::to_string(p.At.Y) +
+    ") of the " + std::to_string(p.Size.Width) + "x" + std::to_string(p.Size.Height) + " picture";
+  const std::string rendered = "rendered = " + ProbeTriple(p.Rendered);
+  const std::string stored = "stored = (" + ProbeNumber(Quantised(p.Rendered[0], 255)) + ", " +
+    ProbeNumber(Quantised(p.Rendered[1], 255)) + ", " + ProbeNumber(Quantised(p.Rendered[2], 255)) +
+    ")";
+  if (!p.Hit)
+  {
+    out.Add("",
+      pixel + ": no triangle under its centre, the nearest edge " + ProbeNumber(p.EdgeDistance) +
+        " px away");
+    out.Add("", "background = " + ProbeTriple(p.Background));
+    out.Add("", rendered, "the float render at the pixel");
+    out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
+    return out.Str();
+  }
+  const Material& m = p.Surface;
+  out.Add("",
+    pixel + ": triangle " + std::to_string(p.Triangle) + " (points " +
+      std::to_string(p.Corners[0]) + ", " + std::to_string(p.Corners[1]) + ", " +
+      std::to_string(p.Corners[2]) + "), " + (p.Fragment.Front ? "front" : "back") + " face, " +
+      ProbeNumber(p.EdgeDistance) + " px from an edge that may cover it");
+  out.Add("",
+    std::string("shading ") + ToString(p.Rule) + ", reflection " +
+      (p.Model == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") + "; material " + m.Name +
+      ": ka " + ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) +
+      ", ns " + ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
+  out.Add("", "weights = " + ProbeTriple(p.Fragment.Weights),
+    "barycentric, perspective-correct, of the triangle's vertices");
+  const IlluminationTerms& t = p.Shaded.Terms;
+  std::string oracle = "I = ka*Ia + sum of the lights' terms";
+  switch (p.Rule)
+  {
+    case Shading::None:
+      out.Add("", "P = " + ProbeTriple(p.Shaded.Point), "the surface point under the pixel centre");
+      oracle = "I = kd, no illumination";
+      break;
+    case Shading::Flat:
+      out.Add("", "P = P2 = " + ProbeTriple(t.P),
+        "the provoking vertex: the triangle's last, " + Point(p.Corners[2]));
+      AddTerms(out, "", p, t,
+        std::string("the face normal normalize((P1 - P0) x (P2 - P0))") +
+          (p.Fragment.Front ? "" : ", flipped: a back face"));
+      break;
+    case Shading::Gouraud:
+      out.Add("", "P = " + ProbeTriple(p.Shaded.Point), "the surface point under the pixel centre");
+      for (int k = 0; k < 3; ++k)
+      {
+        const IlluminationTerms& v = p.Shaded.Vertices[k];
+        out.Add("",
+          "vertex " + std::to_string(k) + " (" + Point(p.Corners[k]) + "), weight " +
+            ProbeNumber(p.Fragment.Weights[k]) + ": the equation there");
+        out.Add("  ", "P" + std::to_string(k) + " = " + ProbeTriple(v.P));
+        AddTerms(out, "  ", p, v,
+          std::string("its vertex normal, unit") + (p.Fragment.Front ? "" : ", flipped"));
+        out.Add(
+          "  ", "C" + std::to_string(k) + " = " + ProbeTriple(v.Total()), "the vertex's colour");
+      }
+      oracle = "I = w0*C0 + w1*C1 + w2*C2";
+      break;
+    case Shading::Phong:
+      out.Add("", "P = " + ProbeTriple(t.P), "the surface point under the pixel centre");
+      AddTerms(out, "", p, t, PhongNormal(p));
+      break;
+  }
+  out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
+  out.Add("", rendered, "the float render at the pixel");
+  out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
+  return out.Str();
+}
+}

@@ -1,7 +1,7 @@
-// libFuzzer target: the command line's value parsers (colours,
-// points, lights, sizes, numbers, shards, comparison modes and --diff). The first byte picks the
-// parser, the rest is the text. They may only answer or throw std::invalid_argument; what they
-// accept must be in range.
+// libFuzzer target: the command line's value parsers (colours, points,
+// lights, sizes, numbers, shards, comparison modes and --diff, pixels). The
+// first byte picks the parser, the rest is the text. They may only answer or
+// throw std::invalid_argument; what they accept must be in range.
 #include "core/options.h"
 #include "scene/comparison_panels.h"
 
@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try
   {
-    switch (data[0] % 7)
+    switch (data[0] % 8)
     {
       case 0:
       {
@@ -92,6 +92,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (c.Modes.empty() || n != static_cast<int>(c.Modes.size()) * (o.Components ? 4 : 1) ||
           (!o.Difference.empty() &&
             (c.DifferenceA < 0 || c.DifferenceA >= n || c.DifferenceB < 0 || c.DifferenceB >= n)))
+        {
+          std::abort();
+        }
+        break;
+      }
+      case 7:
+      {
+        const shadelab::Pixel p = shadelab::ParsePixel(text);
+        if (p.X < 0 || p.Y < 0)
         {
           std::abort();
         }

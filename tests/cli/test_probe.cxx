@@ -1,0 +1,481 @@
+// `shadelab probe` (DESIGN.md, "Explaining a pixel"), pixel by pixel over
+// the bunny (perspective) and the teapot (orthographic), for each rule and
+// both reflection models, under point, directional and spot lights: the
+// oracle is the sum of its terms, `rendered` is render's float picture at
+// the pixel bit for bit, and away from edges the oracle is within the
+// oracle tests' tolerance of it; off the mesh, the background. Gouraud's
+// weights and vertex colours make the oracle; flat's face normal and
+// provoking vertex are the mesh's. The text shows the numbers of the JSON.
+// Bad input is one line.
+#include "cli_test_support.h"
+#include "oracle_scene.h" // the oracle tests' tolerance and edge margin
+#include "vtkShadelabMeshReader.h"
+
+#include <vtkCellArray.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+using namespace shadelab_test;
+using nlohmann::json;
+
+namespace
+{
+const std::string Bunny = TestMesh("stanford-bunny.obj").string();
+const std::string Teapot = TestMesh("teapot.obj").string();
+const Rgb Background{ 0.1, 0.2, 0.3 };
+
+// The bunny spans about 0.16 units around (-0.02, 0.11, 0), seen from +Z.
+// Two points (one behind, so that N.L <= 0 happens), two directional
+// lights, a soft and a hard-edged spot whose cones' edges cross it.
+const std::vector<std::string> BunnyLights{ "--light", "point:0.15,0.25,0.2", "--light",
+  "point:-0.2,0.05,-0.3:0.3,0.3,0.6", "--light", "directional:-0.3,-0.5,-1:0.5,0.5,0.4", "--light",
+  "directional:1,0.2,0.1:0.2,0.4,0.2", "--light", "spot:-0.02,0.11,0.3:0,0,-1:4:3:0.6,0.5,1",
+  "--light", "spot:0.05,0.2,0.25:-0.3,-0.3,-1:6:0:1,0.3,0.3" };
+// The teapot spans 6.4 x 3.2 x 4 units from the origin up.
+const std::vector<std::string> TeapotLights{ "--light", "point:4,6,5", "--light",
+  "point:-5,1,-4:0.4,0.2,0.2", "--light", "directional:0.3,-1,-0.5:0.5,0.6,0.5", "--light",
+  "spot:0,8,0:0,-1,0:20:2:0.8,0.8,1", "--light", "spot:-6,3,6:1,-0.3,-1:6:0:1,0.4,0.2" };
+
+struct ProbeCase
+{
+  std::string Name;
+  std::string Mesh;
+  Shading Rule;
+  std::vector<std::string> Options; // for render and probe alike, the rule's among them
+  int Width, Height;
+};
+
+void PrintTo(const ProbeCase& c, std::ostream* os)
+{
+  *os << c.Name;
+}
+
+std::vector<ProbeCase> Cases()
+{
+  std::vector<ProbeCase> cases;
+  for (Shading rule : LitRules)
+  {
+    for (Reflection model : { Reflection::BlinnPhong, Reflection::Phong })
+    {
+      ProbeCase c{ std::string("bunny_") + ToString(rule) + "_" + ToString(model), Bunny, rule,
+        { "--shading", ToString(rule), "--reflection", ToString(model), "--material", "gold",
+          "--zoom", "4" },
+        640, 480 };
+      c.Options.insert(c.Options.end(), BunnyLights.begin(), BunnyLights.end());
+      cases.push_back(c);
+    }
+    ProbeCase c{ std::string("teapot_orthographic_") + ToString(rule), Teapot, rule,
+      { "--shading", ToString(rule), "--material", "polished-copper", "--orthographic", "--view",
+        "iso", "--zoom", "1.6" },
+      480, 400 };
+    c.Options.insert(c.Options.end(), TeapotLights.begin(), TeapotLights.end());
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+std::vector<std::string> Common(const ProbeCase& c)
+{
+  std::vector<std::string> args{ c.Mesh, "--size",
+    std::to_string(c.Width) + "x" + std::to_string(c.Height), "--background", Triple(Background) };
+  args.insert(args.end(), c.Options.begin(), c.Options.end());
+  return args;
+}
+
+// `shadelab probe` on pixels, --json: one object per pixel.
+std::vector<json> Probe(const std::vector<std::string>& common,
+  const std::vector<std::array<int, 2>>& pixels, std::string& error)
+{
+  std::vector<std::string> args{ "probe", "--json" };
+  args.insert(args.end(), common.begin(), common.end());
+  for (const auto& [x, y] : pixels)
+  {
+    args.push_back("--pixel");
+    args.push_back(std::to_string(x) + "," + std::to_string(y));
+  }
+  // Spawned with its words as they are: thousands of pixels are more than
+  // a shell's command string holds.
+  TempDir dir;
+  const int status = WaitShadelab(StartShadelab(args, dir / "out", dir / "err"));
+  std::vector<json> lines;
+  std::ifstream out(dir / "out"), err(dir / "err");
+  if (status != 0)
+  {
+    error = "probe failed (" + std::to_string(status) +
+      "): " + std::string(std::istreambuf_iterator<char>(err), {});
+    return lines;
+  }
+  for (std::string line; std::getline(out, line);)
+  {
+    lines.push_back(json::parse(line)); // throws, failing the test, on malformed JSON
+  }
+  return lines;
+}
+
+Rgb Vec(const json& v)
+{
+  return { v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>() };
+}
+
+// ambient + the lights' diffuse and specular terms.
+Rgb TermsSum(const json& at)
+{
+  Rgb sum = Vec(at.at("ambient"));
+  for (const json& light : at.at("lights"))
+  {
+    sum = sum + Vec(light.at("diffuse")) + Vec(light.at("specular"));
+  }
+  return sum;
+}
+
+// Whether a light's case at a point is within 1e-5 of switching where a
+// term jumps (N.L against the oracle's 1e-5, a spot's cosine against its
+// cut-off): the GPU's float N.L and cosine are some 1e-6 off the oracle's,
+// so there the case, and the term, may go the other way. (The specular
+// base's case, base > 0, moves nothing for ns > 0: base^ns is 0 there.)
+bool NearACase(const json& lights)
+{
+  constexpr double Near = 1e-5;
+  for (const json& l : lights)
+  {
+    bool near = std::abs(l.at("n_dot_l").get<double>() - 1e-5) < Near;
+    if (l.at("kind") == "spot")
+    {
+      const double cutoff = std::cos(l.at("half_angle_deg").get<double>() * Pi / 180);
+      near = near || std::abs(l.at("cos_angle").get<double>() - cutoff) < Near;
+    }
+    if (near)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The triangles of the mesh as shadelab's reader gives them, to hold the
+// probe's triangle against.
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+std::array<vtkIdType, 3> Corners(vtkPolyData* mesh, vtkIdType cell)
+{
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  mesh->GetPolys()->GetCellAtId(cell, n, ids);
+  return { ids[0], ids[1], ids[2] };
+}
+
+Vec3 PointOf(vtkPolyData* mesh, vtkIdType id)
+{
+  Vec3 p;
+  mesh->GetPoint(id, p.data());
+  return p;
+}
+
+void ExpectNear(const Vec3& got, const Vec3& want, double tolerance, const std::string& what)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(got[c], want[c], tolerance) << what << " " << Show(got) << " " << Show(want);
+  }
+}
+
+class ProbePixels : public testing::TestWithParam<ProbeCase>
+{
+};
+}
+
+// Every 7th pixel of each row and column.
+TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
+{
+  const ProbeCase& c = GetParam();
+  TempDir dir;
+  std::vector<std::string> render{ "render", "-o", (dir / "out.exr").string() };
+  const std::vector<std::string> common = Common(c);
+  render.insert(render.end(), common.begin(), common.end());
+  const RunResult rendered = RunShadelab(render);
+  ASSERT_EQ(rendered.ExitCode, 0) << rendered.Stderr;
+  const Image picture = ReadImage(dir / "out.exr");
+  ASSERT_EQ(picture.Width, c.Width);
+
+  std::vector<std::array<int, 2>> pixels;
+  for (int y = 1; y < c.Height; y += 7)
+  {
+    for (int x = 2; x < c.Width; x += 7)
+    {
+      pixels.push_back({ x, y });
+    }
+  }
+  std::string error;
+  const std::vector<json> probes = Probe(common, pixels, error);
+  ASSERT_EQ(error, "");
+  ASSERT_EQ(probes.size(), pixels.size());
+
+  const auto mesh = ReadMesh(c.Mesh);
+  const bool flat = c.Rule == Shading::Flat, gouraud = c.Rule == Shading::Gouraud;
+  std::size_t compared = 0, background = 0;
+  double worst = 0; // the largest |rendered - oracle| in units of the bound
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    const json& p = probes[i];
+    const auto [x, y] = pixels[i];
+    SCOPED_TRACE(PixelName(x, y));
+    ASSERT_EQ(p.at("pixel"), json({ x, y }));
+    // rendered: render's float output, bit for bit; stored: its 8-bit value.
+    const Rgb got = Vec(p.at("rendered"));
+    const Rgb want = Got(picture, x, y);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(static_cast<float>(got[k]), static_cast<float>(want[k]));
+      EXPECT_EQ(p.at("stored").at(k).get<int>(), std::lround(255 * std::clamp(got[k], 0.0, 1.0)));
+    }
+    const double edge = p.at("edge_distance").get<double>();
+    if (!p.at("hit").get<bool>())
+    {
+      EXPECT_EQ(Vec(p.at("background")), Background);
+      EXPECT_FALSE(p.contains("oracle") || p.contains("position") || p.contains("lights"));
+      if (edge > EdgeMargin)
+      {
+        ++background;
+        ExpectNear(got, Background, 1e-7, "off the mesh"); // float(0.1) is 0.1 to 1.5e-9
+      }
+      continue;
+    }
+    for (const char* key : { "oracle", "position", "normal", "view", "ambient", "lights",
+           "triangle", "material", "vertices" })
+    {
+      ASSERT_TRUE(p.contains(key)) << key;
+    }
+    const Rgb oracle = Vec(p.at("oracle"));
+    ExpectNear(TermsSum(p), oracle, 1e-12, "ambient + terms against the oracle");
+
+    const auto corners = Corners(mesh, p.at("triangle").get<vtkIdType>());
+    bool near = NearACase(p.at("lights"));
+    Vec3 point{ 0, 0, 0 };
+    double weights = 0;
+    Rgb mixed{ 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      const json& v = p.at("vertices").at(k);
+      ASSERT_EQ(v.at("index").get<vtkIdType>(), corners[k]);
+      const double w = v.at("weight").get<double>();
+      weights += w;
+      point = point + w * PointOf(mesh, corners[k]);
+      if (gouraud)
+      {
+        const Rgb color = Vec(v.at("color"));
+        ExpectNear(TermsSum(v), color, 1e-12, "a vertex's terms against its colour");
+        mixed = mixed + w * color;
+        near = near || NearACase(v.at("lights"));
+      }
+    }
+    EXPECT_NEAR(weights, 1, 1e-12);
+    if (gouraud)
+    {
+      ExpectNear(mixed, oracle, 1e-12, "the vertex colours mixed by the weights");
+    }
+    if (flat)
+    {
+      // The provoking vertex is the triangle's last, lit with the face normal.
+      EXPECT_EQ(p.at("provoking_vertex").get<vtkIdType>(), corners[2]);
+      const Vec3 p0 = PointOf(mesh, corners[0]);
+      EXPECT_EQ(Vec(p.at("position")), PointOf(mesh, corners[2]));
+      const Vec3 face =
+        normalize(cross(PointOf(mesh, corners[1]) - p0, PointOf(mesh, corners[2]) - p0));
+      ExpectNear(Vec(p.at("face_normal")), face, 1e-12, "face normal");
+      ExpectNear(Vec(p.at("normal")), p.at("front_facing").get<bool>() ? face : -face, 1e-12,
+        "flat's normal");
+    }
+    else
+    {
+      // The point under the pixel centre, which gouraud and phong interpolate to.
+      ExpectNear(Vec(p.at("position")), point, 1e-12 * (1 + length(point)), "position");
+    }
+    if (edge <= EdgeMargin || near)
+    {
+      continue;
+    }
+    ++compared;
+    for (int k = 0; k < 3; ++k)
+    {
+      // The oracle tests' bound (oracle_scene.h's Standard, reasoned there).
+      const double bound = Standard.Relative * std::max(std::abs(oracle[k]), Standard.Floor);
+      EXPECT_LE(std::abs(got[k] - oracle[k]), bound)
+        << "channel " << k << ": rendered " << got[k] << ", oracle " << oracle[k];
+      worst = std::max(worst, std::abs(got[k] - oracle[k]) / bound);
+    }
+  }
+  std::cout << "[probe] " << c.Name << ": " << probes.size() << " pixels, " << compared
+            << " compared with the oracle (worst " << worst << " of the bound), " << background
+            << " background" << std::endl;
+  EXPECT_GE(compared, 300u) << "too few pixels away from edges to say anything";
+  EXPECT_GE(background, 300u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Probe, ProbePixels, testing::ValuesIn(Cases()),
+  [](const testing::TestParamInfo<ProbeCase>& info) { return info.param.Name; });
+
+// none: kd as it is, nothing lit.
+TEST(Probe, NoneIsKdUnlit)
+{
+  std::string error;
+  const std::vector<json> p =
+    Probe({ Teapot, "--size", "64x48", "--shading", "none", "--kd", "0.3,0.5,0.7" }, { { 32, 24 } },
+      error);
+  ASSERT_EQ(error, "");
+  ASSERT_EQ(p.size(), 1u);
+  ASSERT_TRUE(p[0].at("hit").get<bool>());
+  EXPECT_EQ(Vec(p[0].at("oracle")), (Rgb{ 0.3, 0.5, 0.7 }));
+  EXPECT_EQ(Vec(p[0].at("unlit")), (Rgb{ 0.3, 0.5, 0.7 }));
+  ExpectNear(Vec(p[0].at("rendered")), { 0.3, 0.5, 0.7 }, 1e-7, "rendered"); // float(kd)
+  EXPECT_FALSE(p[0].contains("lights") || p[0].contains("ambient"));
+}
+
+namespace
+{
+std::string Number(double v)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v); // the text's six significant digits
+  return text;
+}
+
+std::string Numbers(const json& v)
+{
+  return "(" + Number(v.at(0).get<double>()) + ", " + Number(v.at(1).get<double>()) + ", " +
+    Number(v.at(2).get<double>()) + ")";
+}
+
+// The text holds every number of one point's equation that the JSON holds.
+void ExpectTermsShown(const std::string& text, const json& at, bool blinn)
+{
+  for (const char* key : { "normal", "view", "ambient" })
+  {
+    EXPECT_NE(text.find(Numbers(at.at(key))), std::string::npos) << key;
+  }
+  for (const json& l : at.at("lights"))
+  {
+    for (const char* key : { "L", "Il", "diffuse", "specular", blinn ? "H" : "R" })
+    {
+      EXPECT_NE(text.find(Numbers(l.at(key))), std::string::npos) << key;
+    }
+    for (const char* key : { "n_dot_l", "base", "power" })
+    {
+      EXPECT_NE(text.find(" = " + Number(l.at(key).get<double>())), std::string::npos) << key;
+    }
+  }
+}
+}
+
+// The text, in the lecture's notation, shows the JSON's numbers: per rule
+// and reflection model, a pixel on the mesh and one off it.
+TEST(Probe, TextShowsTheNumbers)
+{
+  for (Shading rule : LitRules)
+  {
+    for (Reflection model : { Reflection::BlinnPhong, Reflection::Phong })
+    {
+      const bool blinn = model == Reflection::BlinnPhong;
+      std::vector<std::string> args{ Bunny, "--size", "160x120", "--shading", ToString(rule),
+        "--reflection", ToString(model), "--background", Triple(Background) };
+      args.insert(args.end(), BunnyLights.begin(), BunnyLights.end());
+      std::string error;
+      const std::vector<json> p = Probe(args, { { 80, 60 }, { 2, 2 } }, error);
+      ASSERT_EQ(error, "");
+      ASSERT_EQ(p.size(), 2u);
+      ASSERT_TRUE(p[0].at("hit").get<bool>());
+      ASSERT_FALSE(p[1].at("hit").get<bool>());
+      args.insert(args.begin(), "probe");
+      args.insert(args.end(), { "--pixel", "80,60", "--pixel", "2,2" });
+      const RunResult r = RunShadelab(args);
+      ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+      const std::string& text = r.Stdout;
+      SCOPED_TRACE(text);
+      const std::string base = blinn ? "(N.H)^ns" : "(V.R)^ns";
+      for (const std::string& notation : { std::string("ka*Ia = "), std::string("N.L = "),
+             std::string("kd*Il*(N.L) = "), base + " = ", "ks*Il*" + base + " = " })
+      {
+        EXPECT_NE(text.find(notation), std::string::npos) << notation;
+      }
+      for (const json& q : p)
+      {
+        EXPECT_NE(text.find("rendered = " + Numbers(q.at("rendered"))), std::string::npos);
+        EXPECT_NE(text.find("stored = " + Numbers(q.at("stored"))), std::string::npos);
+      }
+      EXPECT_NE(text.find(" = " + Numbers(p[0].at("oracle"))), std::string::npos);
+      EXPECT_NE(text.find("= " + Numbers(p[0].at("position"))), std::string::npos);
+      EXPECT_NE(text.find("background = " + Numbers(p[1].at("background"))), std::string::npos);
+      if (rule == Shading::Gouraud)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const json& v = p[0].at("vertices").at(k);
+          EXPECT_NE(
+            text.find("C" + std::to_string(k) + " = " + Numbers(v.at("color"))), std::string::npos);
+          ExpectTermsShown(text, v, blinn);
+        }
+      }
+      else
+      {
+        ExpectTermsShown(text, p[0], blinn);
+      }
+    }
+  }
+}
+
+// Each bad command line: its exit status and what its one line must name.
+TEST(Probe, BadInputIsOneLine)
+{
+  const std::string mesh = Teapot;
+  struct Bad
+  {
+    std::vector<std::string> Args;
+    int ExitCode;
+    std::vector<std::string> Words;
+  };
+  const std::vector<Bad> cases{
+    { { mesh, "--size", "64x48", "--pixel", "64,0" }, 2, { "--pixel", "64,0", "outside" } },
+    { { mesh, "--size", "64x48", "--pixel", "0,48" }, 2, { "--pixel", "0,48", "outside" } },
+    { { mesh, "--pixel", "1" }, 2, { "--pixel", "'1'" } },
+    { { mesh, "--pixel", "a,b" }, 2, { "--pixel", "a,b" } },
+    { { mesh, "--pixel", "-1,3" }, 2, { "--pixel", "-1,3" } },
+    { { mesh, "--pixel", "1,2,3" }, 2, { "--pixel", "1,2,3" } },
+    { { mesh, "--pixel", "1.5,2" }, 2, { "--pixel", "1.5,2" } },
+    { { mesh, "--pixel", "" }, 2, { "--pixel" } },
+    { { mesh }, 2, { "--pixel" } },
+    { { "--pixel", "1,1" }, 2, { "MESH" } },
+    { { mesh, "--pixel", "1,1", "--ssaa", "2" }, 2, { "--ssaa" } },
+    { { "/nonexistent/nope.obj", "--pixel", "1,1" }, 1, { "nope.obj", "No such file" } },
+  };
+  for (const Bad& bad : cases)
+  {
+    std::vector<std::string> args{ "probe" };
+    args.insert(args.end(), bad.Args.begin(), bad.Args.end());
+    const RunResult r = RunShadelab(args);
+    SCOPED_TRACE(r.Stderr);
+    EXPECT_EQ(r.ExitCode, bad.ExitCode);
+    EXPECT_EQ(r.Stdout, "");
+    ASSERT_FALSE(r.Stderr.empty());
+    EXPECT_EQ(r.Stderr.find('\n'), r.Stderr.size() - 1) << "one line";
+    EXPECT_EQ(r.Stderr.rfind("shadelab: error: ", 0), 0u);
+    for (const std::string& word : bad.Words)
+    {
+      EXPECT_NE(r.Stderr.find(word), std::string::npos) << word;
+    }
+  }
+}

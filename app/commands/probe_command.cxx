@@ -46,8 +46,8 @@ CLI::App* AddProbeCommand(CLI::App& program, ProbeOptions& o)
           }
         }
       },
-      "The pixel, X from the left and Y from the top, from 0; repeatable, each explained in "
-      "turn from one render")
+      "The pixel, X from the left and Y from the top, from 0 (required); repeatable, each "
+      "explained in turn from one render")
     ->option_text("X,Y")
     ->required()
     ->allow_extra_args(false) // one pixel an occurrence: MESH may follow it

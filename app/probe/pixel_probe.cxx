@@ -22,7 +22,9 @@ std::vector<Vec3> PointsOf(vtkPolyData* mesh)
   return points;
 }
 
-// The mesh's triangles in cell order (shadelab's readers give triangles only).
+// The mesh's triangles in cell order. shadelab's readers give triangles
+// only; any other cell stands as point 0, which no ray meets, so that the
+// indices stay the cells'.
 std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
 {
   std::vector<TriangleCorners> triangles;
@@ -31,7 +33,8 @@ std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
   const vtkIdType* ids = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
   {
-    triangles.push_back({ ids[0], ids[1], ids[2] });
+    triangles.push_back(
+      n == 3 ? TriangleCorners{ ids[0], ids[1], ids[2] } : TriangleCorners{ 0, 0, 0 });
   }
   return triangles;
 }

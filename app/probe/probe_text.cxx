@@ -122,17 +122,7 @@ std::string Point(vtkIdType id)
 // What phong lit with: the interpolated normal, unless it was too short.
 std::string PhongNormal(const PixelProbe& p)
 {
-  Vec3 interpolated{ 0, 0, 0 };
-  for (int k = 0; k < 3; ++k)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      interpolated[c] += p.Fragment.Weights[k] * p.Fragment.Normals[k][c];
-    }
-  }
-  const double length = std::sqrt(interpolated[0] * interpolated[0] +
-    interpolated[1] * interpolated[1] + interpolated[2] * interpolated[2]);
-  if (!(length > 1e-6))
+  if (p.Shaded.FaceNormalFallback)
   {
     return "the face normal, towards the viewer: w0*N0 + w1*N1 + w2*N2 is too short";
   }

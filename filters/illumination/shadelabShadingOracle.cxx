@@ -178,14 +178,18 @@ Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N)
   return IlluminateTerms(in, P, N).Total();
 }
 
+bool UsableInterpolatedNormal(const Vec3& interpolatedN)
+{
+  return Usable(length(interpolatedN), ShortNormal);
+}
+
 IlluminationTerms ShadeFragment(const IlluminationInputs& in, const Vec3& P,
   const Vec3& interpolatedN, const Vec3& geometricN, bool frontFacing)
 {
-  const double len = length(interpolatedN);
   Vec3 N;
-  if (Usable(len, ShortNormal))
+  if (UsableInterpolatedNormal(interpolatedN))
   {
-    N = (1 / len) * interpolatedN;
+    N = (1 / length(interpolatedN)) * interpolatedN;
     if (!frontFacing)
     {
       N = -N;

@@ -100,6 +100,12 @@ IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, c
 Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
 
 /**
+ * Whether phong lights with the interpolated normal: its length is above
+ * 1e-6 and finite. Otherwise ShadeFragment falls back to the geometric one.
+ */
+bool UsableInterpolatedNormal(const Vec3& interpolatedN);
+
+/**
  * Phong shading: one fragment from interpolated position and normal. The
  * normal is renormalised; a zero-length or non-finite one falls back to the
  * geometric normal (facing the viewer). Back faces are lit with the normal

@@ -71,6 +71,7 @@ ShadedFragment ShadeTriangleFragment(
     {
       const Vec3 interpolated = Mix<Vec3>(w, [&](int k) { return f.Normals[k]; });
       const Vec3 geometric = f.Front ? s.FaceNormal : -s.FaceNormal; // towards the viewer
+      s.FaceNormalFallback = !UsableInterpolatedNormal(interpolated);
       s.Terms = ShadeFragment(in, s.Point, interpolated, geometric, f.Front);
       break;
     }

@@ -28,6 +28,8 @@ struct ShadedFragment
   Rgb Color{};       // the rule's value: the oracle's intensity of the fragment
   Vec3 Point{};      // the fragment on the surface: the weights' mix of the positions
   Vec3 FaceNormal{}; // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
+  // phong: the interpolated normal was too short, so the face normal lit.
+  bool FaceNormalFallback = false;
   // How the rule lit: flat at the provoking vertex with the face normal,
   // phong at Point with the interpolated normal, gouraud the weights' mix of
   // Vertices (the colour is interpolated, so its terms are too). Empty for

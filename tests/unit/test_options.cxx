@@ -48,9 +48,8 @@ TEST(Options, Pixel)
   EXPECT_EQ(p.X, 12);
   EXPECT_EQ(p.Y, 0);
   EXPECT_EQ(ParsePixel("16383,16383").Y, 16383);
-  for (const char* bad :
-    { "", "1", "1,", ",1", "-1,3", "3,-1", "+1,2", "1.5,2", "1,2,3", "a,b", " 1,2", "1,2 ",
-      "99999999999,1" })
+  for (const char* bad : { "", "1", "1,", ",1", "-1,3", "3,-1", "+1,2", "1.5,2", "1,2,3", "a,b",
+         " 1,2", "1,2 ", "99999999999,1" })
   {
     EXPECT_THROW(ParsePixel(bad), std::invalid_argument) << bad;
   }

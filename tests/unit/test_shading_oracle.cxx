@@ -282,6 +282,17 @@ TEST(ShadingOracle, TriangleFragmentUnderEachRule)
     {
       EXPECT_NEAR(phong.Color[c], want[c], 1e-15);
     }
+    EXPECT_FALSE(phong.FaceNormalFallback);
+    // Normals that cancel at the fragment: the face normal, facing the viewer.
+    TriangleFragment cancelling = f;
+    cancelling.Normals = { Vec3{ 0, 0, 1 }, Vec3{ 0, 0, -1 }, Vec3{ 0, 0, 0 } };
+    cancelling.Weights = { 0.5, 0.5, 0 };
+    const ShadedFragment fallback = ShadeTriangleFragment(in, Shading::Phong, cancelling);
+    EXPECT_TRUE(fallback.FaceNormalFallback);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(fallback.Terms.N[c], side * face[c], 1e-15);
+    }
     // gouraud: each vertex's colour, mixed by the weights; so are its terms.
     const ShadedFragment gouraud = ShadeTriangleFragment(in, Shading::Gouraud, f);
     Rgb mixed{ 0, 0, 0 }, diffuse{ 0, 0, 0 };

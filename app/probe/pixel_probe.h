@@ -32,14 +32,16 @@ struct PixelProbe
   std::vector<Light> Lights; // as lit, in world coordinates
   Rgb Background{};
   bool Orthographic = false;
-  Rgb Rendered{}; // the picture's value at the pixel: the caller's to set
+  bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
+  Rgb Rendered{};          // the picture's value at the pixel: the caller's to set
+  // Pixels from its centre to the nearest edge that may cover it (with no
+  // hit: of any triangle).
+  double EdgeDistance = 0;
 
   // The ray through the pixel's centre meets the mesh; the rest holds only then.
   bool Hit = false;
   vtkIdType Triangle = -1;            // its cell index
   std::array<vtkIdType, 3> Corners{}; // its point indices in draw order: the last provokes
-  bool HasNormals = false;            // the mesh has vertex normals (Fragment.Normals)
-  double EdgeDistance = 0;            // pixels to an edge that may cover the pixel
   TriangleFragment Fragment;          // positions, normals, weights, facing (world)
   ShadedFragment Shaded;              // the rule's value and terms: the oracle
 };

@@ -4,6 +4,7 @@
 #include "shadelabScalarType.h"
 
 #include <algorithm>
+#include <functional>
 #include <string_view>
 
 namespace shadelab::gltf
@@ -40,6 +41,12 @@ struct Layout
   const ComponentName* Component = nullptr;
   bool Normalized = false;
 };
+
+std::string Describe(const Layout& layout)
+{
+  return std::string(ElementTypes[layout.Components - 1]) + " of " + layout.Component->Name +
+    (layout.Normalized ? " (normalized)" : "");
+}
 
 const ComponentName& ReadComponentType(const Json& accessor, const std::string& where)
 {
@@ -111,7 +118,10 @@ const unsigned char* ViewData(
   return reinterpret_cast<const unsigned char*>(buffer.data()) + viewOffset + offset;
 }
 
-Layout ReadLayout(const Document& document, std::uint64_t index, const std::string& referrer)
+// The accessor's layout; `check` says whether its use allows its types,
+// before any range is looked at.
+Layout ReadLayout(const Document& document, std::uint64_t index, const std::string& referrer,
+  const std::function<void(const Layout&)>& check)
 {
   const std::string where = "accessor " + std::to_string(index);
   const Json& accessor = Item(document.Root, "accessors", index, referrer);
@@ -135,6 +145,7 @@ Layout ReadLayout(const Document& document, std::uint64_t index, const std::stri
     }
     layout.Normalized = accessor["normalized"].get<bool>();
   }
+  check(layout);
   // Without a bufferView an accessor is zeros, there for sparse accessors
   // to fill in; as those are not read, neither is that.
   if (!accessor.contains("bufferView"))
@@ -143,12 +154,6 @@ Layout ReadLayout(const Document& document, std::uint64_t index, const std::stri
   }
   layout.Data = ViewData(document, accessor, layout, where);
   return layout;
-}
-
-std::string Describe(const Layout& layout)
-{
-  return std::string(ElementTypes[layout.Components - 1]) + " of " + layout.Component->Name +
-    (layout.Normalized ? " (normalized)" : "");
 }
 
 template <typename Convert>
@@ -170,17 +175,21 @@ void Decode(const Layout& layout, Convert&& store)
 FloatValues ReadFloats(
   const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where)
 {
-  const Layout layout = ReadLayout(document, index, where);
+  const Layout layout = ReadLayout(document, index, where,
+    [&](const Layout& found)
+    {
+      const ScalarType type = found.Component->Type;
+      const bool isFloat = type == ScalarType::Float32 && !found.Normalized;
+      const bool isNormalized = use.NormalizedIntegers && found.Normalized &&
+        (type == ScalarType::UInt8 || type == ScalarType::UInt16);
+      if (found.Components < use.MinComponents || found.Components > use.MaxComponents ||
+        (!isFloat && !isNormalized))
+      {
+        Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
+          Describe(found) + ", which glTF does not allow there");
+      }
+    });
   const ScalarType type = layout.Component->Type;
-  const bool isFloat = type == ScalarType::Float32 && !layout.Normalized;
-  const bool isNormalized = use.NormalizedIntegers && layout.Normalized &&
-    (type == ScalarType::UInt8 || type == ScalarType::UInt16);
-  if (layout.Components < use.MinComponents || layout.Components > use.MaxComponents ||
-    (!isFloat && !isNormalized))
-  {
-    Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
-      Describe(layout) + ", which glTF does not allow there");
-  }
   const double scale = type == ScalarType::UInt8 ? 1.0 / 255
     : type == ScalarType::UInt16                 ? 1.0 / 65535
                                                  : 1.0;
@@ -196,14 +205,17 @@ FloatValues ReadFloats(
 std::vector<std::uint32_t> ReadIndices(
   const Document& document, std::uint64_t index, const std::string& where)
 {
-  const Layout layout = ReadLayout(document, index, where);
-  const ScalarType type = layout.Component->Type;
-  if (layout.Components != 1 || layout.Normalized ||
-    (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32))
-  {
-    Fail(where + ": indices accessor " + std::to_string(index) + " is " + Describe(layout) +
-      ", not SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-  }
+  const Layout layout = ReadLayout(document, index, where,
+    [&](const Layout& found)
+    {
+      const ScalarType type = found.Component->Type;
+      if (found.Components != 1 || found.Normalized ||
+        (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32))
+      {
+        Fail(where + ": indices accessor " + std::to_string(index) + " is " + Describe(found) +
+          ", not SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+      }
+    });
   std::vector<std::uint32_t> indices(layout.Count);
   Decode(
     layout, [&](std::uint64_t k, double value) { indices[k] = static_cast<std::uint32_t>(value); });

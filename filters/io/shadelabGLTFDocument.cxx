@@ -146,9 +146,8 @@ void CheckAsset(const Json& root)
   }
   for (const Json& extension : List(root, "extensionsRequired"))
   {
-    Fail("requires the extension " +
-      Quote(extension.is_string() ? extension.get<std::string>() : extension.dump()) +
-      ", which shadelab does not read");
+    // dump(): the name in quotes, escaped onto one line.
+    Fail("requires the extension " + extension.dump() + ", which shadelab does not read");
   }
 }
 
@@ -250,7 +249,10 @@ std::vector<std::string> LoadBuffers(
     {
       if (!glb || b != 0 || !glb->HasBinary)
       {
-        Fail(where + " has no uri" + (glb ? ", and only buffer 0 can be the GLB's BIN chunk" : ""));
+        Fail(where + " has no uri" +
+          (!glb        ? ""
+              : b != 0 ? ", and only buffer 0 can be the GLB's BIN chunk"
+                       : ", and the GLB has no BIN chunk"));
       }
       bytes.assign(glb->Binary);
       source = "the GLB's BIN chunk";

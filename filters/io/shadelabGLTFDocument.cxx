@@ -189,7 +189,8 @@ int HexDigit(char c)
                               : -1;
 }
 
-// A relative URI as the path of a file beside the document.
+// A relative URI as the path of a file beside the document, which must be a
+// plain file if it exists.
 std::string FilePath(
   const std::string& documentName, std::string_view uri, const std::string& where)
 {
@@ -215,7 +216,16 @@ std::string FilePath(
     decoded += static_cast<char>(16 * high + low);
     i += 2;
   }
-  return (std::filesystem::path(documentName).parent_path() / decoded).string();
+  // A plain file: a relative uri can name a device or a pipe
+  // ("../../dev/zero"), which would be read forever or block the opening.
+  const std::filesystem::path path = std::filesystem::path(documentName).parent_path() / decoded;
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+  {
+    Fail(where + ": " + Quote(uri) + " is not a regular file");
+  }
+  return path.string();
 }
 
 // What a file that the document refers to says when it cannot be read:

@@ -3,7 +3,10 @@
 #include "shadelabMeshReadError.h"
 #include "shadelabScalarType.h"
 
+#include <vtkByteSwap.h>
+
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <string_view>
 
@@ -84,7 +87,7 @@ const unsigned char* ViewData(
   const Json& view = Item(document.Root, "bufferViews", viewIndex, where);
   const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
   Item(document.Root, "buffers", bufferIndex, viewName);
-  const std::string& buffer = document.Buffers[bufferIndex];
+  const std::string_view buffer = document.Buffers[bufferIndex];
   const std::uint64_t viewOffset = Unsigned(view, "byteOffset", viewName, 0);
   const std::uint64_t viewLength = Unsigned(view, "byteLength", viewName);
   if (viewOffset > buffer.size() || viewLength > buffer.size() - viewOffset)
@@ -156,18 +159,54 @@ Layout ReadLayout(const Document& document, std::uint64_t index, const std::stri
   return layout;
 }
 
-template <typename Convert>
-void Decode(const Layout& layout, Convert&& store)
+// The accessor's values as T, in the host's order: one copy and one swap
+// (a no-op on little-endian hosts) of the whole range where the elements
+// are packed, element by element where a byteStride spreads them.
+template <typename T>
+std::vector<T> Load(const Layout& layout)
 {
-  const std::size_t size = SizeOf(layout.Component->Type);
-  for (std::uint64_t i = 0; i < layout.Count; ++i)
+  const std::size_t elementBytes = layout.Components * sizeof(T);
+  std::vector<T> values(layout.Count * layout.Components);
+  if (layout.Stride == elementBytes)
   {
-    for (int c = 0; c < layout.Components; ++c)
+    std::memcpy(values.data(), layout.Data, values.size() * sizeof(T));
+  }
+  else
+  {
+    for (std::uint64_t i = 0; i < layout.Count; ++i)
     {
-      store(i * layout.Components + c,
-        LoadScalar(layout.Data + i * layout.Stride + c * size, layout.Component->Type,
-          /*bigEndian=*/false));
+      std::memcpy(&values[i * layout.Components], layout.Data + i * layout.Stride, elementBytes);
     }
+  }
+  vtkByteSwap::SwapLERange(values.data(), values.size());
+  return values;
+}
+
+// Calls store(k, value) for every value k of the accessor, as its type.
+template <typename Store>
+void Decode(const Layout& layout, Store&& store)
+{
+  const auto each = [&](const auto& values)
+  {
+    for (std::size_t k = 0; k < values.size(); ++k)
+    {
+      store(k, values[k]);
+    }
+  };
+  switch (layout.Component->Type)
+  {
+    case ScalarType::Int8:
+      return each(Load<std::int8_t>(layout));
+    case ScalarType::UInt8:
+      return each(Load<std::uint8_t>(layout));
+    case ScalarType::Int16:
+      return each(Load<std::int16_t>(layout));
+    case ScalarType::UInt16:
+      return each(Load<std::uint16_t>(layout));
+    case ScalarType::UInt32:
+      return each(Load<std::uint32_t>(layout));
+    default:
+      return each(Load<float>(layout)); // the types glTF has end here
   }
 }
 }
@@ -196,9 +235,16 @@ FloatValues ReadFloats(
   FloatValues result;
   result.Count = layout.Count;
   result.Components = layout.Components;
-  result.Values.resize(layout.Count * layout.Components);
-  Decode(layout,
-    [&](std::uint64_t k, double value) { result.Values[k] = static_cast<float>(value * scale); });
+  if (type == ScalarType::Float32)
+  {
+    result.Values = Load<float>(layout);
+  }
+  else
+  {
+    result.Values.resize(layout.Count * layout.Components);
+    Decode(layout,
+      [&](std::size_t k, auto value) { result.Values[k] = static_cast<float>(value * scale); });
+  }
   return result;
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string_view>
 
 namespace shadelab::gltf
@@ -243,17 +244,17 @@ auto Referred(const std::string& where, std::string_view uri, Action action)
   }
 }
 
-std::vector<std::string> LoadBuffers(
-  const Json& root, const std::string& fileName, const GlbChunks* glb)
+// Each buffer as a view of the GLB's BIN chunk (no copy) or of bytes that
+// `document` keeps: a file's or a data URI's.
+void LoadBuffers(Document& document, const std::string& fileName, const GlbChunks* glb)
 {
-  std::vector<std::string> buffers;
-  const Json& list = List(root, "buffers");
+  const Json& list = List(document.Root, "buffers");
   for (std::size_t b = 0; b < list.size(); ++b)
   {
     const std::string where = "buffer " + std::to_string(b);
-    const Json& buffer = Item(root, "buffers", b, where);
+    const Json& buffer = Item(document.Root, "buffers", b, where);
     const std::uint64_t length = Unsigned(buffer, "byteLength", where);
-    std::string bytes;
+    std::string_view bytes;
     std::string source;
     if (!buffer.contains("uri"))
     {
@@ -264,7 +265,7 @@ std::vector<std::string> LoadBuffers(
               : b != 0 ? ", and only buffer 0 can be the GLB's BIN chunk"
                        : ", and the GLB has no BIN chunk"));
       }
-      bytes.assign(glb->Binary);
+      bytes = glb->Binary;
       source = "the GLB's BIN chunk";
     }
     else
@@ -272,26 +273,25 @@ std::vector<std::string> LoadBuffers(
       const std::string uri = String(buffer, "uri", where);
       if (uri.compare(0, 5, "data:") == 0)
       {
-        bytes = DecodeDataUri(uri, where);
+        document.Storage.push_back(std::make_unique<std::string>(DecodeDataUri(uri, where)));
         source = "its data URI";
       }
       else
       {
         const std::string path = FilePath(fileName, uri, where);
-        bytes =
-          Referred(where, uri, [&] { return vtkShadelabFileReader::ReadFileBytes(path.c_str()); });
+        document.Storage.push_back(std::make_unique<std::string>(Referred(
+          where, uri, [&] { return vtkShadelabFileReader::ReadFileBytes(path.c_str()); })));
         source = Quote(uri);
       }
+      bytes = *document.Storage.back();
     }
     if (bytes.size() < length)
     {
       Truncated(where + " declares " + std::to_string(length) + " bytes, but " + source + " has " +
         std::to_string(bytes.size()));
     }
-    bytes.resize(length);
-    buffers.push_back(std::move(bytes));
+    document.Buffers.push_back(bytes.substr(0, length));
   }
-  return buffers;
 }
 
 // Textures are for a later step, but a document whose image is missing is
@@ -340,18 +340,20 @@ std::uint64_t AsUnsigned(const Json& value, const std::string& place)
 }
 }
 
-Document Load(const std::string& fileName, const std::string& bytes)
+Document Load(const std::string& fileName, std::string fileBytes)
 {
+  Document document;
+  document.Storage.push_back(std::make_unique<std::string>(std::move(fileBytes)));
+  const std::string_view bytes = *document.Storage.back();
   const bool isGlb = bytes.size() >= 4 && LoadUInt32(bytes, 0) == GlbMagic;
   GlbChunks glb;
   if (isGlb)
   {
     glb = ReadGlb(bytes);
   }
-  Document document;
-  document.Root = ParseJson(isGlb ? glb.Json : std::string_view(bytes));
+  document.Root = ParseJson(isGlb ? glb.Json : bytes);
   CheckAsset(document.Root);
-  document.Buffers = LoadBuffers(document.Root, fileName, isGlb ? &glb : nullptr);
+  LoadBuffers(document, fileName, isGlb ? &glb : nullptr);
   CheckImages(document.Root, fileName);
   return document;
 }

@@ -21,7 +21,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace shadelab::gltf
@@ -31,11 +33,15 @@ using Json = nlohmann::json;
 struct Document
 {
   Json Root;
-  std::vector<std::string> Buffers; // each exactly its byteLength long
+  std::vector<std::string_view> Buffers; // each exactly its byteLength long, in Storage
+  // The file's bytes (a GLB's BIN chunk is used where it lies) and those of
+  // the other buffers; on the heap, so that the views stay valid when the
+  // document moves.
+  std::vector<std::unique_ptr<std::string>> Storage;
 };
 
-/** The document in `bytes`, read from `fileName` (whose folder holds its files). */
-Document Load(const std::string& fileName, const std::string& bytes);
+/** The document in `fileBytes`, read from `fileName` (whose folder holds its files). */
+Document Load(const std::string& fileName, std::string fileBytes);
 
 /** root[key] as an array; an empty one when absent. Throws if it is not an array. */
 const Json& List(const Json& root, const char* key);

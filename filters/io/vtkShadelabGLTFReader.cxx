@@ -205,6 +205,7 @@ private:
       ReadFloats(this->Doc, Unsigned(attributes, "POSITION", where), PositionUse, where);
     const std::uint64_t count = positions.Count;
     const Transform transform(world);
+    this->Mesh.Points.reserve(this->Mesh.Points.size() + 3 * count);
     this->AddFaces(
       static_cast<Mode>(mode), this->Indices(primitive, count, where), transform.Mirrors(), where);
     const std::size_t first = this->Mesh.Points.size() / 3;
@@ -216,6 +217,7 @@ private:
     {
       const FloatValues normals = Attribute(attributes, "NORMAL", NormalUse, count, where);
       this->Mesh.Normals.resize(3 * first, 0.0f); // primitives before without: dropped in Finish
+      this->Mesh.Normals.reserve(3 * (first + count));
       for (std::uint64_t v = 0; v < count; ++v)
       {
         transform.Normal(&normals.Values[3 * v], this->Mesh.Normals);
@@ -286,6 +288,13 @@ private:
       Fail(where + " has " + std::to_string(n) + " vertices, which make no whole triangles");
     }
     const int part = static_cast<int>(this->MaterialNames.size());
+    if (mode != TriangleStrip)
+    {
+      const std::size_t triangles = mode == Triangles ? n / 3 : n - 2;
+      this->Mesh.FaceIds.reserve(this->Mesh.FaceIds.size() + 3 * triangles);
+      this->Mesh.FaceOffsets.reserve(this->Mesh.FaceOffsets.size() + triangles);
+      this->FaceParts.reserve(this->FaceParts.size() + triangles);
+    }
     const vtkIdType base = static_cast<vtkIdType>(this->Mesh.Points.size() / 3);
     const auto id = [&](std::size_t k) { return base + static_cast<vtkIdType>(indices[k]); };
     const auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)

@@ -151,36 +151,23 @@ Header ReadHeader(TextScanner& scanner, std::size_t fileSize)
     vtkErrorCode::PrematureEndOfFileError);
 }
 
-// The values of a vertex line: x y z [nx ny nz] [r g b [a]] [s t].
-class VertexLayout
+// A vertex line is x y z [nx ny nz] [r g b [a]] [s t]: the number of colour
+// values on a line of `count` values (0, 3 or 4), or -1 if it fits none.
+int ColorValues(const Header& header, std::size_t count)
 {
-public:
-  explicit VertexLayout(const Header& header)
-    : Header_(header)
+  const std::size_t fixed = 3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
+  if (!header.Colors)
   {
+    return count == fixed ? 0 : -1;
   }
+  return count == fixed + 3 ? 3 : count == fixed + 4 ? 4 : -1;
+}
 
-  /** The number of colour values on a line of `count` values: 0, 3 or 4; -1 if it fits none. */
-  int ColorValues(std::size_t count) const
-  {
-    const std::size_t fixed =
-      3 + (this->Header_.Normals ? 3 : 0) + (this->Header_.TextureCoordinates ? 2 : 0);
-    if (!this->Header_.Colors)
-    {
-      return count == fixed ? 0 : -1;
-    }
-    return count == fixed + 3 ? 3 : count == fixed + 4 ? 4 : -1;
-  }
-
-  std::string Describe() const
-  {
-    return std::string("x y z") + (this->Header_.Normals ? " nx ny nz" : "") +
-      (this->Header_.Colors ? " r g b [a]" : "") + (this->Header_.TextureCoordinates ? " s t" : "");
-  }
-
-private:
-  const Header& Header_;
-};
+std::string DescribeVertex(const Header& header)
+{
+  return std::string("x y z") + (header.Normals ? " nx ny nz" : "") +
+    (header.Colors ? " r g b [a]" : "") + (header.TextureCoordinates ? " s t" : "");
+}
 
 // Whether a colour value is written as a float ("0.5", "1e-1") rather than
 // an integer: Geomview's rule for 0..1 against 0..255.
@@ -209,12 +196,11 @@ void ReadVertex(TextScanner& scanner, const Header& header, std::uint64_t v, Par
     tokens[std::min(count, maxValues)] = token;
     ++count;
   }
-  const VertexLayout layout(header);
-  const int colorValues = layout.ColorValues(count);
+  const int colorValues = ColorValues(header, count);
   if (colorValues < 0)
   {
     scanner.Fail("vertex " + std::to_string(v) + " has " + std::to_string(count) + " values, not " +
-      layout.Describe());
+      DescribeVertex(header));
   }
   double values[maxValues];
   for (std::size_t k = 0; k < count; ++k)

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <functional>
 #include <string_view>
 
 namespace shadelab::gltf
@@ -121,10 +120,36 @@ const unsigned char* ViewData(
   return reinterpret_cast<const unsigned char*>(buffer.data()) + viewOffset + offset;
 }
 
-// The accessor's layout; `check` says whether its use allows its types,
-// before any range is looked at.
-Layout ReadLayout(const Document& document, std::uint64_t index, const std::string& referrer,
-  const std::function<void(const Layout&)>& check)
+// Throws unless `use` allows the accessor's element and component types.
+void CheckUse(
+  const Layout& layout, const AccessorUse& use, std::uint64_t index, const std::string& where)
+{
+  const ScalarType type = layout.Component->Type;
+  if (use.Indices)
+  {
+    if (layout.Components != 1 || layout.Normalized ||
+      (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32))
+    {
+      Fail(where + ": indices accessor " + std::to_string(index) + " is " + Describe(layout) +
+        ", not SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+    }
+    return;
+  }
+  const bool isFloat = type == ScalarType::Float32 && !layout.Normalized;
+  const bool isNormalized = use.NormalizedIntegers && layout.Normalized &&
+    (type == ScalarType::UInt8 || type == ScalarType::UInt16);
+  if (layout.Components < use.MinComponents || layout.Components > use.MaxComponents ||
+    (!isFloat && !isNormalized))
+  {
+    Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
+      Describe(layout) + ", which glTF does not allow there");
+  }
+}
+
+// The accessor's layout for `use` (of `referrer`): its types checked
+// against the use before any range is looked at, then its ranges.
+Layout ReadLayout(const Document& document, std::uint64_t index, const AccessorUse& use,
+  const std::string& referrer)
 {
   const std::string where = "accessor " + std::to_string(index);
   const Json& accessor = Item(document.Root, "accessors", index, referrer);
@@ -148,7 +173,7 @@ Layout ReadLayout(const Document& document, std::uint64_t index, const std::stri
     }
     layout.Normalized = accessor["normalized"].get<bool>();
   }
-  check(layout);
+  CheckUse(layout, use, index, referrer);
   // Without a bufferView an accessor is zeros, there for sparse accessors
   // to fill in; as those are not read, neither is that.
   if (!accessor.contains("bufferView"))
@@ -211,27 +236,17 @@ void Decode(const Layout& layout, Store&& store)
 }
 }
 
+std::uint64_t CountOf(
+  const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where)
+{
+  return ReadLayout(document, index, use, where).Count;
+}
+
 FloatValues ReadFloats(
   const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where)
 {
-  const Layout layout = ReadLayout(document, index, where,
-    [&](const Layout& found)
-    {
-      const ScalarType type = found.Component->Type;
-      const bool isFloat = type == ScalarType::Float32 && !found.Normalized;
-      const bool isNormalized = use.NormalizedIntegers && found.Normalized &&
-        (type == ScalarType::UInt8 || type == ScalarType::UInt16);
-      if (found.Components < use.MinComponents || found.Components > use.MaxComponents ||
-        (!isFloat && !isNormalized))
-      {
-        Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
-          Describe(found) + ", which glTF does not allow there");
-      }
-    });
+  const Layout layout = ReadLayout(document, index, use, where);
   const ScalarType type = layout.Component->Type;
-  const double scale = type == ScalarType::UInt8 ? 1.0 / 255
-    : type == ScalarType::UInt16                 ? 1.0 / 65535
-                                                 : 1.0;
   FloatValues result;
   result.Count = layout.Count;
   result.Components = layout.Components;
@@ -241,6 +256,8 @@ FloatValues ReadFloats(
   }
   else
   {
+    // Normalized integers: k / 255 or k / 65535, as glTF defines them.
+    const double scale = type == ScalarType::UInt8 ? 1.0 / 255 : 1.0 / 65535;
     result.Values.resize(layout.Count * layout.Components);
     Decode(layout,
       [&](std::size_t k, auto value) { result.Values[k] = static_cast<float>(value * scale); });
@@ -251,20 +268,10 @@ FloatValues ReadFloats(
 std::vector<std::uint32_t> ReadIndices(
   const Document& document, std::uint64_t index, const std::string& where)
 {
-  const Layout layout = ReadLayout(document, index, where,
-    [&](const Layout& found)
-    {
-      const ScalarType type = found.Component->Type;
-      if (found.Components != 1 || found.Normalized ||
-        (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32))
-      {
-        Fail(where + ": indices accessor " + std::to_string(index) + " is " + Describe(found) +
-          ", not SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-      }
-    });
+  const Layout layout = ReadLayout(document, index, IndicesUse, where);
   std::vector<std::uint32_t> indices(layout.Count);
   Decode(
-    layout, [&](std::uint64_t k, double value) { indices[k] = static_cast<std::uint32_t>(value); });
+    layout, [&](std::size_t k, auto value) { indices[k] = static_cast<std::uint32_t>(value); });
   return indices;
 }
 }

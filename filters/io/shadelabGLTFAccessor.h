@@ -29,7 +29,11 @@ struct AccessorUse
   int MinComponents;       // SCALAR 1, VEC2 2, VEC3 3, VEC4 4
   int MaxComponents;       // COLOR_0 takes VEC3 and VEC4
   bool NormalizedIntegers; // also normalized UNSIGNED_BYTE and UNSIGNED_SHORT (TEXCOORD, COLOR)
+  bool Indices = false;    // SCALAR UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT instead
 };
+
+/** A primitive's indices. */
+inline const AccessorUse IndicesUse = { "indices", 1, 1, false, true };
 
 /** Float values of an accessor. */
 struct FloatValues
@@ -38,6 +42,13 @@ struct FloatValues
   std::uint64_t Count = 0;
   int Components = 0;
 };
+
+/**
+ * The element count of accessor `index` for `use` (of `where`, for
+ * messages), with everything checked that reading it checks.
+ */
+std::uint64_t CountOf(
+  const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where);
 
 /** Accessor `index` for `use` (of `where`, for messages), as floats. */
 FloatValues ReadFloats(

@@ -17,6 +17,7 @@
 
 #include <vtkPolyDataAlgorithm.h>
 
+#include <cstdint>
 #include <string>
 
 class vtkShadelabFileReader : public vtkPolyDataAlgorithm
@@ -47,6 +48,12 @@ public:
 
   /** Throws like ReadFileBytes() when the file cannot be opened for reading. */
   static void CheckReadable(const char* fileName);
+
+  /**
+   * The memory this process can still get: the system's MemAvailable, or
+   * less where a resource limit says so; 0 when nothing can be learnt.
+   */
+  static std::uint64_t AvailableMemory();
 
 protected:
   vtkShadelabFileReader();

@@ -104,6 +104,52 @@ private:
   double Determinant;
 };
 
+// A node may draw a mesh that other nodes draw too, so a small file can ask
+// for any number of copies of its largest mesh. What the scene's triangle
+// primitives will take (their points with attributes and their corners, held
+// twice on the way to vtkPolyData) is counted from the accessors' counts
+// before anything is built (the accessors checked as reading them checks);
+// a scene that needs more than half of the memory there is fails here
+// rather than meet the OOM killer.
+void CheckMemoryFor(const Document& document, const std::vector<MeshInstance>& instances)
+{
+  const double available = static_cast<double>(vtkShadelabFileReader::AvailableMemory());
+  constexpr double pointBytes = 128, cornerBytes = 24;
+  double needed = 0;
+  for (const MeshInstance& instance : instances)
+  {
+    const std::string meshName = "mesh " + std::to_string(instance.Mesh);
+    const Json& primitives =
+      List(Item(document.Root, "meshes", instance.Mesh, meshName), "primitives");
+    for (std::size_t p = 0; p < primitives.size(); ++p)
+    {
+      const Json& primitive = primitives[p];
+      const std::string where = meshName + " primitive " + std::to_string(p);
+      if (!primitive.is_object() || !primitive.contains("attributes") ||
+        !primitive["attributes"].contains("POSITION") ||
+        Unsigned(primitive, "mode", where, Triangles) <= LineStrip)
+      {
+        continue; // nothing to draw, or an error that reading it reports
+      }
+      const double points = static_cast<double>(CountOf(
+        document, Unsigned(primitive["attributes"], "POSITION", where), PositionUse, where));
+      const double corners = primitive.contains("indices")
+        ? static_cast<double>(
+            CountOf(document, Unsigned(primitive, "indices", where), IndicesUse, where))
+        : points;
+      needed += pointBytes * points + cornerBytes * corners;
+    }
+  }
+  if (available > 0 && needed > available / 2)
+  {
+    throw MeshReadError("the scene's meshes need about " +
+        std::to_string(static_cast<long long>(needed / (1 << 20))) + " MiB, more than the " +
+        std::to_string(static_cast<long long>(available / (1 << 20))) +
+        " MiB of memory available allow",
+      vtkErrorCode::UnknownError);
+  }
+}
+
 // The drawn primitives of the scene, gathered into one PolygonMesh: points
 // and their attributes one primitive after the other, faces (triangles and
 // fans) and strips with the part of each.
@@ -204,10 +250,10 @@ private:
     const FloatValues positions =
       ReadFloats(this->Doc, Unsigned(attributes, "POSITION", where), PositionUse, where);
     const std::uint64_t count = positions.Count;
+    const std::vector<std::uint32_t> indices = this->Indices(primitive, count, where);
     const Transform transform(world);
     this->Mesh.Points.reserve(this->Mesh.Points.size() + 3 * count);
-    this->AddFaces(
-      static_cast<Mode>(mode), this->Indices(primitive, count, where), transform.Mirrors(), where);
+    this->AddFaces(static_cast<Mode>(mode), indices, transform.Mirrors(), where);
     const std::size_t first = this->Mesh.Points.size() / 3;
     for (std::uint64_t v = 0; v < count; ++v)
     {
@@ -359,8 +405,10 @@ private:
 void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
   const Document document = Load(fileName, ReadFileBytes(fileName));
+  const std::vector<MeshInstance> instances = SceneMeshes(document.Root);
+  CheckMemoryFor(document, instances);
   MeshBuilder builder(document);
-  for (const MeshInstance& instance : SceneMeshes(document.Root))
+  for (const MeshInstance& instance : instances)
   {
     builder.AddMesh(instance);
   }

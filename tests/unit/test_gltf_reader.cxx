@@ -682,6 +682,30 @@ TEST_F(MeshReaders, BadGltfAccessors)
     { "COLOR_0 accessor 2 is VEC3 of UNSIGNED_BYTE, which glTF does not allow there" });
 }
 
+TEST_F(MeshReaders, GltfSceneDrawingAMeshMoreOftenThanMemoryAllowsIsRefusedUpFront)
+{
+  // One mesh of 65,535 points, drawn by as many nodes as make its copies
+  // need more than half of the memory there is: refused from the counts,
+  // before anything is built (else this test would take that memory).
+  const std::uint64_t available = vtkShadelabFileReader::AvailableMemory();
+  if (available == 0)
+  {
+    GTEST_SKIP() << "the available memory is not known here";
+  }
+  constexpr std::uint64_t points = 65535;
+  Gltf gltf;
+  const int mesh = gltf.Mesh({ Primitive(gltf.Vec3(std::vector<float>(3 * points, 1.0f))) });
+  std::vector<int> nodes;
+  const std::uint64_t copies = available / 2 / (100 * points) + 1;
+  for (std::uint64_t n = 0; n < copies; ++n)
+  {
+    nodes.push_back(gltf.Node({ { "mesh", mesh } }));
+  }
+  gltf.Scene(nodes);
+  this->ExpectError(
+    "copies.glb", gltf.Glb(), { "the scene's meshes need about", "MiB of memory available allow" });
+}
+
 TEST_F(MeshReaders, BadGltfMeshesAndNodes)
 {
   const auto expect = [&](const std::string& name, const std::function<void(Gltf&)>& change,

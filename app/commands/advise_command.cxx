@@ -23,7 +23,7 @@ CLI::App* AddAdviseCommand(CLI::App& program, AdviseOptions& o)
   CLI::App* advise = program.add_subcommand("advise",
     "Name the cheapest shading rule that keeps MESH's shading error under E at a picture "
     "size, and whether more triangles or a better rule is the better buy");
-  advise->add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk")->required();
+  advise->add_option("MESH", o.Mesh, MeshFileHelp())->required();
   advise
     ->add_option("--max-error", o.MaxError,
       "Largest acceptable RMSE against the exact picture, intensities 0..1 (1/255 = 0.0039 "

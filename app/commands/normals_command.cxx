@@ -22,7 +22,7 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
 {
   CLI::App* normals = program.add_subcommand(
     "normals", "Write MESH with computed vertex normals (and face normals where OUT has room)");
-  normals->add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk")->required();
+  normals->add_option("MESH", o.Mesh, MeshFileHelp())->required();
   normals->add_option("-o,--output", o.Output, "Output mesh: .ply .vtp .obj")
     ->required()
     ->option_text("OUT");

@@ -6,6 +6,7 @@
 #include "scene/camera.h"
 #include "scene/mesh_arguments.h"
 #include "scene/scene_file.h"
+#include "vtkShadelabMeshReader.h"
 
 #include <CLI/CLI.hpp>
 
@@ -23,8 +24,9 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
   // render takes many meshes (files, folders, globs), rendered in one process.
   render->remove_option(render->get_option("MESH"));
   render->add_option("MESH", o.Meshes,
-    "Mesh files (.obj .ply .stl .vtp .vtk), folders of them, or quoted globs; with more than "
-    "one, -o is a template such as 'thumbs/{mesh}.png'");
+    std::string("Mesh files (") + vtkShadelabMeshReader::GetKnownExtensions() +
+      "), folders of them, or quoted globs; with more than one, -o is a template such as "
+      "'thumbs/{mesh}.png'");
   // With a scene file, the file says all that these say.
   std::vector<CLI::Option*> sceneSettings =
     render->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });

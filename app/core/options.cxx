@@ -2,6 +2,7 @@
 
 #include "core/cli_choice.h"
 #include "vtkShadelabMeshNormals.h"
+#include "vtkShadelabMeshReader.h"
 
 #include <CLI/CLI.hpp>
 
@@ -210,10 +211,15 @@ std::vector<std::string> LectureMaterialNames()
   return names;
 }
 
+std::string MeshFileHelp()
+{
+  return std::string("Mesh file: ") + vtkShadelabMeshReader::GetKnownExtensions();
+}
+
 void AddSceneOptions(CLI::App& command, SceneOptions& o)
 {
   // Required unless a scene file gives the meshes (the render command checks).
-  command.add_option("MESH", o.Mesh, "Mesh file: .obj .ply .stl .vtp .vtk");
+  command.add_option("MESH", o.Mesh, MeshFileHelp());
   AddChoice(command, "--shading", o.ShadingRule, "Shading rule (default phong)");
   AddChoice(command, "--reflection", o.ReflectionModel, "Specular term (default blinn)");
   AddMaterialOptions(command, o);

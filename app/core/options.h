@@ -172,6 +172,9 @@ std::pair<int, int> ParseShard(const std::string& text);
 /** The lecture's material names, in its table's order. */
 std::vector<std::string> LectureMaterialNames();
 
+/** "Mesh file: .obj .ply ...": a command's MESH help, from the formats the reader knows. */
+std::string MeshFileHelp();
+
 /** Declares the scene options on a command. */
 void AddSceneOptions(CLI::App& command, SceneOptions& options);
 

@@ -2,6 +2,7 @@
 
 #include "scene/scene_file_settings.h"
 #include "scene/scene_file_values.h"
+#include "shadelabJsonProblem.h"
 #include "shadelabSceneSchema.h" // generated from data/scene.schema.json
 
 #include <cerrno>
@@ -35,17 +36,7 @@ std::string ParseSceneJson(const std::string& path, json& scene)
   }
   catch (const json::exception& e)
   {
-    // A syntax error ("[json.exception.parse_error.101] parse error at line
-    // 3, column 5: ..."), or a number too large for a double
-    // ("[json.exception.out_of_range.406] number overflow parsing '7e999'":
-    // a finding of fuzz_scene_file).
-    std::string what = e.what();
-    const auto at = what.find("at line ");
-    const auto close = what.find("] ");
-    what = at != std::string::npos ? what.substr(at + 3)
-      : close != std::string::npos ? what.substr(close + 2)
-                                   : what;
-    return "not JSON: " + what;
+    return "not JSON: " + JsonProblem(e);
   }
   return {};
 }

@@ -93,7 +93,7 @@ bool TextScanner::NextLine()
     {
       ++this->Position;
     }
-    if (this->Position < this->LineEnd)
+    if (this->Position < this->LineEnd && !this->AtComment())
     {
       return true;
     }
@@ -107,8 +107,13 @@ std::string_view TextScanner::NextToken()
   {
     ++this->Position;
   }
+  if (this->Position < this->LineEnd && this->AtComment())
+  {
+    this->Position = this->LineEnd;
+  }
   const std::size_t start = this->Position;
-  while (this->Position < this->LineEnd && !IsSpace(this->Text[this->Position]))
+  while (
+    this->Position < this->LineEnd && !IsSpace(this->Text[this->Position]) && !this->AtComment())
   {
     ++this->Position;
   }

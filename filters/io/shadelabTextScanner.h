@@ -6,6 +6,8 @@
  * are parsed with std::from_chars: no locale, no copies, and a token must be
  * exactly one number ("1.5x" is malformed, not 1.5). Blank lines are skipped
  * but still counted, so that messages name the line a user's editor shows.
+ * With a comment character (OFF's '#'), the text from it to the line's end
+ * is blank too.
  */
 #ifndef shadelabTextScanner_h
 #define shadelabTextScanner_h
@@ -30,8 +32,9 @@ std::string ToUpper(std::string_view text);
 class TextScanner
 {
 public:
-  explicit TextScanner(std::string_view text)
+  explicit TextScanner(std::string_view text, char comment = '\0')
     : Text(text)
+    , Comment(comment)
   {
   }
 
@@ -66,7 +69,10 @@ public:
   void JumpTo(std::size_t offset);
 
 private:
+  bool AtComment() const { return this->Comment && this->Text[this->Position] == this->Comment; }
+
   std::string_view Text;
+  char Comment;
   std::size_t NextLineStart = 0;
   std::size_t Position = 0; // within the current line
   std::size_t LineEnd = 0;

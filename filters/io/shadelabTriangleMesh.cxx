@@ -4,10 +4,12 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -35,6 +37,17 @@ vtkSmartPointer<vtkCellArray> MakeCells(
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsetArray, idArray);
   return cells;
+}
+
+vtkSmartPointer<vtkFloatArray> MakeFloatArray(
+  const char* name, int components, const std::vector<float>& values)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
 }
 
 std::string Number(vtkIdType index, vtkIdType firstNumber)
@@ -107,6 +120,29 @@ vtkSmartPointer<vtkFloatArray> FloatNormals(
     floats->SetTuple3(i, n[0], n[1], n[2]);
   }
   return floats;
+}
+
+// A point attribute that goes along: the float array of that name with
+// `components` per point, its values finite; null where there is none.
+vtkSmartPointer<vtkFloatArray> PointAttribute(vtkPolyData* polygons, const char* name,
+  int components, const char* what, vtkIdType pointCount, vtkIdType firstNumber)
+{
+  auto* array = vtkFloatArray::SafeDownCast(polygons->GetPointData()->GetArray(name));
+  if (!array || array->GetNumberOfComponents() != components ||
+    array->GetNumberOfTuples() != pointCount)
+  {
+    return nullptr;
+  }
+  const float* values = array->GetPointer(0);
+  for (vtkIdType i = 0; i < components * pointCount; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      throw MeshReadError(std::string(NonFinite(values[i])) + " " + what + " in vertex " +
+        Number(i / components, firstNumber));
+    }
+  }
+  return array;
 }
 
 void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
@@ -186,11 +222,16 @@ void AddStrip(vtkIdType size, const vtkIdType* ids, vtkCellArray* triangles)
   }
 }
 
-vtkSmartPointer<vtkCellArray> Triangulate(vtkPolyData* polygons, vtkPoints* points)
+// The triangles of the faces, then of the strips; `sources` gets the cell
+// (in VTK's numbering: faces, then strips) that each triangle comes from,
+// and stays empty where the faces are all triangles already.
+vtkSmartPointer<vtkCellArray> Triangulate(
+  vtkPolyData* polygons, vtkPoints* points, std::vector<vtkIdType>& sources)
 {
   vtkCellArray* faces = polygons->GetPolys();
   vtkCellArray* strips = polygons->GetStrips();
   const bool hasStrips = strips && strips->GetNumberOfCells() > 0;
+  const vtkIdType faceCount = faces ? faces->GetNumberOfCells() : 0;
   if (!hasStrips && faces && faces->IsHomogeneous() == 3)
   {
     return faces; // already triangles: the common case, shared as it is
@@ -200,6 +241,8 @@ vtkSmartPointer<vtkCellArray> Triangulate(vtkPolyData* polygons, vtkPoints* poin
   vtkNew<vtkIdList> local;
   vtkIdType size;
   const vtkIdType* ids;
+  const auto addSources = [&](vtkIdType cell)
+  { sources.resize(triangles->GetNumberOfCells(), cell); };
   if (faces)
   {
     auto cell = vtk::TakeSmartPointer(faces->NewIterator());
@@ -214,6 +257,7 @@ vtkSmartPointer<vtkCellArray> Triangulate(vtkPolyData* polygons, vtkPoints* poin
       {
         AddPolygon(size, ids, points, polygon, local, triangles);
       }
+      addSources(cell->GetCurrentCellId());
     }
   }
   if (hasStrips)
@@ -223,9 +267,37 @@ vtkSmartPointer<vtkCellArray> Triangulate(vtkPolyData* polygons, vtkPoints* poin
     {
       cell->GetCurrentCell(size, ids);
       AddStrip(size, ids, triangles);
+      addSources(faceCount + cell->GetCurrentCellId());
     }
   }
   return triangles;
+}
+
+// The part of each triangle from that of its face or strip; null where the
+// polygons have no int array of parts, one per cell.
+vtkSmartPointer<vtkIntArray> TriangleParts(
+  vtkPolyData* polygons, const std::vector<vtkIdType>& sources)
+{
+  vtkSmartPointer<vtkIntArray> parts =
+    vtkIntArray::SafeDownCast(polygons->GetCellData()->GetArray(PartArrayName));
+  const vtkIdType cells = (polygons->GetPolys() ? polygons->GetPolys()->GetNumberOfCells() : 0) +
+    (polygons->GetStrips() ? polygons->GetStrips()->GetNumberOfCells() : 0);
+  if (!parts || parts->GetNumberOfComponents() != 1 || parts->GetNumberOfTuples() != cells)
+  {
+    return nullptr;
+  }
+  if (sources.empty())
+  {
+    return parts; // one triangle per face
+  }
+  auto result = vtkSmartPointer<vtkIntArray>::New();
+  result->SetName(PartArrayName);
+  result->SetNumberOfValues(static_cast<vtkIdType>(sources.size()));
+  for (std::size_t t = 0; t < sources.size(); ++t)
+  {
+    result->SetValue(static_cast<vtkIdType>(t), parts->GetValue(sources[t]));
+  }
+  return result;
 }
 }
 
@@ -242,15 +314,27 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh)
   data->SetPoints(points);
   if (!mesh.Normals.empty())
   {
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Normals.size() / 3));
-    std::copy(mesh.Normals.begin(), mesh.Normals.end(), normals->GetPointer(0));
-    data->GetPointData()->SetNormals(normals);
+    data->GetPointData()->SetNormals(MakeFloatArray("Normals", 3, mesh.Normals));
+  }
+  if (!mesh.Colors.empty())
+  {
+    data->GetPointData()->AddArray(MakeFloatArray(ColorsArrayName, 4, mesh.Colors));
+  }
+  if (!mesh.TextureCoordinates.empty())
+  {
+    data->GetPointData()->SetTCoords(
+      MakeFloatArray(TextureCoordinatesArrayName, 2, mesh.TextureCoordinates));
   }
   data->SetPolys(MakeCells(mesh.FaceOffsets, mesh.FaceIds));
   data->SetStrips(MakeCells(mesh.StripOffsets, mesh.StripIds));
+  if (!mesh.Parts.empty())
+  {
+    vtkNew<vtkIntArray> parts;
+    parts->SetName(PartArrayName);
+    parts->SetNumberOfValues(static_cast<vtkIdType>(mesh.Parts.size()));
+    std::copy(mesh.Parts.begin(), mesh.Parts.end(), parts->GetPointer(0));
+    data->GetCellData()->AddArray(parts);
+  }
   return data;
 }
 
@@ -259,12 +343,17 @@ void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType f
   vtkSmartPointer<vtkDoubleArray> xyz = DoublePoints(polygons, firstNumber);
   const vtkIdType pointCount = xyz->GetNumberOfTuples();
   vtkSmartPointer<vtkFloatArray> normals = FloatNormals(polygons, pointCount, firstNumber);
+  vtkSmartPointer<vtkFloatArray> colors =
+    PointAttribute(polygons, ColorsArrayName, 4, "colour", pointCount, firstNumber);
+  vtkSmartPointer<vtkFloatArray> textureCoordinates = PointAttribute(
+    polygons, TextureCoordinatesArrayName, 2, "texture coordinate", pointCount, firstNumber);
   CheckCells(polygons->GetPolys(), "face", pointCount, firstNumber);
   CheckCells(polygons->GetStrips(), "triangle strip", pointCount, firstNumber);
 
   vtkNew<vtkPoints> points;
   points->SetData(xyz);
-  vtkSmartPointer<vtkCellArray> cells = Triangulate(polygons, points);
+  std::vector<vtkIdType> sources;
+  vtkSmartPointer<vtkCellArray> cells = Triangulate(polygons, points, sources);
   if (cells->GetNumberOfCells() == 0)
   {
     throw MeshReadError("no triangles");
@@ -275,6 +364,18 @@ void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType f
   if (normals)
   {
     triangles->GetPointData()->SetNormals(normals);
+  }
+  if (colors)
+  {
+    triangles->GetPointData()->AddArray(colors);
+  }
+  if (textureCoordinates)
+  {
+    triangles->GetPointData()->SetTCoords(textureCoordinates);
+  }
+  if (vtkSmartPointer<vtkIntArray> parts = TriangleParts(polygons, sources))
+  {
+    triangles->GetCellData()->AddArray(parts);
   }
 }
 }

@@ -1,12 +1,14 @@
 /**
  * @brief   the last step that every mesh reader shares
  *
- * A parser collects points, optional point normals, faces and triangle
+ * A parser collects points, optional point attributes, faces and triangle
  * strips in a PolygonMesh; ToPolyData() wraps them as vtkPolyData, and
  * MakeTriangleMesh() checks that data (from a parser or from VTK's own
  * readers) and turns it into what every shadelab reader outputs: double
- * points, triangles only, and the point normals, if any, as the float array
- * "Normals".
+ * points, triangles only, the point normals, if any, as the float array
+ * "Normals", and where the file has them the vertex colours, texture
+ * coordinates and the part each triangle comes from (the arrays named below),
+ * for the materials and textures that go with them.
  */
 #ifndef shadelabTriangleMesh_h
 #define shadelabTriangleMesh_h
@@ -20,18 +22,40 @@ class vtkPolyData;
 
 namespace shadelab
 {
+/**
+ * Point data: vertex colours, float RGBA in 0..1 as the file gives them (no
+ * colour-space conversion; a file without alpha gets 1).
+ */
+constexpr const char* ColorsArrayName = "Colors";
+/**
+ * Point data, also the active texture coordinates: float s t with VTK's
+ * (OpenGL's) origin at the image's bottom-left; formats that count t from
+ * the top (glTF) are turned over by their reader.
+ */
+constexpr const char* TextureCoordinatesArrayName = "TextureCoordinates";
+/** Cell data: int, the part of the file that each triangle comes from (glTF: primitive). */
+constexpr const char* PartArrayName = "Part";
+/** Field data, one per part: its material's name (string), "" without one. */
+constexpr const char* PartMaterialsArrayName = "PartMaterials";
+/** Field data, one per part: its material's index in the file (int), -1 without one. */
+constexpr const char* PartMaterialIndicesArrayName = "PartMaterialIndices";
+
 struct PolygonMesh
 {
-  std::vector<double> Points; // x y z per point
-  std::vector<float> Normals; // nx ny nz per point, or empty
+  std::vector<double> Points;            // x y z per point
+  std::vector<float> Normals;            // nx ny nz per point, or empty
+  std::vector<float> Colors;             // r g b a per point, or empty
+  std::vector<float> TextureCoordinates; // s t per point, or empty
   // Face i is FaceIds[FaceOffsets[i]] .. FaceIds[FaceOffsets[i + 1] - 1].
   std::vector<vtkIdType> FaceOffsets{ 0 };
   std::vector<vtkIdType> FaceIds;
   std::vector<vtkIdType> StripOffsets{ 0 };
   std::vector<vtkIdType> StripIds;
+  // The part of each face, then of each strip (VTK's cell order); or empty.
+  std::vector<int> Parts;
 };
 
-/** The parser's arrays as vtkPolyData: points, normals, polys and strips. */
+/** The parser's arrays as vtkPolyData: points, point and cell attributes, polys and strips. */
 vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);
 
 /**
@@ -42,8 +66,11 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);
  * and lines are dropped). Faces of 4+ vertices are triangulated by VTK's ear
  * cutting (right for concave ones), strips with alternating orientation; the
  * zero-area triangles that strips use to join runs are dropped, those of
- * faces kept. Vertices, faces and strips are numbered from
- * `firstNumber` in messages (1 for OBJ, 0 for the rest).
+ * faces kept. The colours, texture coordinates and parts (by the names
+ * above, with those types and sizes; other arrays are dropped) go along:
+ * each triangle has the part of its face or strip. Vertices, faces and
+ * strips are numbered from `firstNumber` in messages (1 for OBJ, 0 for the
+ * rest).
  */
 void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType firstNumber = 0);
 }

@@ -56,9 +56,34 @@ FilePointer Open(const char* fileName, std::size_t& size)
   return file;
 }
 
-// The memory this process can still get: the system's MemAvailable, or
-// less where a resource limit says so. 0 when nothing can be learnt.
-std::uint64_t AvailableMemory()
+// Reading needs the file's bytes and, for the mesh made from them, about as
+// many again (points and faces in double and 64-bit ids). A file bigger than
+// half of what the process can get fails here with a message, rather than
+// overcommitted memory meeting the kernel's OOM killer halfway through.
+void CheckMemoryFor(std::uint64_t fileBytes)
+{
+  const std::uint64_t available = vtkShadelabFileReader::AvailableMemory();
+  if (available > 0 && fileBytes > available / 2)
+  {
+    throw shadelab::MeshReadError("is " + std::to_string(fileBytes >> 20) +
+        " MiB; reading it needs more than the " + std::to_string(available >> 20) +
+        " MiB of memory available",
+      vtkErrorCode::UnknownError);
+  }
+}
+}
+
+vtkShadelabFileReader::vtkShadelabFileReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkShadelabFileReader::~vtkShadelabFileReader()
+{
+  this->SetFileName(nullptr);
+}
+
+std::uint64_t vtkShadelabFileReader::AvailableMemory()
 {
   std::uint64_t available = 0;
   std::ifstream meminfo("/proc/meminfo");
@@ -83,33 +108,6 @@ std::uint64_t AvailableMemory()
     }
   }
   return available;
-}
-
-// Reading needs the file's bytes and, for the mesh made from them, about as
-// many again (points and faces in double and 64-bit ids). A file bigger than
-// half of what the process can get fails here with a message, rather than
-// overcommitted memory meeting the kernel's OOM killer halfway through.
-void CheckMemoryFor(std::uint64_t fileBytes)
-{
-  const std::uint64_t available = AvailableMemory();
-  if (available > 0 && fileBytes > available / 2)
-  {
-    throw shadelab::MeshReadError("is " + std::to_string(fileBytes >> 20) +
-        " MiB; reading it needs more than the " + std::to_string(available >> 20) +
-        " MiB of memory available",
-      vtkErrorCode::UnknownError);
-  }
-}
-}
-
-vtkShadelabFileReader::vtkShadelabFileReader()
-{
-  this->SetNumberOfInputPorts(0);
-}
-
-vtkShadelabFileReader::~vtkShadelabFileReader()
-{
-  this->SetFileName(nullptr);
 }
 
 std::string vtkShadelabFileReader::ReadFileBytes(const char* fileName)

@@ -17,6 +17,7 @@
 
 #include <vtkPolyDataAlgorithm.h>
 
+#include <cstdint>
 #include <string>
 
 class vtkShadelabFileReader : public vtkPolyDataAlgorithm
@@ -38,6 +39,22 @@ public:
   vtkGetMacro(ReadNormals, bool);
   vtkBooleanMacro(ReadNormals, bool);
 
+  /**
+   * The whole file in memory; throws MeshReadError "cannot open: <strerror>"
+   * and the like. Also for the files that a mesh file refers to (glTF's
+   * buffers).
+   */
+  static std::string ReadFileBytes(const char* fileName);
+
+  /** Throws like ReadFileBytes() when the file cannot be opened for reading. */
+  static void CheckReadable(const char* fileName);
+
+  /**
+   * The memory this process can still get: the system's MemAvailable, or
+   * less where a resource limit says so; 0 when nothing can be learnt.
+   */
+  static std::uint64_t AvailableMemory();
+
 protected:
   vtkShadelabFileReader();
   ~vtkShadelabFileReader() override;
@@ -47,12 +64,6 @@ protected:
 
   /** Reads `fileName` into `triangles`, or throws shadelab::MeshReadError. */
   virtual void ReadMesh(const char* fileName, vtkPolyData* triangles) = 0;
-
-  /** The whole file in memory; throws "cannot open: <strerror>" and the like. */
-  static std::string ReadFileBytes(const char* fileName);
-
-  /** Throws like ReadFileBytes() when the file cannot be opened for reading. */
-  static void CheckReadable(const char* fileName);
 
   char* FileName = nullptr;
   bool ReadNormals = true;

@@ -3,8 +3,10 @@
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
+#include "vtkShadelabGLTFReader.h"
 #include "vtkShadelabLegacyVTKReader.h"
 #include "vtkShadelabOBJReader.h"
+#include "vtkShadelabOFFReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYReader.h"
 #include "vtkShadelabSTLReader.h"
@@ -99,7 +101,7 @@ void ReadWith(const char* fileName, bool readNormals, vtkPolyData* triangles)
 
 const char* vtkShadelabMeshReader::GetKnownExtensions()
 {
-  return ".obj .ply .stl .vtp .vtk";
+  return ".obj .ply .stl .off .gltf .glb .vtp .vtk";
 }
 
 void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
@@ -124,6 +126,14 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
     reader->SetFileName(fileName);
     NestedReader(reader).Update();
     shadelab::MakeTriangleMesh(reader->GetOutput(), triangles);
+  }
+  else if (extension == ".gltf" || extension == ".glb")
+  {
+    ReadWith<vtkShadelabGLTFReader>(fileName, this->ReadNormals, triangles);
+  }
+  else if (extension == ".off")
+  {
+    ReadWith<vtkShadelabOFFReader>(fileName, this->ReadNormals, triangles);
   }
   else if (extension == ".vtk")
   {

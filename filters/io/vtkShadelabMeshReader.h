@@ -4,10 +4,13 @@
  *
  * The extension (case-insensitive) picks the reader: .obj
  * (vtkShadelabOBJReader), .ply (vtkShadelabPLYReader), .stl
- * (vtkShadelabSTLReader), .vtk (vtkShadelabLegacyVTKReader: legacy files of
+ * (vtkShadelabSTLReader), .off (vtkShadelabOFFReader), .gltf and .glb
+ * (vtkShadelabGLTFReader), .vtk (vtkShadelabLegacyVTKReader: legacy files of
  * polydata only) and .vtp (VTK's vtkXMLPolyDataReader). The output is what
- * every vtkShadelabFileReader gives: double points, triangles only, and the
- * file's point normals as the float array "Normals".
+ * every vtkShadelabFileReader gives: double points, triangles only, the
+ * file's point normals as the float array "Normals", and where the format
+ * has them, vertex colours, texture coordinates and parts
+ * (shadelabTriangleMesh.h).
  *
  * The error of the reader it runs becomes this reader's one error, so that
  * the program prints a single line. vtkXMLPolyDataReader is given only
@@ -26,7 +29,7 @@ public:
   static vtkShadelabMeshReader* New();
   vtkTypeMacro(vtkShadelabMeshReader, vtkShadelabFileReader);
 
-  /** The extensions it reads, for messages and help: ".obj .ply .stl .vtp .vtk". */
+  /** The extensions it reads, for messages and help: ".obj .ply .stl .off .gltf .glb .vtp .vtk". */
   static const char* GetKnownExtensions();
 
 protected:

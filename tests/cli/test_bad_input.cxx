@@ -96,6 +96,50 @@ const BadCase Cases[] = {
       return WithMesh(d, "short.stl", stl);
     },
     1, { "short.stl" } },
+  { "OffHeaderLies",
+    [](const TempDir& d)
+    { return WithMesh(d, "liar.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"); },
+    1, { "liar.off", "truncated", "2 faces" } },
+  { "OffIndexOutOfRange",
+    [](const TempDir& d)
+    { return WithMesh(d, "range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"); },
+    1, { "range.off", "line 6", "vertex 3" } },
+  { "OffNaN",
+    [](const TempDir& d)
+    { return WithMesh(d, "nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"); },
+    1, { "nan.off", "NaN" } },
+  { "GltfMalformedJson",
+    [](const TempDir& d) { return WithMesh(d, "broken.gltf", "{\"asset\": {\"version\": "); }, 1,
+    { "broken.gltf", "not JSON" } },
+  { "GltfMissingBin",
+    [](const TempDir& d)
+    {
+      return WithMesh(d, "lonely.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"gone.bin\", "
+        "\"byteLength\": 36}]}");
+    },
+    1, { "lonely.gltf", "gone.bin", "No such file" } },
+  { "GltfAccessorBeyondItsView",
+    [](const TempDir& d)
+    {
+      // 36 bytes: three float positions; the accessor says 30.
+      const float xyz[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+      WriteText(d / "tri.bin", Binary(xyz, sizeof xyz));
+      return WithMesh(d, "tri.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"tri.bin\", "
+        "\"byteLength\": 36}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}], "
+        "\"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": 30, "
+        "\"type\": \"VEC3\"}], \"meshes\": [{\"primitives\": [{\"attributes\": "
+        "{\"POSITION\": 0}}]}]}");
+    },
+    1, { "tri.gltf", "accessor 0 needs 30 elements" } },
+  { "GlbTruncated",
+    [](const TempDir& d)
+    {
+      const std::uint32_t header[5] = { 0x46546C67, 2, 4096, 64, 0x4E4F534A };
+      return WithMesh(d, "cut.glb", Binary(header, sizeof header) + "{\"asset\"");
+    },
+    1, { "cut.glb", "truncated" } },
   { "UnknownImageFormat",
     [](const TempDir& d)
     {

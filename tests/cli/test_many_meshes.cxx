@@ -59,7 +59,7 @@ TEST(ManyMeshes, MistakesAreOneLineErrors)
         " and " + cow + ": name each mesh's, as with {mesh} or {index}\n" },
     { { (dir / "empty").string(), "-o", (dir / "{mesh}.png").string() },
       "shadelab: error: " + (dir / "empty").string() +
-        ": no mesh files in the folder (known: .obj .ply .stl .vtp .vtk)\n" },
+        ": no mesh files in the folder (known: .obj .ply .stl .off .gltf .glb .vtp .vtk)\n" },
     { { (dir / "*.ply").string(), "-o", (dir / "{mesh}.png").string() },
       "shadelab: error: " + (dir / "*.ply").string() + ": matches no file\n" },
   };

@@ -62,7 +62,8 @@ static std::vector<MeshAndShading> EveryCase()
   for (const auto& entry : std::filesystem::directory_iterator(TestMesh("")))
   {
     const std::string ext = entry.path().extension().string();
-    if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".vtp" || ext == ".vtk")
+    if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off" || ext == ".gltf" ||
+      ext == ".glb" || ext == ".vtp" || ext == ".vtk")
     {
       meshes.push_back(entry.path().filename().string());
     }

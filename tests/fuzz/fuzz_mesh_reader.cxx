@@ -1,16 +1,21 @@
 // libFuzzer target: bytes as a mesh file of one format, read by
 // vtkShadelabMeshReader exactly as `shadelab render` reads it, then given to
 // the normals filter. Built once per format with SHADELAB_FUZZ_EXTENSION
-// (".obj", ".ply", ".stl", ".vtk"). A finding is a crash, a sanitizer
-// report, or a mesh that reads but holds out-of-range point ids or
-// non-finite points.
+// (".obj", ".ply", ".stl", ".vtk", ".off", ".gltf", ".glb"). A finding is a
+// crash, a sanitizer report, or a mesh that reads but holds out-of-range
+// point ids, non-finite points, or attributes (colours, texture coordinates,
+// parts) that are not one per point or per triangle.
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkExecutive.h>
 #include <vtkObject.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -77,6 +82,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::abort(); // the readers refuse out-of-range indices
       }
     }
+  }
+  vtkPointData* pointData = mesh->GetPointData();
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    if (pointData->GetArray(a)->GetNumberOfTuples() != points)
+    {
+      std::abort(); // a point attribute is one tuple per point
+    }
+  }
+  vtkDataArray* parts = mesh->GetCellData()->GetArray(shadelab::PartArrayName);
+  if (parts && parts->GetNumberOfTuples() != mesh->GetNumberOfPolys())
+  {
+    std::abort(); // a part per triangle
   }
   auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
   normals->SetInputData(mesh);

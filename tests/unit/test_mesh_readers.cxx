@@ -1,5 +1,6 @@
 // The mesh readers: every test mesh (tests/data/meshes), small hand-made files of each format
 // and form, and bad input of every kind (one-line error, no partial mesh).
+#include "mesh_reader_fixture.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYReader.h"
@@ -43,103 +44,7 @@
 
 namespace
 {
-namespace fs = std::filesystem;
-
-const fs::path TestMeshes = fs::path(SHADELAB_TEST_MESHES);
-
-struct ReadResult
-{
-  bool Ok = false;
-  vtkSmartPointer<vtkPolyData> Mesh;
-  std::string Error;
-  unsigned long ErrorCode = vtkErrorCode::NoError;
-  std::vector<std::string> Warnings;
-};
-
-// VTK 9.1 also logs each error, several lines long, to stderr; the captured
-// one line is what the tests look at.
-[[maybe_unused]] const bool QuietLogger = []
-{
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  return true;
-}();
-
-ReadResult ReadWith(vtkShadelabFileReader* reader, const fs::path& path)
-{
-  const shadelab::MessageScope messages;
-  reader->SetFileName(path.c_str());
-  ReadResult result;
-  result.Ok = reader->GetExecutive()->Update() != 0;
-  result.Mesh = reader->GetOutput();
-  result.Error = messages.FirstError();
-  result.ErrorCode = reader->GetErrorCode();
-  result.Warnings = messages.Warnings();
-  return result;
-}
-
-ReadResult Read(const fs::path& path)
-{
-  vtkNew<vtkShadelabMeshReader> reader;
-  return ReadWith(reader, path);
-}
-
-std::vector<std::array<vtkIdType, 3>> Triangles(vtkPolyData* mesh)
-{
-  std::vector<std::array<vtkIdType, 3>> triangles;
-  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cell->GetCurrentCell(size, ids);
-    EXPECT_EQ(size, 3);
-    triangles.push_back({ ids[0], ids[1], ids[2] });
-  }
-  return triangles;
-}
-
-// The un-normalised normal: its length is twice the triangle's area.
-std::array<double, 3> AreaNormal(vtkPolyData* mesh, const std::array<vtkIdType, 3>& triangle)
-{
-  double a[3], b[3], c[3], ab[3], ac[3];
-  mesh->GetPoint(triangle[0], a);
-  mesh->GetPoint(triangle[1], b);
-  mesh->GetPoint(triangle[2], c);
-  for (int k = 0; k < 3; ++k)
-  {
-    ab[k] = b[k] - a[k];
-    ac[k] = c[k] - a[k];
-  }
-  std::array<double, 3> n;
-  vtkMath::Cross(ab, ac, n.data());
-  return n;
-}
-
-// What every successful read must give: triangles only, double points, all
-// finite, nothing but the normals as point data, no verts/lines/strips.
-void ExpectTriangleMesh(vtkPolyData* mesh)
-{
-  ASSERT_NE(mesh->GetPoints(), nullptr);
-  EXPECT_EQ(mesh->GetPoints()->GetDataType(), VTK_DOUBLE);
-  EXPECT_EQ(mesh->GetNumberOfVerts() + mesh->GetNumberOfLines() + mesh->GetNumberOfStrips(), 0);
-  EXPECT_GT(mesh->GetNumberOfPolys(), 0);
-  EXPECT_EQ(mesh->GetPolys()->IsHomogeneous(), 3);
-  double p[3];
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, p);
-    ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) << i;
-  }
-  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-  EXPECT_LE(mesh->GetPointData()->GetNumberOfArrays(), normals ? 1 : 0);
-  if (normals)
-  {
-    EXPECT_TRUE(vtkFloatArray::SafeDownCast(normals));
-    EXPECT_STREQ(normals->GetName(), "Normals");
-    EXPECT_EQ(normals->GetNumberOfComponents(), 3);
-    EXPECT_EQ(normals->GetNumberOfTuples(), mesh->GetNumberOfPoints());
-  }
-}
+using namespace shadelab::test;
 
 // A file's lines that start with `keyword`, counted by their number of tokens.
 std::vector<std::size_t> StatementSizes(const fs::path& path, const std::string& keyword)
@@ -163,68 +68,6 @@ std::vector<std::size_t> StatementSizes(const fs::path& path, const std::string&
   return sizes;
 }
 
-// Appends `value` in the given byte order (host-independent).
-template <typename T>
-void Put(std::string& bytes, T value, bool bigEndian = false)
-{
-  if (bigEndian)
-  {
-    vtkByteSwap::SwapBE(&value);
-  }
-  else
-  {
-    vtkByteSwap::SwapLE(&value);
-  }
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-class MeshReaders : public ::testing::Test
-{
-protected:
-  void SetUp() override
-  {
-    std::string pattern = (fs::temp_directory_path() / "shadelab-readers-XXXXXX").string();
-    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-    this->Dir = pattern;
-  }
-  void TearDown() override { fs::remove_all(this->Dir); }
-
-  fs::path Write(const std::string& name, const std::string& bytes) const
-  {
-    const fs::path path = this->Dir / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-
-  // Reads `bytes` as file `name` and checks that it fails the way bad input
-  // must: request failed, an error code, an empty output, and one line that
-  // contains every key word.
-  void ExpectError(
-    const std::string& name, const std::string& bytes, std::initializer_list<const char*> keyWords)
-  {
-    this->ExpectError(this->Write(name, bytes), keyWords);
-  }
-
-  void ExpectError(const fs::path& path, std::initializer_list<const char*> keyWords)
-  {
-    SCOPED_TRACE(path.filename().string());
-    const ReadResult result = Read(path);
-    EXPECT_FALSE(result.Ok);
-    EXPECT_NE(result.ErrorCode, vtkErrorCode::NoError);
-    EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 0);
-    EXPECT_EQ(result.Mesh->GetNumberOfCells(), 0);
-    ASSERT_FALSE(result.Error.empty());
-    EXPECT_EQ(result.Error.find('\n'), std::string::npos);
-    for (const char* word : keyWords)
-    {
-      EXPECT_NE(result.Error.find(word), std::string::npos)
-        << "'" << word << "' not in: " << result.Error;
-    }
-  }
-
-  fs::path Dir;
-};
-
 // ---------------------------------------------------------------------------
 // The test meshes
 
@@ -234,7 +77,8 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
   const std::vector<std::pair<std::string, vtkIdType>> expected = { { "cow.obj", 5804 },
     { "fandisk.obj", 12946 }, { "spot.obj", 5856 }, { "stanford-bunny.obj", 69451 },
     { "stanford-bunny.ply", 69451 }, { "suzanne.obj", 2 * 468 + 32 }, { "teapot.obj", 6320 },
-    { "teapot.stl", 6320 } };
+    { "teapot.stl", 6320 }, { "bunny-libigl.off", 6966 }, { "box.gltf", 12 },
+    { "box-assimp.gltf", 12 }, { "box-assimp.glb", 12 }, { "simple-meshes.gltf", 2 } };
   std::set<std::string> covered;
   for (const auto& [name, triangles] : expected)
   {
@@ -247,9 +91,9 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
   }
   for (const auto& entry : fs::directory_iterator(TestMeshes))
   {
-    if (entry.path().filename() == "README.md")
+    if (entry.path().filename() == "README.md" || entry.path().extension() == ".bin")
     {
-      continue; // the meshes' sources and terms
+      continue; // the meshes' sources and terms; a glTF's buffer
     }
     EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
       << entry.path() << " is not in this test's table";
@@ -798,8 +642,8 @@ TEST_F(MeshReaders, EachMessageScopeHasItsOwnErrorsAndWarnings)
 
 TEST_F(MeshReaders, UnknownExtensions)
 {
-  this->ExpectError(
-    "points.xyz", "0 0 0\n", { "unknown mesh format \".xyz\" (known: .obj .ply .stl .vtp .vtk)" });
+  this->ExpectError("points.xyz", "0 0 0\n",
+    { "unknown mesh format \".xyz\" (known: .obj .ply .stl .off .gltf .glb .vtp .vtk)" });
   this->ExpectError("mesh", "v 0 0 0\n", { "unknown mesh format \"\"" });
   EXPECT_EQ(Read(this->Dir / "points.xyz").ErrorCode, vtkErrorCode::UnrecognizedFileTypeError);
 }

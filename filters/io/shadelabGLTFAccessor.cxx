@@ -1,0 +1,277 @@
+#include "shadelabGLTFAccessor.h"
+
+#include "shadelabMeshReadError.h"
+#include "shadelabScalarType.h"
+
+#include <vtkByteSwap.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string_view>
+
+namespace shadelab::gltf
+{
+namespace
+{
+struct ComponentName
+{
+  std::uint64_t Code;
+  ScalarType Type;
+  const char* Name;
+};
+
+constexpr ComponentName ComponentTypes[] = { { 5120, ScalarType::Int8, "BYTE" },
+  { 5121, ScalarType::UInt8, "UNSIGNED_BYTE" }, { 5122, ScalarType::Int16, "SHORT" },
+  { 5123, ScalarType::UInt16, "UNSIGNED_SHORT" }, { 5125, ScalarType::UInt32, "UNSIGNED_INT" },
+  { 5126, ScalarType::Float32, "FLOAT" } };
+
+constexpr std::string_view ElementTypes[] = { "SCALAR", "VEC2", "VEC3", "VEC4" };
+
+[[noreturn]] void Fail(const std::string& message)
+{
+  throw MeshReadError(message);
+}
+
+// An accessor with its ranges checked: element i, component c is at
+// Data + i * Stride + c * SizeOf(Type).
+struct Layout
+{
+  const unsigned char* Data = nullptr;
+  std::uint64_t Count = 0;
+  std::uint64_t Stride = 0;
+  int Components = 0;
+  const ComponentName* Component = nullptr;
+  bool Normalized = false;
+};
+
+std::string Describe(const Layout& layout)
+{
+  return std::string(ElementTypes[layout.Components - 1]) + " of " + layout.Component->Name +
+    (layout.Normalized ? " (normalized)" : "");
+}
+
+const ComponentName& ReadComponentType(const Json& accessor, const std::string& where)
+{
+  const std::uint64_t code = Unsigned(accessor, "componentType", where);
+  for (const ComponentName& entry : ComponentTypes)
+  {
+    if (entry.Code == code)
+    {
+      return entry;
+    }
+  }
+  Fail(where + ": componentType " + std::to_string(code) + " is not a glTF component type");
+}
+
+// SCALAR .. VEC4 as 1 .. 4; the matrix types no mesh attribute uses.
+int ReadElementType(const Json& accessor, const std::string& where)
+{
+  const std::string type = String(accessor, "type", where);
+  for (int k = 0; k < 4; ++k)
+  {
+    if (type == ElementTypes[k])
+    {
+      return k + 1;
+    }
+  }
+  Fail(where + ": type '" + type + "' is not SCALAR, VEC2, VEC3 or VEC4");
+}
+
+// The bytes of accessor `where` in its bufferView, all ranges checked.
+const unsigned char* ViewData(
+  const Document& document, const Json& accessor, Layout& layout, const std::string& where)
+{
+  const std::uint64_t viewIndex = Unsigned(accessor, "bufferView", where);
+  const std::string viewName = "bufferView " + std::to_string(viewIndex);
+  const Json& view = Item(document.Root, "bufferViews", viewIndex, where);
+  const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
+  Item(document.Root, "buffers", bufferIndex, viewName);
+  const std::string_view buffer = document.Buffers[bufferIndex];
+  const std::uint64_t viewOffset = Unsigned(view, "byteOffset", viewName, 0);
+  const std::uint64_t viewLength = Unsigned(view, "byteLength", viewName);
+  if (viewOffset > buffer.size() || viewLength > buffer.size() - viewOffset)
+  {
+    Fail(viewName + " takes bytes " + std::to_string(viewOffset) + " to " +
+      std::to_string(viewOffset + viewLength) + " of buffer " + std::to_string(bufferIndex) +
+      ", which has " + std::to_string(buffer.size()));
+  }
+  const std::uint64_t elementBytes = layout.Components * SizeOf(layout.Component->Type);
+  layout.Stride = elementBytes; // tightly packed, unless the view says otherwise
+  if (view.contains("byteStride"))
+  {
+    layout.Stride = Unsigned(view, "byteStride", viewName);
+    if (layout.Stride < std::max<std::uint64_t>(elementBytes, 4) || layout.Stride > 252 ||
+      layout.Stride % 4 != 0)
+    {
+      Fail(viewName + ": byteStride " + std::to_string(layout.Stride) +
+        " is not a multiple of 4 from " + std::to_string(std::max<std::uint64_t>(elementBytes, 4)) +
+        " to 252, as " + where + "'s elements need");
+    }
+  }
+  const std::uint64_t offset = Unsigned(accessor, "byteOffset", where, 0);
+  // count <= viewLength keeps the product below 2^64 (stride <= 252).
+  if (offset > viewLength || layout.Count > viewLength ||
+    layout.Stride * (layout.Count - 1) + elementBytes > viewLength - offset)
+  {
+    Fail(where + " needs " + std::to_string(layout.Count) + " elements of " +
+      std::to_string(elementBytes) + " bytes from byte " + std::to_string(offset) + " of " +
+      viewName + ", which has " + std::to_string(viewLength));
+  }
+  return reinterpret_cast<const unsigned char*>(buffer.data()) + viewOffset + offset;
+}
+
+// Throws unless `use` allows the accessor's element and component types.
+void CheckUse(
+  const Layout& layout, const AccessorUse& use, std::uint64_t index, const std::string& where)
+{
+  const ScalarType type = layout.Component->Type;
+  if (use.Indices)
+  {
+    if (layout.Components != 1 || layout.Normalized ||
+      (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32))
+    {
+      Fail(where + ": indices accessor " + std::to_string(index) + " is " + Describe(layout) +
+        ", not SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+    }
+    return;
+  }
+  const bool isFloat = type == ScalarType::Float32 && !layout.Normalized;
+  const bool isNormalized = use.NormalizedIntegers && layout.Normalized &&
+    (type == ScalarType::UInt8 || type == ScalarType::UInt16);
+  if (layout.Components < use.MinComponents || layout.Components > use.MaxComponents ||
+    (!isFloat && !isNormalized))
+  {
+    Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
+      Describe(layout) + ", which glTF does not allow there");
+  }
+}
+
+// The accessor's layout for `use` (of `referrer`): its types checked
+// against the use before any range is looked at, then its ranges.
+Layout ReadLayout(const Document& document, std::uint64_t index, const AccessorUse& use,
+  const std::string& referrer)
+{
+  const std::string where = "accessor " + std::to_string(index);
+  const Json& accessor = Item(document.Root, "accessors", index, referrer);
+  if (accessor.contains("sparse"))
+  {
+    Fail(where + " is sparse, which shadelab does not read");
+  }
+  Layout layout;
+  layout.Count = Unsigned(accessor, "count", where);
+  if (layout.Count == 0)
+  {
+    Fail(where + ": count is 0");
+  }
+  layout.Component = &ReadComponentType(accessor, where);
+  layout.Components = ReadElementType(accessor, where);
+  if (accessor.contains("normalized"))
+  {
+    if (!accessor["normalized"].is_boolean())
+    {
+      Fail(where + ": normalized is not true or false");
+    }
+    layout.Normalized = accessor["normalized"].get<bool>();
+  }
+  CheckUse(layout, use, index, referrer);
+  // Without a bufferView an accessor is zeros, there for sparse accessors
+  // to fill in; as those are not read, neither is that.
+  if (!accessor.contains("bufferView"))
+  {
+    Fail(where + " has no bufferView (all zeros), which shadelab does not read");
+  }
+  layout.Data = ViewData(document, accessor, layout, where);
+  return layout;
+}
+
+// The accessor's values as T, in the host's order: one copy and one swap
+// (a no-op on little-endian hosts) of the whole range where the elements
+// are packed, element by element where a byteStride spreads them.
+template <typename T>
+std::vector<T> Load(const Layout& layout)
+{
+  const std::size_t elementBytes = layout.Components * sizeof(T);
+  std::vector<T> values(layout.Count * layout.Components);
+  if (layout.Stride == elementBytes)
+  {
+    std::memcpy(values.data(), layout.Data, values.size() * sizeof(T));
+  }
+  else
+  {
+    for (std::uint64_t i = 0; i < layout.Count; ++i)
+    {
+      std::memcpy(&values[i * layout.Components], layout.Data + i * layout.Stride, elementBytes);
+    }
+  }
+  vtkByteSwap::SwapLERange(values.data(), values.size());
+  return values;
+}
+
+// Calls store(k, value) for every value k of the accessor, as its type.
+template <typename Store>
+void Decode(const Layout& layout, Store&& store)
+{
+  const auto each = [&](const auto& values)
+  {
+    for (std::size_t k = 0; k < values.size(); ++k)
+    {
+      store(k, values[k]);
+    }
+  };
+  switch (layout.Component->Type)
+  {
+    case ScalarType::Int8:
+      return each(Load<std::int8_t>(layout));
+    case ScalarType::UInt8:
+      return each(Load<std::uint8_t>(layout));
+    case ScalarType::Int16:
+      return each(Load<std::int16_t>(layout));
+    case ScalarType::UInt16:
+      return each(Load<std::uint16_t>(layout));
+    case ScalarType::UInt32:
+      return each(Load<std::uint32_t>(layout));
+    default:
+      return each(Load<float>(layout)); // the types glTF has end here
+  }
+}
+}
+
+std::uint64_t CountOf(
+  const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where)
+{
+  return ReadLayout(document, index, use, where).Count;
+}
+
+FloatValues ReadFloats(
+  const Document& document, std::uint64_t index, const AccessorUse& use, const std::string& where)
+{
+  const Layout layout = ReadLayout(document, index, use, where);
+  const ScalarType type = layout.Component->Type;
+  FloatValues result;
+  result.Count = layout.Count;
+  result.Components = layout.Components;
+  if (type == ScalarType::Float32)
+  {
+    result.Values = Load<float>(layout);
+  }
+  else
+  {
+    // Normalized integers: k / 255 or k / 65535, as glTF defines them.
+    const double scale = type == ScalarType::UInt8 ? 1.0 / 255 : 1.0 / 65535;
+    result.Values.resize(layout.Count * layout.Components);
+    Decode(layout,
+      [&](std::size_t k, auto value) { result.Values[k] = static_cast<float>(value * scale); });
+  }
+  return result;
+}
+
+std::vector<std::uint32_t> ReadIndices(
+  const Document& document, std::uint64_t index, const std::string& where)
+{
+  const Layout layout = ReadLayout(document, index, IndicesUse, where);
+  std::vector<std::uint32_t> indices(layout.Count);
+  Decode(
+    layout, [&](std::size_t k, auto value) { indices[k] = static_cast<std::uint32_t>(value); });
+  return indices;
+}
+}

@@ -1,0 +1,463 @@
+#include "shadelabGLTFDocument.h"
+
+#include "shadelabJsonProblem.h"
+#include "shadelabMeshReadError.h"
+#include "shadelabTextScanner.h"
+#include "vtkShadelabFileReader.h"
+
+#include <vtkBase64Utilities.h>
+#include <vtkByteSwap.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string_view>
+
+namespace shadelab::gltf
+{
+namespace
+{
+constexpr std::uint32_t GlbMagic = 0x46546C67;    // "glTF"
+constexpr std::uint32_t JsonChunk = 0x4E4F534A;   // "JSON"
+constexpr std::uint32_t BinaryChunk = 0x004E4942; // "BIN\0"
+constexpr std::size_t GlbHeaderBytes = 12;        // magic, version, length
+constexpr std::size_t ChunkHeaderBytes = 8;       // length, type
+
+std::uint32_t LoadUInt32(std::string_view bytes, std::size_t offset)
+{
+  std::uint32_t value;
+  std::memcpy(&value, bytes.data() + offset, sizeof value);
+  vtkByteSwap::SwapLE(&value);
+  return value;
+}
+
+[[noreturn]] void Fail(const std::string& message)
+{
+  throw MeshReadError(message);
+}
+
+[[noreturn]] void Truncated(const std::string& message)
+{
+  throw MeshReadError("truncated: " + message, vtkErrorCode::PrematureEndOfFileError);
+}
+
+// A GLB's JSON text and, if it has one, its BIN chunk.
+struct GlbChunks
+{
+  std::string_view Json;
+  std::string_view Binary;
+  bool HasBinary = false;
+};
+
+GlbChunks ReadGlb(std::string_view bytes)
+{
+  if (bytes.size() < GlbHeaderBytes)
+  {
+    Truncated("a GLB header takes 12 bytes, the file has " + std::to_string(bytes.size()));
+  }
+  const std::uint32_t version = LoadUInt32(bytes, 4);
+  const std::uint32_t length = LoadUInt32(bytes, 8);
+  if (version != 2)
+  {
+    Fail("GLB version " + std::to_string(version) + " is not supported (only 2)");
+  }
+  if (length > bytes.size())
+  {
+    Truncated("the GLB header says " + std::to_string(length) + " bytes, the file has " +
+      std::to_string(bytes.size()));
+  }
+  if (length < bytes.size())
+  {
+    Fail("the GLB header says " + std::to_string(length) + " bytes, but the file has " +
+      std::to_string(bytes.size()));
+  }
+  GlbChunks chunks;
+  bool first = true;
+  for (std::size_t offset = GlbHeaderBytes; offset < bytes.size(); first = false)
+  {
+    if (bytes.size() - offset < ChunkHeaderBytes)
+    {
+      Truncated("a GLB chunk header at byte " + std::to_string(offset) + " is cut off");
+    }
+    const std::uint32_t chunkLength = LoadUInt32(bytes, offset);
+    const std::uint32_t type = LoadUInt32(bytes, offset + 4);
+    offset += ChunkHeaderBytes;
+    if (chunkLength > bytes.size() - offset)
+    {
+      Truncated("a GLB chunk at byte " + std::to_string(offset - ChunkHeaderBytes) + " says " +
+        std::to_string(chunkLength) + " bytes, only " + std::to_string(bytes.size() - offset) +
+        " follow");
+    }
+    const std::string_view data = bytes.substr(offset, chunkLength);
+    offset += chunkLength;
+    if (first != (type == JsonChunk))
+    {
+      Fail(first ? "the GLB's first chunk is not JSON" : "the GLB has a second JSON chunk");
+    }
+    if (first)
+    {
+      chunks.Json = data;
+    }
+    else if (type == BinaryChunk)
+    {
+      if (chunks.HasBinary)
+      {
+        Fail("the GLB has two BIN chunks");
+      }
+      chunks.Binary = data;
+      chunks.HasBinary = true;
+    }
+    // Chunks of other types are for extensions: the spec says to skip them.
+  }
+  if (chunks.Json.data() == nullptr)
+  {
+    Fail("the GLB has no JSON chunk");
+  }
+  return chunks;
+}
+
+Json ParseJson(std::string_view text)
+{
+  try
+  {
+    Json root = Json::parse(text.begin(), text.end());
+    if (!root.is_object())
+    {
+      Fail("the glTF JSON is not an object");
+    }
+    return root;
+  }
+  catch (const Json::exception& e)
+  {
+    Fail("not JSON: " + JsonProblem(e));
+  }
+}
+
+void CheckAsset(const Json& root)
+{
+  if (!root.contains("asset") || !root["asset"].is_object())
+  {
+    Fail("no \"asset\" object: not a glTF document");
+  }
+  const std::string version = String(root["asset"], "version", "asset");
+  if (version.substr(0, 2) != "2.")
+  {
+    Fail("glTF version " + Quote(version) + " is not supported (only 2.x)");
+  }
+  for (const Json& extension : List(root, "extensionsRequired"))
+  {
+    // dump(): the name in quotes, escaped onto one line.
+    Fail("requires the extension " + extension.dump() + ", which shadelab does not read");
+  }
+}
+
+// A data URI's bytes; `where` names its owner. Throws unless base64 and valid.
+std::string DecodeDataUri(std::string_view uri, const std::string& where)
+{
+  const auto comma = uri.find(',');
+  if (comma == std::string_view::npos || uri.substr(0, comma).size() < 7 ||
+    uri.substr(comma - 7, 7) != ";base64")
+  {
+    Fail(where + ": a data URI that is not base64");
+  }
+  const std::string_view text = uri.substr(comma + 1);
+  std::size_t padding = 0;
+  while (padding < 2 && padding < text.size() && text[text.size() - 1 - padding] == '=')
+  {
+    ++padding;
+  }
+  const std::size_t expected = text.size() / 4 * 3 - padding;
+  std::string bytes(text.size() / 4 * 3, '\0');
+  // DecodeSafely stops at the first byte outside the alphabet.
+  const std::size_t decoded = text.size() % 4 != 0
+    ? 0
+    : vtkBase64Utilities::DecodeSafely(reinterpret_cast<const unsigned char*>(text.data()),
+        text.size(), reinterpret_cast<unsigned char*>(bytes.data()), bytes.size());
+  if ((text.size() % 4 != 0 || decoded != expected) && !text.empty())
+  {
+    Fail(where + ": malformed base64 in its data URI");
+  }
+  bytes.resize(expected);
+  return bytes;
+}
+
+int HexDigit(char c)
+{
+  return c >= '0' && c <= '9' ? c - '0'
+    : c >= 'a' && c <= 'f'    ? c - 'a' + 10
+    : c >= 'A' && c <= 'F'    ? c - 'A' + 10
+                              : -1;
+}
+
+// A relative URI as the path of a file beside the document, which must be a
+// plain file if it exists.
+std::string FilePath(
+  const std::string& documentName, std::string_view uri, const std::string& where)
+{
+  const auto colon = uri.find(':');
+  if (uri.empty() || (colon != std::string_view::npos && uri.find('/') > colon) || uri[0] == '/')
+  {
+    Fail(where + ": uri " + Quote(uri) + " is neither a data URI nor a relative file name");
+  }
+  std::string decoded;
+  for (std::size_t i = 0; i < uri.size(); ++i)
+  {
+    if (uri[i] != '%')
+    {
+      decoded += uri[i];
+      continue;
+    }
+    const int high = i + 2 < uri.size() ? HexDigit(uri[i + 1]) : -1;
+    const int low = i + 2 < uri.size() ? HexDigit(uri[i + 2]) : -1;
+    if (high < 0 || low < 0 || (high == 0 && low == 0))
+    {
+      Fail(where + ": malformed percent-escape in uri " + Quote(uri));
+    }
+    decoded += static_cast<char>(16 * high + low);
+    i += 2;
+  }
+  // A plain file: a relative uri can name a device or a pipe
+  // ("../../dev/zero"), which would be read forever or block the opening.
+  const std::filesystem::path path = std::filesystem::path(documentName).parent_path() / decoded;
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+  {
+    Fail(where + ": " + Quote(uri) + " is not a regular file");
+  }
+  return path.string();
+}
+
+// What a file that the document refers to says when it cannot be read:
+// "buffer 0: 'mesh.bin': cannot open: No such file or directory".
+template <typename Action>
+auto Referred(const std::string& where, std::string_view uri, Action action)
+{
+  try
+  {
+    return action();
+  }
+  catch (const MeshReadError& error)
+  {
+    throw MeshReadError(where + ": " + Quote(uri) + ": " + error.what(), error.GetCode());
+  }
+}
+
+// Each buffer as a view of the GLB's BIN chunk (no copy) or of bytes that
+// `document` keeps: a file's or a data URI's.
+void LoadBuffers(Document& document, const std::string& fileName, const GlbChunks* glb)
+{
+  const Json& list = List(document.Root, "buffers");
+  for (std::size_t b = 0; b < list.size(); ++b)
+  {
+    const std::string where = "buffer " + std::to_string(b);
+    const Json& buffer = Item(document.Root, "buffers", b, where);
+    const std::uint64_t length = Unsigned(buffer, "byteLength", where);
+    std::string_view bytes;
+    std::string source;
+    if (!buffer.contains("uri"))
+    {
+      if (!glb || b != 0 || !glb->HasBinary)
+      {
+        Fail(where + " has no uri" +
+          (!glb        ? ""
+              : b != 0 ? ", and only buffer 0 can be the GLB's BIN chunk"
+                       : ", and the GLB has no BIN chunk"));
+      }
+      bytes = glb->Binary;
+      source = "the GLB's BIN chunk";
+    }
+    else
+    {
+      const std::string uri = String(buffer, "uri", where);
+      if (uri.compare(0, 5, "data:") == 0)
+      {
+        document.Storage.push_back(std::make_unique<std::string>(DecodeDataUri(uri, where)));
+        source = "its data URI";
+      }
+      else
+      {
+        const std::string path = FilePath(fileName, uri, where);
+        document.Storage.push_back(std::make_unique<std::string>(Referred(
+          where, uri, [&] { return vtkShadelabFileReader::ReadFileBytes(path.c_str()); })));
+        source = Quote(uri);
+      }
+      bytes = *document.Storage.back();
+    }
+    if (bytes.size() < length)
+    {
+      Truncated(where + " declares " + std::to_string(length) + " bytes, but " + source + " has " +
+        std::to_string(bytes.size()));
+    }
+    document.Buffers.push_back(bytes.substr(0, length));
+  }
+}
+
+// Textures are for a later step, but a document whose image is missing is
+// as broken as one whose buffer is: it is refused now, not when it is used.
+void CheckImages(const Json& root, const std::string& fileName)
+{
+  const Json& images = List(root, "images");
+  for (std::size_t i = 0; i < images.size(); ++i)
+  {
+    const std::string where = "image " + std::to_string(i);
+    const Json& image = Item(root, "images", i, where);
+    if (image.contains("bufferView"))
+    {
+      Item(root, "bufferViews", Unsigned(image, "bufferView", where), where);
+      continue;
+    }
+    const std::string uri = String(image, "uri", where);
+    if (uri.empty())
+    {
+      Fail(where + " has neither a uri nor a bufferView");
+    }
+    if (uri.compare(0, 5, "data:") == 0)
+    {
+      DecodeDataUri(uri, where);
+    }
+    else
+    {
+      const std::string path = FilePath(fileName, uri, where);
+      Referred(where, uri, [&] { vtkShadelabFileReader::CheckReadable(path.c_str()); });
+    }
+  }
+}
+
+std::string Place(const std::string& where, const char* key)
+{
+  return where + "." + key;
+}
+
+std::uint64_t AsUnsigned(const Json& value, const std::string& place)
+{
+  if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
+  {
+    Fail(place + " is " + Quote(value.dump()) + ", not an integer >= 0");
+  }
+  return value.get<std::uint64_t>();
+}
+}
+
+Document Load(const std::string& fileName, std::string fileBytes)
+{
+  Document document;
+  document.Storage.push_back(std::make_unique<std::string>(std::move(fileBytes)));
+  const std::string_view bytes = *document.Storage.back();
+  const bool isGlb = bytes.size() >= 4 && LoadUInt32(bytes, 0) == GlbMagic;
+  GlbChunks glb;
+  if (isGlb)
+  {
+    glb = ReadGlb(bytes);
+  }
+  document.Root = ParseJson(isGlb ? glb.Json : bytes);
+  CheckAsset(document.Root);
+  LoadBuffers(document, fileName, isGlb ? &glb : nullptr);
+  CheckImages(document.Root, fileName);
+  return document;
+}
+
+const Json& List(const Json& root, const char* key)
+{
+  static const Json empty = Json::array();
+  if (!root.contains(key))
+  {
+    return empty;
+  }
+  const Json& list = root[key];
+  if (!list.is_array())
+  {
+    Fail(std::string("\"") + key + "\" is not an array");
+  }
+  return list;
+}
+
+const Json& Item(
+  const Json& root, const char* key, std::uint64_t index, const std::string& referrer)
+{
+  const Json& list = List(root, key);
+  if (index >= list.size())
+  {
+    Fail(referrer + " refers to " + key + "[" + std::to_string(index) + "], but the file has " +
+      std::to_string(list.size()));
+  }
+  const Json& item = list[index];
+  if (!item.is_object())
+  {
+    Fail(std::string(key) + "[" + std::to_string(index) + "] is not an object");
+  }
+  return item;
+}
+
+std::uint64_t Unsigned(
+  const Json& object, const char* key, const std::string& where, long long fallback)
+{
+  if (!object.contains(key))
+  {
+    if (fallback < 0)
+    {
+      Fail(where + " has no " + key);
+    }
+    return static_cast<std::uint64_t>(fallback);
+  }
+  return AsUnsigned(object[key], Place(where, key));
+}
+
+std::uint64_t UnsignedAt(const Json& list, std::size_t k, const std::string& where)
+{
+  return AsUnsigned(list[k], where + "[" + std::to_string(k) + "]");
+}
+
+double Number(const Json& object, const char* key, const std::string& where, double fallback)
+{
+  if (!object.contains(key))
+  {
+    return fallback;
+  }
+  const Json& value = object[key];
+  if (!value.is_number() || !std::isfinite(value.get<double>()))
+  {
+    Fail(Place(where, key) + " is " + Quote(value.dump()) + ", not a number");
+  }
+  return value.get<double>();
+}
+
+std::vector<double> Numbers(const Json& object, const char* key, const std::string& where,
+  std::size_t count, const std::vector<double>& fallback)
+{
+  if (!object.contains(key))
+  {
+    return fallback;
+  }
+  const Json& value = object[key];
+  if (!value.is_array() || value.size() != count)
+  {
+    Fail(Place(where, key) + " is not an array of " + std::to_string(count) + " numbers");
+  }
+  std::vector<double> numbers;
+  for (const Json& item : value)
+  {
+    if (!item.is_number() || !std::isfinite(item.get<double>()))
+    {
+      Fail(Place(where, key) + " holds " + Quote(item.dump()) + ", not a number");
+    }
+    numbers.push_back(item.get<double>());
+  }
+  return numbers;
+}
+
+std::string String(const Json& object, const char* key, const std::string& where)
+{
+  if (!object.contains(key))
+  {
+    return {};
+  }
+  const Json& value = object[key];
+  if (!value.is_string())
+  {
+    Fail(Place(where, key) + " is " + Quote(value.dump()) + ", not a string");
+  }
+  return value.get<std::string>();
+}
+}

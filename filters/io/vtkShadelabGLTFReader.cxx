@@ -1,0 +1,437 @@
+#include "vtkShadelabGLTFReader.h"
+
+#include "shadelabGLTFAccessor.h"
+#include "shadelabGLTFDocument.h"
+#include "shadelabGLTFScene.h"
+#include "shadelabMeshReadError.h"
+#include "shadelabTriangleMesh.h"
+
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkShadelabGLTFReader);
+
+namespace
+{
+using namespace shadelab::gltf;
+using shadelab::MeshReadError;
+
+const AccessorUse PositionUse = { "POSITION", 3, 3, false };
+const AccessorUse NormalUse = { "NORMAL", 3, 3, false };
+const AccessorUse TextureCoordinatesUse = { "TEXCOORD_0", 2, 2, true };
+const AccessorUse ColorUse = { "COLOR_0", 3, 4, true };
+
+// glTF's primitive modes.
+enum Mode : std::uint64_t
+{
+  LineStrip = 3, // 0 .. 3: points and lines
+  Triangles = 4,
+  TriangleStrip = 5,
+  TriangleFan = 6
+};
+
+[[noreturn]] void Fail(const std::string& message)
+{
+  throw MeshReadError(message);
+}
+
+// The upper 3x3 of a world transform: where positions go and how normals
+// turn (by the inverse transpose, i.e. the cofactors over the determinant).
+class Transform
+{
+public:
+  explicit Transform(const Matrix& m)
+    : M(m)
+  {
+    const auto a = [&](int r, int c) { return m[4 * r + c]; };
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        this->Cofactor[3 * r + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
+      }
+    }
+    this->Determinant =
+      a(0, 0) * this->Cofactor[0] + a(0, 1) * this->Cofactor[1] + a(0, 2) * this->Cofactor[2];
+  }
+
+  /** A mirroring transform turns triangles round: glTF keeps their front in front. */
+  bool Mirrors() const { return this->Determinant < 0; }
+
+  void Point(const float* p, std::vector<double>& out) const
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      out.push_back(this->M[4 * r] * p[0] + this->M[4 * r + 1] * p[1] + this->M[4 * r + 2] * p[2] +
+        this->M[4 * r + 3]);
+    }
+  }
+
+  // The inverse transpose is the cofactor matrix over the determinant; only
+  // its sign matters before renormalising (and a singular transform, a
+  // node scaled to nothing, gives what the cofactors give, or zero).
+  void Normal(const float* n, std::vector<float>& out) const
+  {
+    const double sign = this->Determinant < 0 ? -1 : 1;
+    double v[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      v[r] = sign *
+        (this->Cofactor[3 * r] * n[0] + this->Cofactor[3 * r + 1] * n[1] +
+          this->Cofactor[3 * r + 2] * n[2]);
+    }
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (const double component : v)
+    {
+      out.push_back(static_cast<float>(length > 0 ? component / length : component));
+    }
+  }
+
+private:
+  const Matrix& M;
+  double Cofactor[9];
+  double Determinant;
+};
+
+// A node may draw a mesh that other nodes draw too, so a small file can ask
+// for any number of copies of its largest mesh. What the scene's triangle
+// primitives will take (their points with attributes and their corners, held
+// twice on the way to vtkPolyData) is counted from the accessors' counts
+// before anything is built (the accessors checked as reading them checks);
+// a scene that needs more than half of the memory there is fails here
+// rather than meet the OOM killer.
+void CheckMemoryFor(const Document& document, const std::vector<MeshInstance>& instances)
+{
+  const double available = static_cast<double>(vtkShadelabFileReader::AvailableMemory());
+  constexpr double pointBytes = 128, cornerBytes = 24;
+  double needed = 0;
+  for (const MeshInstance& instance : instances)
+  {
+    const std::string meshName = "mesh " + std::to_string(instance.Mesh);
+    const Json& primitives =
+      List(Item(document.Root, "meshes", instance.Mesh, meshName), "primitives");
+    for (std::size_t p = 0; p < primitives.size(); ++p)
+    {
+      const Json& primitive = primitives[p];
+      const std::string where = meshName + " primitive " + std::to_string(p);
+      if (!primitive.is_object() || !primitive.contains("attributes") ||
+        !primitive["attributes"].contains("POSITION") ||
+        Unsigned(primitive, "mode", where, Triangles) <= LineStrip)
+      {
+        continue; // nothing to draw, or an error that reading it reports
+      }
+      const double points = static_cast<double>(CountOf(
+        document, Unsigned(primitive["attributes"], "POSITION", where), PositionUse, where));
+      const double corners = primitive.contains("indices")
+        ? static_cast<double>(
+            CountOf(document, Unsigned(primitive, "indices", where), IndicesUse, where))
+        : points;
+      needed += pointBytes * points + cornerBytes * corners;
+    }
+  }
+  if (available > 0 && needed > available / 2)
+  {
+    throw MeshReadError("the scene's meshes need about " +
+        std::to_string(static_cast<long long>(needed / (1 << 20))) + " MiB, more than the " +
+        std::to_string(static_cast<long long>(available / (1 << 20))) +
+        " MiB of memory available allow",
+      vtkErrorCode::UnknownError);
+  }
+}
+
+// The drawn primitives of the scene, gathered into one PolygonMesh: points
+// and their attributes one primitive after the other, faces (triangles and
+// fans) and strips with the part of each.
+class MeshBuilder
+{
+public:
+  explicit MeshBuilder(const Document& document)
+    : Doc(document)
+  {
+  }
+
+  void AddMesh(const MeshInstance& instance)
+  {
+    const std::string meshName = "mesh " + std::to_string(instance.Mesh);
+    const Json& mesh = Item(this->Doc.Root, "meshes", instance.Mesh, meshName);
+    const Json& primitives = List(mesh, "primitives");
+    if (primitives.empty())
+    {
+      Fail(meshName + " has no primitives");
+    }
+    for (std::size_t p = 0; p < primitives.size(); ++p)
+    {
+      const std::string where = meshName + " primitive " + std::to_string(p);
+      if (!primitives[p].is_object())
+      {
+        Fail(where + " is not an object");
+      }
+      this->AddPrimitive(primitives[p], instance.World, where);
+    }
+  }
+
+  /** The mesh, with the attributes that only some primitives have completed. */
+  shadelab::PolygonMesh& Finish()
+  {
+    const std::size_t points = this->Mesh.Points.size() / 3;
+    Complete(this->Mesh.Colors, 4 * points, 1.0f);
+    Complete(this->Mesh.TextureCoordinates, 2 * points, 0.0f);
+    if (this->SomeLackNormals)
+    {
+      this->Mesh.Normals.clear();
+    }
+    this->Mesh.Parts = this->FaceParts;
+    this->Mesh.Parts.insert(
+      this->Mesh.Parts.end(), this->StripParts.begin(), this->StripParts.end());
+    return this->Mesh;
+  }
+
+  std::vector<std::string> MaterialNames;
+  std::vector<int> MaterialIndices;
+  std::size_t Skipped = 0;
+  bool SomeLackNormals = false;
+  bool SomeHaveNormals = false;
+
+private:
+  // Fills `values` up to `size` with `value`: the vertices of primitives
+  // that lack the attribute.
+  static void Complete(std::vector<float>& values, std::size_t size, float value)
+  {
+    if (!values.empty())
+    {
+      values.resize(size, value);
+    }
+  }
+
+  FloatValues Attribute(const Json& attributes, const char* name, const AccessorUse& use,
+    std::uint64_t count, const std::string& where)
+  {
+    FloatValues values = ReadFloats(this->Doc, Unsigned(attributes, name, where), use, where);
+    if (values.Count != count)
+    {
+      Fail(where + ": " + name + " has " + std::to_string(values.Count) + " elements, POSITION " +
+        std::to_string(count));
+    }
+    return values;
+  }
+
+  void AddPrimitive(const Json& primitive, const Matrix& world, const std::string& where)
+  {
+    const std::uint64_t mode = Unsigned(primitive, "mode", where, Triangles);
+    if (mode <= LineStrip)
+    {
+      ++this->Skipped;
+      return;
+    }
+    if (mode > TriangleFan)
+    {
+      Fail(where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode");
+    }
+    if (!primitive.contains("attributes") || !primitive["attributes"].is_object())
+    {
+      Fail(where + " has no attributes");
+    }
+    const Json& attributes = primitive["attributes"];
+    if (!attributes.contains("POSITION"))
+    {
+      Fail(where + " has no POSITION");
+    }
+    const FloatValues positions =
+      ReadFloats(this->Doc, Unsigned(attributes, "POSITION", where), PositionUse, where);
+    const std::uint64_t count = positions.Count;
+    const std::vector<std::uint32_t> indices = this->Indices(primitive, count, where);
+    const Transform transform(world);
+    this->Mesh.Points.reserve(this->Mesh.Points.size() + 3 * count);
+    this->AddFaces(static_cast<Mode>(mode), indices, transform.Mirrors(), where);
+    const std::size_t first = this->Mesh.Points.size() / 3;
+    for (std::uint64_t v = 0; v < count; ++v)
+    {
+      transform.Point(&positions.Values[3 * v], this->Mesh.Points);
+    }
+    if (attributes.contains("NORMAL"))
+    {
+      const FloatValues normals = Attribute(attributes, "NORMAL", NormalUse, count, where);
+      this->Mesh.Normals.resize(3 * first, 0.0f); // primitives before without: dropped in Finish
+      this->Mesh.Normals.reserve(3 * (first + count));
+      for (std::uint64_t v = 0; v < count; ++v)
+      {
+        transform.Normal(&normals.Values[3 * v], this->Mesh.Normals);
+      }
+      this->SomeHaveNormals = true;
+    }
+    else
+    {
+      this->SomeLackNormals = true;
+    }
+    if (attributes.contains("COLOR_0"))
+    {
+      const FloatValues colors = Attribute(attributes, "COLOR_0", ColorUse, count, where);
+      this->Mesh.Colors.resize(4 * first, 1.0f);
+      for (std::uint64_t v = 0; v < count; ++v)
+      {
+        const float* c = &colors.Values[colors.Components * v];
+        this->Mesh.Colors.insert(
+          this->Mesh.Colors.end(), { c[0], c[1], c[2], colors.Components == 4 ? c[3] : 1.0f });
+      }
+    }
+    if (attributes.contains("TEXCOORD_0"))
+    {
+      const FloatValues uv =
+        Attribute(attributes, "TEXCOORD_0", TextureCoordinatesUse, count, where);
+      this->Mesh.TextureCoordinates.resize(2 * first, 0.0f);
+      for (std::uint64_t v = 0; v < count; ++v)
+      {
+        this->Mesh.TextureCoordinates.insert(
+          this->Mesh.TextureCoordinates.end(), { uv.Values[2 * v], 1.0f - uv.Values[2 * v + 1] });
+      }
+    }
+    this->AddMaterial(primitive, where);
+  }
+
+  // The primitive's indices (all of its vertices in order without an
+  // indices accessor), each checked against the vertex count.
+  std::vector<std::uint32_t> Indices(
+    const Json& primitive, std::uint64_t count, const std::string& where) const
+  {
+    if (!primitive.contains("indices"))
+    {
+      std::vector<std::uint32_t> indices(count);
+      std::iota(indices.begin(), indices.end(), std::uint32_t{ 0 });
+      return indices;
+    }
+    std::vector<std::uint32_t> indices =
+      ReadIndices(this->Doc, Unsigned(primitive, "indices", where), where);
+    for (std::size_t k = 0; k < indices.size(); ++k)
+    {
+      if (indices[k] >= count)
+      {
+        Fail(where + ": index " + std::to_string(k) + " is " + std::to_string(indices[k]) +
+          ", but POSITION has " + std::to_string(count) + " elements");
+      }
+    }
+    return indices;
+  }
+
+  // The triangles of `indices` as faces, or one strip, offset by the points
+  // before this primitive; turned round when the transform mirrors.
+  void AddFaces(
+    Mode mode, const std::vector<std::uint32_t>& indices, bool turn, const std::string& where)
+  {
+    const std::size_t n = indices.size();
+    if (n < 3 || (mode == Triangles && n % 3 != 0))
+    {
+      Fail(where + " has " + std::to_string(n) + " vertices, which make no whole triangles");
+    }
+    const int part = static_cast<int>(this->MaterialNames.size());
+    if (mode != TriangleStrip)
+    {
+      const std::size_t triangles = mode == Triangles ? n / 3 : n - 2;
+      this->Mesh.FaceIds.reserve(this->Mesh.FaceIds.size() + 3 * triangles);
+      this->Mesh.FaceOffsets.reserve(this->Mesh.FaceOffsets.size() + triangles);
+      this->FaceParts.reserve(this->FaceParts.size() + triangles);
+    }
+    const vtkIdType base = static_cast<vtkIdType>(this->Mesh.Points.size() / 3);
+    const auto id = [&](std::size_t k) { return base + static_cast<vtkIdType>(indices[k]); };
+    const auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
+    {
+      this->Mesh.FaceIds.insert(this->Mesh.FaceIds.end(), { a, turn ? c : b, turn ? b : c });
+      this->Mesh.FaceOffsets.push_back(static_cast<vtkIdType>(this->Mesh.FaceIds.size()));
+      this->FaceParts.push_back(part);
+    };
+    if (mode == Triangles)
+    {
+      for (std::size_t k = 0; k < n; k += 3)
+      {
+        addTriangle(id(k), id(k + 1), id(k + 2));
+      }
+    }
+    else if (mode == TriangleFan)
+    {
+      for (std::size_t k = 1; k + 1 < n; ++k)
+      {
+        addTriangle(id(0), id(k), id(k + 1));
+      }
+    }
+    else
+    {
+      // A strip that starts with its first index twice runs the other way
+      // round: its first triangle is degenerate (and dropped), and every
+      // following one swaps its orientation.
+      if (turn)
+      {
+        this->Mesh.StripIds.push_back(id(0));
+      }
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        this->Mesh.StripIds.push_back(id(k));
+      }
+      this->Mesh.StripOffsets.push_back(static_cast<vtkIdType>(this->Mesh.StripIds.size()));
+      this->StripParts.push_back(part);
+    }
+  }
+
+  void AddMaterial(const Json& primitive, const std::string& where)
+  {
+    if (!primitive.contains("material"))
+    {
+      this->MaterialNames.emplace_back();
+      this->MaterialIndices.push_back(-1);
+      return;
+    }
+    const std::uint64_t index = Unsigned(primitive, "material", where);
+    const Json& material = Item(this->Doc.Root, "materials", index, where);
+    this->MaterialNames.push_back(String(material, "name", "material " + std::to_string(index)));
+    this->MaterialIndices.push_back(static_cast<int>(index));
+  }
+
+  const Document& Doc;
+  shadelab::PolygonMesh Mesh;
+  std::vector<int> FaceParts;
+  std::vector<int> StripParts;
+};
+}
+
+void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
+{
+  const Document document = Load(fileName, ReadFileBytes(fileName));
+  const std::vector<MeshInstance> instances = SceneMeshes(document.Root);
+  CheckMemoryFor(document, instances);
+  MeshBuilder builder(document);
+  for (const MeshInstance& instance : instances)
+  {
+    builder.AddMesh(instance);
+  }
+  if (builder.Skipped > 0)
+  {
+    vtkWarningMacro(<< "skipped " << builder.Skipped
+                    << " primitives of points or lines: shadelab draws triangles");
+  }
+  if (builder.SomeHaveNormals && builder.SomeLackNormals)
+  {
+    vtkWarningMacro(<< "some primitives have no NORMAL, so the file's normals are ignored");
+  }
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(builder.Finish()), triangles);
+
+  vtkNew<vtkStringArray> names;
+  names->SetName(shadelab::PartMaterialsArrayName);
+  vtkNew<vtkIntArray> indices;
+  indices->SetName(shadelab::PartMaterialIndicesArrayName);
+  for (std::size_t part = 0; part < builder.MaterialNames.size(); ++part)
+  {
+    names->InsertNextValue(builder.MaterialNames[part]);
+    indices->InsertNextValue(builder.MaterialIndices[part]);
+  }
+  triangles->GetFieldData()->AddArray(names);
+  triangles->GetFieldData()->AddArray(indices);
+}

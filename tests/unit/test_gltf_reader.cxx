@@ -1,0 +1,775 @@
+// The glTF reader: the real files in tests/data/meshes (Khronos' samples and
+// assimp's conversions), documents built here (node transforms, strips and
+// fans, attributes, parts and materials, the three ways of storing
+// buffers), and bad input of every kind.
+#include "mesh_reader_fixture.h"
+#include "shadelabTriangleMesh.h"
+#include "vtkShadelabGLTFReader.h"
+
+#include <vtkBase64Utilities.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkStringArray.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace
+{
+using namespace shadelab::test;
+using Json = nlohmann::json;
+
+constexpr int Float = 5126, UnsignedByte = 5121, UnsignedShort = 5123, UnsignedInt = 5125;
+constexpr double Pi = 3.14159265358979323846;
+
+// A glTF document under construction: its JSON and its one buffer.
+class Gltf
+{
+public:
+  Json Doc = { { "asset", { { "version", "2.0" } } } };
+  std::string Buffer;
+
+  /** Appends `bytes` as a bufferView (4-byte aligned); its index. */
+  int View(const std::string& bytes, int stride = 0)
+  {
+    Buffer.resize((Buffer.size() + 3) / 4 * 4, '\0');
+    Json view = { { "buffer", 0 }, { "byteOffset", Buffer.size() },
+      { "byteLength", bytes.size() } };
+    if (stride)
+    {
+      view["byteStride"] = stride;
+    }
+    Buffer += bytes;
+    return Add("bufferViews", view);
+  }
+
+  int Accessor(
+    int view, int componentType, std::size_t count, const char* type, bool normalized = false)
+  {
+    Json accessor = { { "bufferView", view }, { "componentType", componentType },
+      { "count", count }, { "type", type } };
+    if (normalized)
+    {
+      accessor["normalized"] = true;
+    }
+    return Add("accessors", accessor);
+  }
+
+  /** `values` in a view of their own, as an accessor of `components` per element. */
+  template <typename T>
+  int Values(const std::vector<T>& values, int componentType, const char* type, int components,
+    bool normalized = false)
+  {
+    std::string bytes;
+    for (const T value : values)
+    {
+      Put(bytes, value);
+    }
+    return Accessor(View(bytes), componentType, values.size() / components, type, normalized);
+  }
+
+  int Vec3(const std::vector<float>& values) { return Values(values, Float, "VEC3", 3); }
+
+  int Indices(const std::vector<std::uint16_t>& values)
+  {
+    return Values(values, UnsignedShort, "SCALAR", 1);
+  }
+
+  int Mesh(const std::vector<Json>& primitives)
+  {
+    return Add("meshes", { { "primitives", primitives } });
+  }
+
+  int Node(const Json& node) { return Add("nodes", node); }
+
+  void Scene(const std::vector<int>& nodes)
+  {
+    Doc["scenes"] = Json::array({ { { "nodes", nodes } } });
+    Doc["scene"] = 0;
+  }
+
+  /** The document with its buffer given by `uri` ("" for a GLB's BIN chunk). */
+  std::string Text(const std::string& uri) const
+  {
+    Json doc = Doc;
+    doc["buffers"] = Json::array({ { { "byteLength", Buffer.size() } } });
+    if (!uri.empty())
+    {
+      doc["buffers"][0]["uri"] = uri;
+    }
+    return doc.dump(2);
+  }
+
+  std::string DataUri() const
+  {
+    std::string encoded(Buffer.size() * 4 / 3 + 4, '\0');
+    encoded.resize(vtkBase64Utilities::Encode(reinterpret_cast<const unsigned char*>(Buffer.data()),
+      Buffer.size(), reinterpret_cast<unsigned char*>(encoded.data())));
+    return Text("data:application/octet-stream;base64," + encoded);
+  }
+
+  std::string Glb() const
+  {
+    std::string json = Text("");
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    std::string bin = Buffer;
+    bin.resize((bin.size() + 3) / 4 * 4, '\0');
+    std::string glb;
+    Put(glb, std::uint32_t{ 0x46546C67 });
+    Put(glb, std::uint32_t{ 2 });
+    Put(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+    Put(glb, static_cast<std::uint32_t>(json.size()));
+    Put(glb, std::uint32_t{ 0x4E4F534A });
+    glb += json;
+    Put(glb, static_cast<std::uint32_t>(bin.size()));
+    Put(glb, std::uint32_t{ 0x004E4942 });
+    return glb + bin;
+  }
+
+private:
+  int Add(const char* list, const Json& item)
+  {
+    Doc[list].push_back(item);
+    return static_cast<int>(Doc[list].size()) - 1;
+  }
+};
+
+// The unit square in the xy-plane as four corners, counter-clockwise from +z.
+const std::vector<float> Square = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+
+Json Primitive(int position, int indices = -1, int mode = 4)
+{
+  Json primitive = { { "attributes", { { "POSITION", position } } }, { "mode", mode } };
+  if (indices >= 0)
+  {
+    primitive["indices"] = indices;
+  }
+  return primitive;
+}
+
+// A square of two triangles on one node: the smallest whole document.
+Gltf SquareDocument(const Json& node = Json::object())
+{
+  Gltf gltf;
+  const int position = gltf.Vec3(Square);                 // accessor 0, bufferView 0
+  const int indices = gltf.Indices({ 0, 1, 2, 0, 2, 3 }); // accessor 1, bufferView 1
+  const int mesh = gltf.Mesh({ Primitive(position, indices) });
+  Json withMesh = node;
+  withMesh["mesh"] = mesh;
+  gltf.Scene({ gltf.Node(withMesh) });
+  return gltf;
+}
+
+std::array<double, 3> Point(vtkPolyData* mesh, vtkIdType i)
+{
+  std::array<double, 3> p;
+  mesh->GetPoint(i, p.data());
+  return p;
+}
+
+std::array<double, 3> Tuple3(vtkDataArray* array, vtkIdType i)
+{
+  std::array<double, 3> t;
+  array->GetTuple(i, t.data());
+  return t;
+}
+
+void ExpectNear(const std::array<double, 3>& actual, const std::array<double, 3>& expected,
+  double tolerance = 1e-12)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(actual[k], expected[k], tolerance) << "component " << k;
+  }
+}
+
+// Each triangle's area normal points the way of its vertices' normals:
+// winding and normal transform agree (front faces stay in front).
+void ExpectWindingAgreesWithNormals(vtkPolyData* mesh)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  ASSERT_NE(normals, nullptr);
+  for (const auto& triangle : Triangles(mesh))
+  {
+    const auto area = AreaNormal(mesh, triangle);
+    for (const vtkIdType v : triangle)
+    {
+      const auto n = Tuple3(normals, v);
+      EXPECT_GT(vtkMath::Dot(area.data(), n.data()), 0.0) << "vertex " << v;
+    }
+  }
+}
+
+std::vector<int> Parts(vtkPolyData* mesh)
+{
+  auto* parts = vtkIntArray::SafeDownCast(mesh->GetCellData()->GetArray(shadelab::PartArrayName));
+  EXPECT_NE(parts, nullptr);
+  std::vector<int> values;
+  for (vtkIdType i = 0; parts && i < parts->GetNumberOfValues(); ++i)
+  {
+    values.push_back(parts->GetValue(i));
+  }
+  return values;
+}
+
+std::vector<std::string> MaterialNames(vtkPolyData* mesh)
+{
+  auto* names = vtkStringArray::SafeDownCast(
+    mesh->GetFieldData()->GetAbstractArray(shadelab::PartMaterialsArrayName));
+  EXPECT_NE(names, nullptr);
+  std::vector<std::string> values;
+  for (vtkIdType i = 0; names && i < names->GetNumberOfValues(); ++i)
+  {
+    values.push_back(names->GetValue(i));
+  }
+  return values;
+}
+
+std::vector<int> MaterialIndices(vtkPolyData* mesh)
+{
+  auto* indices = vtkIntArray::SafeDownCast(
+    mesh->GetFieldData()->GetArray(shadelab::PartMaterialIndicesArrayName));
+  EXPECT_NE(indices, nullptr);
+  std::vector<int> values;
+  for (vtkIdType i = 0; indices && i < indices->GetNumberOfValues(); ++i)
+  {
+    values.push_back(indices->GetValue(i));
+  }
+  return values;
+}
+
+// (point, normal) pairs, rounded to floats: what two writers of one mesh share.
+std::set<std::array<float, 6>> PointsWithNormals(vtkPolyData* mesh)
+{
+  std::set<std::array<float, 6>> pairs;
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const auto p = Point(mesh, i);
+    const auto n = Tuple3(normals, i);
+    pairs.insert({ static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]),
+      static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]) });
+  }
+  return pairs;
+}
+
+// ---------------------------------------------------------------------------
+// The real files
+
+TEST_F(MeshReaders, KhronosBoxIsTurnedByItsParentNodesMatrix)
+{
+  // The buffer's first vertex is (-0.5, -0.5, 0.5) with normal (0, 0, 1);
+  // the parent's matrix (columns x, -z, y) turns +Y up into +Z up:
+  // (x, y, z) -> (x, z, -y).
+  const ReadResult result = Read(TestMeshes / "box.gltf");
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 24);
+  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 12);
+  ExpectNear(Point(result.Mesh, 0), { -0.5, 0.5, 0.5 });
+  ExpectNear(Tuple3(result.Mesh->GetPointData()->GetNormals(), 0), { 0, 1, 0 });
+  ExpectWindingAgreesWithNormals(result.Mesh);
+  EXPECT_EQ(Parts(result.Mesh), std::vector<int>(12, 0));
+  EXPECT_EQ(MaterialNames(result.Mesh), std::vector<std::string>{ "" });
+  EXPECT_EQ(MaterialIndices(result.Mesh), std::vector<int>{ 0 });
+}
+
+TEST_F(MeshReaders, AssimpsGltfAndGlbOfTheBoxGiveKhronosBox)
+{
+  const ReadResult khronos = Read(TestMeshes / "box.gltf");
+  ASSERT_TRUE(khronos.Ok) << khronos.Error;
+  for (const char* name : { "box-assimp.gltf", "box-assimp.glb" })
+  {
+    SCOPED_TRACE(name);
+    const ReadResult result = Read(TestMeshes / name);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 12);
+    EXPECT_EQ(PointsWithNormals(result.Mesh), PointsWithNormals(khronos.Mesh));
+    ExpectWindingAgreesWithNormals(result.Mesh);
+    EXPECT_EQ(MaterialNames(result.Mesh), std::vector<std::string>{ "material" });
+  }
+}
+
+TEST_F(MeshReaders, KhronosSimpleMeshesDrawsItsMeshOncePerNode)
+{
+  const ReadResult result = Read(TestMeshes / "simple-meshes.gltf");
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 6);
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    const auto first = Point(result.Mesh, i);
+    ExpectNear(Point(result.Mesh, i + 3), { first[0] + 1, first[1], first[2] });
+  }
+  EXPECT_EQ(Parts(result.Mesh), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(MaterialNames(result.Mesh), (std::vector<std::string>{ "", "" }));
+  EXPECT_EQ(MaterialIndices(result.Mesh), (std::vector<int>{ -1, -1 }));
+}
+
+// ---------------------------------------------------------------------------
+// Documents built here
+
+TEST_F(MeshReaders, GltfBufferAsFileDataUriOrGlbChunkGivesTheSameMesh)
+{
+  const Gltf gltf = SquareDocument();
+  this->Write("square.bin", gltf.Buffer);
+  this->Write("my square.bin", gltf.Buffer);
+  for (const fs::path& path : { this->Write("file.gltf", gltf.Text("square.bin")),
+         this->Write("escaped.gltf", gltf.Text("my%20square.bin")),
+         this->Write("embedded.gltf", gltf.DataUri()), this->Write("binary.GLB", gltf.Glb()) })
+  {
+    SCOPED_TRACE(path.filename().string());
+    const ReadResult result = Read(path);
+    ASSERT_TRUE(result.Ok) << result.Error;
+    ExpectTriangleMesh(result.Mesh);
+    ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 4);
+    EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 2);
+    ExpectNear(Point(result.Mesh, 2), { 1, 1, 0 });
+    EXPECT_EQ(result.Mesh->GetPointData()->GetNumberOfArrays(), 0);
+  }
+}
+
+TEST_F(MeshReaders, GltfNodeTranslationRotationScaleAndChildNodeCompose)
+{
+  // Parent: translate (10, 0, 0), turn 90 degrees about +z, scale (2, 1, 1);
+  // child: translate (1, 0, 0). A point p goes to T R S (p + (1, 0, 0)):
+  // (x, y, z) -> (10 - y, 2 (x + 1), z).
+  const double s = std::sin(Pi / 4);
+  Gltf gltf;
+  const int normal = gltf.Vec3({ 0, 0, 1, 0, 0, 1, 0.6f, 0.8f, 0, 0.6f, 0.8f, 0 });
+  Json primitive = Primitive(gltf.Vec3(Square), gltf.Indices({ 0, 1, 2, 0, 2, 3 }));
+  primitive["attributes"]["NORMAL"] = normal;
+  const int child =
+    gltf.Node({ { "mesh", gltf.Mesh({ primitive }) }, { "translation", { 1, 0, 0 } } });
+  const Json parent = { { "children", { child } }, { "translation", { 10, 0, 0 } },
+    { "rotation", { 0, 0, s, s } }, { "scale", { 2, 1, 1 } } };
+  gltf.Scene({ gltf.Node(parent) });
+
+  const ReadResult result = Read(this->Write("trs.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectNear(Point(result.Mesh, 0), { 10, 2, 0 });
+  ExpectNear(Point(result.Mesh, 1), { 10, 4, 0 });
+  ExpectNear(Point(result.Mesh, 2), { 9, 4, 0 });
+  ExpectNear(Point(result.Mesh, 3), { 9, 2, 0 });
+  // Normals by the inverse transpose: (nx, ny, nz) -> (-ny, nx / 2, nz),
+  // renormalised; (0.6, 0.8, 0) -> (-0.8, 0.3, 0) / |.|.
+  vtkDataArray* normals = result.Mesh->GetPointData()->GetNormals();
+  ExpectNear(Tuple3(normals, 0), { 0, 0, 1 }, 1e-7);
+  const double length = std::hypot(0.8, 0.3);
+  ExpectNear(Tuple3(normals, 2), { -0.8 / length, 0.3 / length, 0 }, 1e-7);
+
+  // The same transforms as matrices (column-major) give the same mesh.
+  Gltf matrices = gltf;
+  matrices.Doc["nodes"][1] = { { "children", { child } },
+    { "matrix", { 0, 2, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1 } } };
+  matrices.Doc["nodes"][0].erase("translation");
+  matrices.Doc["nodes"][0]["matrix"] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 1 };
+  const ReadResult same = Read(this->Write("matrix.glb", matrices.Glb()));
+  ASSERT_TRUE(same.Ok) << same.Error;
+  for (vtkIdType i = 0; i < 4; ++i)
+  {
+    ExpectNear(Point(same.Mesh, i), Point(result.Mesh, i));
+    ExpectNear(Tuple3(same.Mesh->GetPointData()->GetNormals(), i), Tuple3(normals, i), 1e-7);
+  }
+}
+
+TEST_F(MeshReaders, GltfStripsAndFansBecomeTrianglesFacingTheirNormals)
+{
+  // One mesh: the square as a strip (0 1 3 2), as a fan (0 1 2 3) and as
+  // triangles, each a primitive of its own, on a plain node and on one that
+  // mirrors x (determinant < 0: glTF turns the triangles round).
+  for (const double mirror : { 1.0, -1.0 })
+  {
+    SCOPED_TRACE(mirror);
+    Gltf gltf;
+    const int position = gltf.Vec3(Square);
+    const int normal = gltf.Vec3({ 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1 });
+    std::vector<Json> primitives = { Primitive(position, gltf.Indices({ 0, 1, 3, 2 }), 5),
+      Primitive(position, gltf.Indices({ 0, 1, 2, 3 }), 6),
+      Primitive(position, gltf.Indices({ 0, 1, 2, 0, 2, 3 }), 4) };
+    for (Json& primitive : primitives)
+    {
+      primitive["attributes"]["NORMAL"] = normal;
+    }
+    gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh(primitives) }, { "scale", { mirror, 1, 1 } } }) });
+
+    const ReadResult result = Read(this->Write("modes.gltf", gltf.DataUri()));
+    ASSERT_TRUE(result.Ok) << result.Error;
+    ExpectTriangleMesh(result.Mesh);
+    EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 6);
+    ExpectWindingAgreesWithNormals(result.Mesh);
+    // Each primitive gives two triangles covering the square once.
+    const std::vector<int> parts = Parts(result.Mesh);
+    const auto triangles = Triangles(result.Mesh);
+    ASSERT_EQ(parts.size(), triangles.size());
+    std::map<int, double> area;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      const auto n = AreaNormal(result.Mesh, triangles[t]);
+      area[parts[t]] += 0.5 * std::abs(n[2]);
+      EXPECT_GT(n[2], 0.0) << "mirrored or not, the square faces +z, the way of its normals";
+    }
+    EXPECT_EQ(area, (std::map<int, double>{ { 0, 1.0 }, { 1, 1.0 }, { 2, 1.0 } }));
+  }
+}
+
+TEST_F(MeshReaders, GltfColoursTextureCoordinatesAndTheirDefaults)
+{
+  // Primitive 0: float RGBA colours and float texture coordinates; primitive
+  // 1: normalized UNSIGNED_BYTE RGB and UNSIGNED_SHORT texture coordinates;
+  // primitive 2: neither (white, 0 0).
+  Gltf gltf;
+  const int position = gltf.Vec3({ 0, 0, 0, 1, 0, 0, 0, 1, 0 });
+  Json a = Primitive(position);
+  a["attributes"]["COLOR_0"] =
+    gltf.Values(std::vector<float>{ 1, 0, 0, 0.5f, 0, 1, 0, 1, 0, 0, 1, 1 }, Float, "VEC4", 4);
+  a["attributes"]["TEXCOORD_0"] =
+    gltf.Values(std::vector<float>{ 0, 0, 1, 0, 0, 0.25f }, Float, "VEC2", 2);
+  Json b = Primitive(position);
+  b["attributes"]["COLOR_0"] = gltf.Values(
+    std::vector<std::uint8_t>{ 255, 0, 0, 0, 51, 0, 0, 0, 255 }, UnsignedByte, "VEC3", 3, true);
+  b["attributes"]["TEXCOORD_0"] = gltf.Values(
+    std::vector<std::uint16_t>{ 0, 65535, 65535, 0, 0, 0 }, UnsignedShort, "VEC2", 2, true);
+  const Json c = Primitive(position);
+  gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh({ a, b, c }) } }) });
+
+  const ReadResult result = Read(this->Write("attributes.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  vtkDataArray* colors = result.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName);
+  vtkDataArray* uv = result.Mesh->GetPointData()->GetTCoords();
+  ASSERT_TRUE(colors && uv);
+  const auto rgba = [&](vtkIdType i)
+  {
+    std::array<double, 4> t;
+    colors->GetTuple(i, t.data());
+    return t;
+  };
+  EXPECT_EQ(rgba(0), (std::array<double, 4>{ 1, 0, 0, 0.5 }));
+  EXPECT_NEAR(rgba(4)[1], 0.2, 1e-7);
+  EXPECT_EQ(rgba(4)[3], 1.0);
+  EXPECT_EQ(rgba(7), (std::array<double, 4>{ 1, 1, 1, 1 }));
+  // glTF counts v from the top, VTK t from the bottom: t = 1 - v.
+  EXPECT_EQ(uv->GetComponent(0, 1), 1.0);
+  EXPECT_EQ(uv->GetComponent(2, 1), 0.75);
+  EXPECT_EQ(uv->GetComponent(3, 1), 0.0);
+  EXPECT_EQ(uv->GetComponent(4, 0), 1.0);
+  EXPECT_EQ(uv->GetComponent(8, 0), 0.0);
+  EXPECT_EQ(uv->GetComponent(8, 1), 0.0);
+}
+
+TEST_F(MeshReaders, GltfPartsCarryTheirMaterials)
+{
+  Gltf gltf;
+  const int position = gltf.Vec3(Square);
+  Json red = Primitive(position, gltf.Indices({ 0, 1, 2 }));
+  red["material"] = 1;
+  Json blue = Primitive(position, gltf.Indices({ 0, 2, 3 }));
+  blue["material"] = 0;
+  gltf.Doc["materials"] = { { { "name", "blue" } }, { { "name", "red" } } };
+  gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh({ red, blue, Primitive(position) }) } }) });
+  gltf.Doc["meshes"][0]["primitives"][2]["indices"] = gltf.Indices({ 1, 2, 3 });
+
+  const ReadResult result = Read(this->Write("materials.gltf", gltf.DataUri()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(Parts(result.Mesh), (std::vector<int>{ 0, 1, 2 }));
+  EXPECT_EQ(MaterialNames(result.Mesh), (std::vector<std::string>{ "red", "blue", "" }));
+  EXPECT_EQ(MaterialIndices(result.Mesh), (std::vector<int>{ 1, 0, -1 }));
+}
+
+TEST_F(MeshReaders, GltfSkipsPointsAndLinesAndPartialNormalsWithAWarning)
+{
+  Gltf gltf = SquareDocument();
+  const int position = gltf.Vec3(Square);
+  gltf.Doc["meshes"][0]["primitives"].push_back(Primitive(position, -1, 0));
+  gltf.Doc["meshes"][0]["primitives"].push_back(Primitive(position, -1, 3));
+  Json lit = Primitive(position, gltf.Indices({ 1, 2, 3 }));
+  lit["attributes"]["NORMAL"] = gltf.Vec3({ 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1 });
+  gltf.Doc["meshes"][0]["primitives"].push_back(lit);
+
+  const ReadResult result = Read(this->Write("mixed.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 3);
+  EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(Parts(result.Mesh), (std::vector<int>{ 0, 0, 1 }));
+  EXPECT_EQ(result.Warnings,
+    (std::vector<std::string>{ "skipped 2 primitives of points or lines: shadelab draws triangles",
+      "some primitives have no NORMAL, so the file's normals are ignored" }));
+
+  // Without triangles there is nothing to draw.
+  Gltf lines;
+  lines.Scene({ lines.Node({ { "mesh", lines.Mesh({ Primitive(lines.Vec3(Square), -1, 1) }) } }) });
+  this->ExpectError("lines.glb", lines.Glb(), { "no triangles" });
+}
+
+TEST_F(MeshReaders, GltfDefaultSceneWithoutScenesAndWithoutNodes)
+{
+  // "scene" picks the second scene, which shows the translated node.
+  Gltf gltf = SquareDocument();
+  gltf.Node({ { "mesh", 0 }, { "translation", { 0, 0, 5 } } });
+  gltf.Doc["scenes"].push_back({ { "nodes", { 1 } } });
+  gltf.Doc["scene"] = 1;
+  ReadResult result = Read(this->Write("second.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectNear(Point(result.Mesh, 0), { 0, 0, 5 });
+
+  // Without scenes: every node that is nobody's child.
+  gltf.Doc.erase("scenes");
+  gltf.Doc.erase("scene");
+  gltf.Doc["nodes"][0]["children"] = { 1 };
+  result = Read(this->Write("roots.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 8); // node 1 once, as node 0's child
+
+  // Without nodes: every mesh as it is.
+  gltf.Doc.erase("nodes");
+  result = Read(this->Write("meshes.glb", gltf.Glb()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 4);
+}
+
+// ---------------------------------------------------------------------------
+// Bad input
+
+TEST_F(MeshReaders, BadGlbContainers)
+{
+  const std::string glb = SquareDocument().Glb();
+  this->ExpectError("cut.glb", glb.substr(0, glb.size() - 8),
+    { "truncated: the GLB header says", "bytes, the file has" });
+  this->ExpectError("header.glb", glb.substr(0, 10), { "truncated: a GLB header takes 12 bytes" });
+  this->ExpectError(
+    "longer.glb", glb + std::string(4, '\0'), { "the GLB header says", "but the file has" });
+  std::string version = glb;
+  version[4] = 1;
+  this->ExpectError("version.glb", version, { "GLB version 1 is not supported" });
+  std::string chunk = glb;
+  chunk[12] = '\xff';
+  chunk[13] = '\xff';
+  this->ExpectError("chunk.glb", chunk, { "truncated: a GLB chunk at byte 12 says" });
+  std::string type = glb;
+  type[16] = 'X';
+  this->ExpectError("type.glb", type, { "the GLB's first chunk is not JSON" });
+  this->ExpectError("magic.gltf", glb.substr(0, 12), { "truncated", "GLB" });
+  // A buffer without a uri is the BIN chunk, which this GLB lacks.
+  const std::string json = SquareDocument().Text("");
+  std::string noBin;
+  Put(noBin, std::uint32_t{ 0x46546C67 });
+  Put(noBin, std::uint32_t{ 2 });
+  Put(noBin, static_cast<std::uint32_t>(20 + json.size()));
+  Put(noBin, static_cast<std::uint32_t>(json.size()));
+  Put(noBin, std::uint32_t{ 0x4E4F534A });
+  this->ExpectError("nobin.glb", noBin + json, { "buffer 0 has no uri" });
+}
+
+TEST_F(MeshReaders, BadGltfDocumentsAndBuffers)
+{
+  const Gltf gltf = SquareDocument();
+  this->ExpectError("syntax.gltf", gltf.DataUri().substr(0, 40), { "not JSON: line" });
+  this->ExpectError("array.gltf", "[1, 2]", { "the glTF JSON is not an object" });
+  this->ExpectError("asset.gltf", "{}", { "no \"asset\" object" });
+  Gltf old = gltf;
+  old.Doc["asset"]["version"] = "1.0";
+  this->ExpectError("version.gltf", old.DataUri(), { "glTF version '1.0' is not supported" });
+  Gltf draco = gltf;
+  draco.Doc["extensionsRequired"] = { "KHR_draco_mesh_compression" };
+  this->ExpectError("draco.gltf", draco.DataUri(),
+    { "requires the extension \"KHR_draco_mesh_compression\", which shadelab does not read" });
+
+  this->ExpectError("missing.gltf", gltf.Text("missing.bin"),
+    { "buffer 0: 'missing.bin': cannot open: No such file or directory" });
+  this->Write("short.bin", gltf.Buffer.substr(0, 10));
+  this->ExpectError("short.gltf", gltf.Text("short.bin"),
+    { "truncated: buffer 0 declares", "but 'short.bin' has 10" });
+  // A uri naming a folder, a pipe (whose opening would block) or a device.
+  this->ExpectError("folder.gltf", gltf.Text("."), { "buffer 0: '.' is not a regular file" });
+  ASSERT_EQ(mkfifo((this->Dir / "pipe").c_str(), 0600), 0);
+  this->ExpectError("pipe.gltf", gltf.Text("pipe"), { "buffer 0: 'pipe' is not a regular file" });
+  fs::create_symlink("/dev/zero", this->Dir / "zero");
+  this->ExpectError("zero.gltf", gltf.Text("zero"), { "'zero' is not a regular file" });
+  this->ExpectError("http.gltf", gltf.Text("http://example.com/a.bin"),
+    { "is neither a data URI nor a relative file name" });
+  this->ExpectError("percent.gltf", gltf.Text("a%2.bin"), { "malformed percent-escape" });
+  this->ExpectError("plain.gltf", gltf.Text("data:application/octet-stream,AAAA"),
+    { "buffer 0: a data URI that is not base64" });
+  this->ExpectError("base64.gltf", gltf.Text("data:application/octet-stream;base64,AA!A"),
+    { "buffer 0: malformed base64" });
+  this->ExpectError("shortdata.gltf", gltf.Text("data:application/octet-stream;base64,AAAA"),
+    { "truncated: buffer 0 declares", "its data URI has 3" });
+
+  // Images are checked now, though they are for a later step.
+  Gltf image = gltf;
+  image.Doc["images"] = { { { "uri", "texture.png" } } };
+  this->ExpectError(
+    "image.glb", image.Glb(), { "image 0: 'texture.png': cannot open: No such file or directory" });
+  image.Doc["images"] = { { { "uri", "data:image/png;base64,#" } } };
+  this->ExpectError("imagedata.glb", image.Glb(), { "image 0: malformed base64" });
+  image.Doc["images"] = { { { "bufferView", 9 } } };
+  this->ExpectError("imageview.glb", image.Glb(), { "image 0 refers to bufferViews[9]" });
+  this->Write("texture.png", "not decoded now");
+  image.Doc["images"] = { { { "uri", "texture.png" } } };
+  EXPECT_TRUE(Read(this->Write("image.glb", image.Glb())).Ok);
+}
+
+TEST_F(MeshReaders, BadGltfAccessors)
+{
+  const auto expect = [&](const std::string& name, const std::function<void(Gltf&)>& change,
+                        std::initializer_list<const char*> keyWords)
+  {
+    Gltf gltf = SquareDocument();
+    change(gltf);
+    this->ExpectError(name + ".glb", gltf.Glb(), keyWords);
+  };
+  // accessors[0]: POSITION (view 0, 48 bytes); accessors[1]: indices (view 1, 12 bytes).
+  expect("count", [](Gltf& g) { g.Doc["accessors"][0]["count"] = 5; },
+    { "accessor 0 needs 5 elements of 12 bytes from byte 0 of bufferView 0, which has 48" });
+  expect("offset", [](Gltf& g) { g.Doc["accessors"][0]["byteOffset"] = 4; },
+    { "accessor 0 needs 4 elements of 12 bytes from byte 4" });
+  expect("hugecount", [](Gltf& g) { g.Doc["accessors"][1]["count"] = 1e15; },
+    { "accessor 1.count is '1e+15', not an integer >= 0" });
+  expect("bigcount", [](Gltf& g) { g.Doc["accessors"][1]["count"] = 1000000000000ULL; },
+    { "accessor 1 needs 1000000000000 elements" });
+  expect("zero", [](Gltf& g) { g.Doc["accessors"][1]["count"] = 0; }, { "accessor 1: count is 0" });
+  expect("negative", [](Gltf& g) { g.Doc["accessors"][1]["count"] = -3; },
+    { "accessor 1.count is '-3', not an integer >= 0" });
+  expect("view", [](Gltf& g) { g.Doc["bufferViews"][0]["byteLength"] = 4096; },
+    { "bufferView 0 takes bytes 0 to 4096 of buffer 0, which has" });
+  expect("noview", [](Gltf& g) { g.Doc["accessors"][0]["bufferView"] = 7; },
+    { "accessor 0 refers to bufferViews[7], but the file has 2" });
+  expect("noaccessor", [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["indices"] = 9; },
+    { "mesh 0 primitive 0 refers to accessors[9], but the file has 2" });
+  expect("zeros", [](Gltf& g) { g.Doc["accessors"][0].erase("bufferView"); },
+    { "accessor 0 has no bufferView" });
+  expect("sparse",
+    [](Gltf& g) {
+      g.Doc["accessors"][0]["sparse"] = { { "count", 1 } };
+    },
+    { "accessor 0 is sparse" });
+  expect("stride", [](Gltf& g) { g.Doc["bufferViews"][0]["byteStride"] = 6; },
+    { "bufferView 0: byteStride 6 is not a multiple of 4 from 12 to 252" });
+  // Types glTF does not allow where they are used.
+  expect("ushort", [](Gltf& g) { g.Doc["accessors"][0]["componentType"] = UnsignedShort; },
+    { "POSITION accessor 0 is VEC3 of UNSIGNED_SHORT, which glTF does not allow there" });
+  expect("vec2", [](Gltf& g) { g.Doc["accessors"][0]["type"] = "VEC2"; },
+    { "POSITION accessor 0 is VEC2 of FLOAT" });
+  expect("mat4", [](Gltf& g) { g.Doc["accessors"][0]["type"] = "MAT4"; },
+    { "accessor 0: type 'MAT4' is not SCALAR, VEC2, VEC3 or VEC4" });
+  expect("unknown", [](Gltf& g) { g.Doc["accessors"][0]["componentType"] = 9999; },
+    { "componentType 9999 is not a glTF component type" });
+  expect("floatindex", [](Gltf& g) { g.Doc["accessors"][1]["componentType"] = Float; },
+    { "indices accessor 1 is SCALAR of FLOAT, not SCALAR of UNSIGNED_BYTE" });
+  expect("normalizedindex", [](Gltf& g) { g.Doc["accessors"][1]["normalized"] = true; },
+    { "indices accessor 1 is SCALAR of UNSIGNED_SHORT (normalized)" });
+  expect("colour",
+    [](Gltf& g)
+    {
+      g.Doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
+        g.Values(std::vector<std::uint8_t>{ 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 }, UnsignedByte,
+          "VEC3", 3);
+    },
+    { "COLOR_0 accessor 2 is VEC3 of UNSIGNED_BYTE, which glTF does not allow there" });
+}
+
+TEST_F(MeshReaders, GltfSceneDrawingAMeshMoreOftenThanMemoryAllowsIsRefusedUpFront)
+{
+  // One mesh of 65,535 points, drawn by as many nodes as make its copies
+  // need more than half of the memory there is: refused from the counts,
+  // before anything is built (else this test would take that memory).
+  const std::uint64_t available = vtkShadelabFileReader::AvailableMemory();
+  if (available == 0)
+  {
+    GTEST_SKIP() << "the available memory is not known here";
+  }
+  constexpr std::uint64_t points = 65535;
+  Gltf gltf;
+  const int mesh = gltf.Mesh({ Primitive(gltf.Vec3(std::vector<float>(3 * points, 1.0f))) });
+  std::vector<int> nodes;
+  const std::uint64_t copies = available / 2 / (100 * points) + 1;
+  for (std::uint64_t n = 0; n < copies; ++n)
+  {
+    nodes.push_back(gltf.Node({ { "mesh", mesh } }));
+  }
+  gltf.Scene(nodes);
+  this->ExpectError(
+    "copies.glb", gltf.Glb(), { "the scene's meshes need about", "MiB of memory available allow" });
+}
+
+TEST_F(MeshReaders, BadGltfMeshesAndNodes)
+{
+  const auto expect = [&](const std::string& name, const std::function<void(Gltf&)>& change,
+                        std::initializer_list<const char*> keyWords)
+  {
+    Gltf gltf = SquareDocument();
+    change(gltf);
+    this->ExpectError(name + ".glb", gltf.Glb(), keyWords);
+  };
+  expect("index", [](Gltf& g) { g.Buffer[48 + 10] = 9; },
+    { "mesh 0 primitive 0: index 5 is 9, but POSITION has 4 elements" });
+  expect("three", [](Gltf& g) { g.Doc["accessors"][1]["count"] = 5; },
+    { "mesh 0 primitive 0 has 5 vertices, which make no whole triangles" });
+  expect("normals",
+    [](Gltf& g) {
+      g.Doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = g.Vec3({ 0, 0, 1 });
+    },
+    { "NORMAL has 1 elements, POSITION 4" });
+  expect("mode", [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["mode"] = 7; },
+    { "mode 7 is not a glTF primitive mode" });
+  expect("position",
+    [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
+    { "mesh 0 primitive 0 has no POSITION" });
+  expect("noprimitives", [](Gltf& g) { g.Doc["meshes"][0]["primitives"] = Json::array(); },
+    { "mesh 0 has no primitives" });
+  expect("material", [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["material"] = 3; },
+    { "refers to materials[3], but the file has 0" });
+  expect("mesh", [](Gltf& g) { g.Doc["nodes"][0]["mesh"] = 4; },
+    { "node 0 refers to meshes[4], but the file has 1" });
+  expect("cycle", [](Gltf& g) { g.Doc["nodes"][0]["children"] = { 0 }; },
+    { "node 0 is reached twice: nodes must form trees" });
+  expect("child", [](Gltf& g) { g.Doc["nodes"][0]["children"] = { 5 }; },
+    { "refers to nodes[5], but the file has 1" });
+  expect("both",
+    [](Gltf& g)
+    {
+      g.Doc["nodes"][0]["matrix"] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+      g.Doc["nodes"][0]["scale"] = { 1, 1, 1 };
+    },
+    { "node 0 has both a matrix and translation, rotation or scale" });
+  expect("matrix",
+    [](Gltf& g) {
+      g.Doc["nodes"][0]["matrix"] = { 1, 0, 0 };
+    },
+    { "node 0.matrix is not an array of 16 numbers" });
+  expect("rotation",
+    [](Gltf& g) {
+      g.Doc["nodes"][0]["rotation"] = { 0, 0, 0, 0 };
+    },
+    { "node 0.rotation is not a rotation quaternion" });
+  expect("translation",
+    [](Gltf& g) {
+      g.Doc["nodes"][0]["translation"] = { 0, "x", 0 };
+    },
+    { "node 0.translation holds '\"x\"', not a number" });
+  expect(
+    "scene", [](Gltf& g) { g.Doc["scene"] = 2; }, { "refers to scenes[2], but the file has 1" });
+  // Transforms that overflow doubles: the readers refuse non-finite points.
+  expect("overflow",
+    [](Gltf& g)
+    {
+      g.Doc["nodes"][0]["scale"] = { 1e308, 1e308, 1 };
+      g.Doc["nodes"][0]["translation"] = { 1e308, 0, 0 };
+    },
+    { "infinite coordinate in vertex" });
+}
+}

@@ -103,6 +103,9 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
   AddChoice(command, "--view", o.View,
     "Where the fitted camera looks from: for up +Y front looks along -Z, for up +Z along +Y; "
     "iso from front, right and above (default front)");
+  AddChoice(command, "--fit", o.Fit,
+    "How the missing camera settings are fitted: sphere, the bounding sphere fills the view "
+    "(VTK's ResetCamera); tight, the mesh's projection fills the picture (default sphere)");
   command.add_flag("--edges", o.Edges, "The triangles' edges over the shading");
   AddParsed(command, "--edge-color", o.EdgeColor, ParseRgb, "Their colour (default 0.05,0.05,0.05)")
     ->option_text("R,G,B");

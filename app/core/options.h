@@ -93,6 +93,21 @@ struct NameTable<ViewPreset>
   };
 };
 
+/** --fit: how missing camera settings are fitted to the mesh. */
+enum class FitMode
+{
+  Sphere, // the bounding sphere fills the narrower view angle, as VTK's ResetCamera
+  Tight   // the points' projection fills the picture
+};
+
+template <>
+struct NameTable<FitMode>
+{
+  static constexpr std::array<std::pair<FitMode, const char*>, 2> Entries{
+    { { FitMode::Sphere, "sphere" }, { FitMode::Tight, "tight" } }
+  };
+};
+
 struct ImageSize
 {
   int Width = 1024;
@@ -127,6 +142,8 @@ struct SceneOptions
   ViewPreset View = ViewPreset::Front;
   double Azimuth = 0, Elevation = 0; // degrees, turning the camera about the focal point
   double Zoom = 1;                   // vtkCamera::Zoom: the view angle (or scale) divided by it
+  FitMode Fit = FitMode::Sphere;
+  int Orbit = 0; // --orbit N: the frames of a turntable the fit covers; 0: one picture
   double ViewAngle = 30;
   bool Orthographic = false;
   std::optional<double> ParallelScale;

@@ -129,16 +129,13 @@ std::vector<std::string> TempDir::Files() const
   return FilesIn(this->Path);
 }
 
-Image ReadImage(const std::filesystem::path& path)
+namespace
+{
+// The subimage `in` is at, as an Image.
+Image ReadCurrent(OIIO::ImageInput& in, int subimage)
 {
   Image image;
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in)
-  {
-    (void)OIIO::geterror();
-    return image;
-  }
-  const OIIO::ImageSpec& spec = in->spec();
+  const OIIO::ImageSpec& spec = in.spec();
   image.Width = spec.width;
   image.Height = spec.height;
   image.Channels = spec.nchannels;
@@ -146,7 +143,7 @@ Image ReadImage(const std::filesystem::path& path)
   image.Description = spec.get_string_attribute("ImageDescription");
   image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data());
+  in.read_image(subimage, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data());
   if (eightBit)
   {
     for (float& v : image.Pixels)
@@ -154,8 +151,35 @@ Image ReadImage(const std::filesystem::path& path)
       v = std::round(v * 255.0f);
     }
   }
-  in->close();
   return image;
+}
+}
+
+Image ReadImage(const std::filesystem::path& path)
+{
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    (void)OIIO::geterror();
+    return {};
+  }
+  return ReadCurrent(*in, 0);
+}
+
+std::vector<Image> ReadSubimages(const std::filesystem::path& path)
+{
+  std::vector<Image> images;
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    (void)OIIO::geterror();
+    return images;
+  }
+  for (int k = 0; in->seek_subimage(k, 0); ++k)
+  {
+    images.push_back(ReadCurrent(*in, k));
+  }
+  return images;
 }
 
 size_t CountCovered(const Image& image)
@@ -166,6 +190,54 @@ size_t CountCovered(const Image& image)
     covered += image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
   }
   return covered;
+}
+
+Silhouette MeasureSilhouette(const Image& image)
+{
+  Silhouette s;
+  s.Left = image.Width;
+  s.Top = image.Height;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      const std::size_t i = (static_cast<std::size_t>(y) * image.Width + x) * image.Channels;
+      if (image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0)
+      {
+        s.Left = std::min(s.Left, x);
+        s.Right = std::max(s.Right, x);
+        s.Top = std::min(s.Top, y);
+        s.Bottom = std::max(s.Bottom, y);
+      }
+    }
+  }
+  s.Width = s.Right - s.Left + 1;
+  s.Height = s.Bottom - s.Top + 1;
+  return s;
+}
+
+std::string TestShape::Obj() const
+{
+  std::ostringstream obj;
+  obj.precision(17);
+  for (const Point3& v : this->Vertices)
+  {
+    obj << "v " << v[0] << " " << v[1] << " " << v[2] << "\n";
+  }
+  return obj.str() + this->Faces;
+}
+
+TestShape Box(const Point3& sides)
+{
+  TestShape box;
+  for (int i = 0; i < 8; ++i)
+  {
+    box.Vertices.push_back({ (i & 1 ? 0.5 : -0.5) * sides[0], (i & 2 ? 0.5 : -0.5) * sides[1],
+      (i & 4 ? 0.5 : -0.5) * sides[2] });
+  }
+  // Quads (triangulated by the reader), each wound outwards.
+  box.Faces = "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  return box;
 }
 
 std::filesystem::path TestMesh(const std::string& name)

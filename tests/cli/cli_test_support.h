@@ -2,6 +2,7 @@
 #ifndef shadelab_cli_test_support_h
 #define shadelab_cli_test_support_h
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -59,8 +60,32 @@ struct Image
 /** Reads an image through OpenImageIO; Width 0 when it cannot. */
 Image ReadImage(const std::filesystem::path& path);
 
+/** Every subimage of a file (an animated GIF's frames); empty when it cannot be read. */
+std::vector<Image> ReadSubimages(const std::filesystem::path& path);
+
 /** Pixels that are not black: the mesh's coverage on the default background. */
 size_t CountCovered(const Image& image);
+
+/** The bounding box of the pixels that are not black, in pixels from the top left. */
+struct Silhouette
+{
+  int Left = 0, Right = -1, Top = 0, Bottom = -1;
+  int Width = 0, Height = 0;
+};
+Silhouette MeasureSilhouette(const Image& image);
+
+using Point3 = std::array<double, 3>;
+
+/** A mesh written by a test: its vertices, and its faces as OBJ lines. */
+struct TestShape
+{
+  std::vector<Point3> Vertices;
+  std::string Faces;
+  std::string Obj() const;
+};
+
+/** A box of the given sides about the origin, its faces wound outwards. */
+TestShape Box(const Point3& sides);
 
 /** A real mesh of tests/data/meshes. */
 std::filesystem::path TestMesh(const std::string& name);

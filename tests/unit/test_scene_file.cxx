@@ -212,6 +212,8 @@ TEST(SceneSchema, ListsTheNameTablesChoices)
   EXPECT_EQ(shot["up"]["enum"].get<std::vector<std::string>>(), Names<UpAxis>());
   EXPECT_EQ(shot["camera"]["properties"]["view"]["enum"].get<std::vector<std::string>>(),
     Names<ViewPreset>());
+  EXPECT_EQ(
+    shot["camera"]["properties"]["fit"]["enum"].get<std::vector<std::string>>(), Names<FitMode>());
 }
 
 TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
@@ -238,7 +240,7 @@ TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
   }
   EXPECT_EQ(camera,
     (std::set<std::string>{ "position", "focal_point", "view_up", "view_angle", "orthographic",
-      "parallel_scale", "view", "azimuth", "elevation", "zoom" }));
+      "parallel_scale", "view", "azimuth", "elevation", "zoom", "fit" }));
   EXPECT_EQ(light,
     (std::set<std::string>{ "kind", "position", "direction", "color", "half_angle", "exponent" }));
   // The example scenes use only what the schema describes (the parser reads them all).

@@ -107,6 +107,13 @@ TEST(Views, AzimuthElevationAndZoomTurnAndMagnifyTheFittedCamera)
   const Silhouette raised = Render(dir, { "--view", "right", "--elevation", "45" });
   const V eye{ std::cos(M_PI / 4), std::sin(M_PI / 4), 0 };
   EXPECT_NEAR(Aspect(raised), PredictedAspect(eye, { -eye[1], eye[0], 0 }), 0.05);
+  // The azimuth turns about the up axis, from the top too: the picture
+  // spins a quarter turn (a turn about the top view's screen-up would tip
+  // the camera down to a side view instead).
+  const Silhouette top = Render(dir, { "--view", "top" });
+  const Silhouette spun = Render(dir, { "--view", "top", "--azimuth", "90" });
+  EXPECT_NEAR(spun.Width, top.Height, 2);
+  EXPECT_NEAR(spun.Height, top.Width, 2);
   // Zoom 2: twice the size.
   const Silhouette zoomed = Render(dir, { "--zoom", "2" });
   EXPECT_NEAR(zoomed.Height, 2 * front.Height, 3);

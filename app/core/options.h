@@ -143,7 +143,8 @@ struct SceneOptions
   double Azimuth = 0, Elevation = 0; // degrees, turning the camera about the focal point
   double Zoom = 1;                   // vtkCamera::Zoom: the view angle (or scale) divided by it
   FitMode Fit = FitMode::Sphere;
-  int Orbit = 0; // --orbit N: the frames of a turntable the fit covers; 0: one picture
+  int Orbit = 0;               // --orbit N: N frames turning once about the up axis; 0: one picture
+  double FramesPerSecond = 25; // an --orbit animation's (.gif, .mp4)
   double ViewAngle = 30;
   bool Orthographic = false;
   std::optional<double> ParallelScale;
@@ -192,6 +193,9 @@ void AddSceneOptions(CLI::App& command, SceneOptions& options);
  */
 void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
 
+/** Declares --orbit and --fps (render's, and scene files'). */
+void AddOrbitOptions(CLI::App& command, SceneOptions& options);
+
 /** Declares --weighting, --feature-angle and --orient on command. */
 void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 
@@ -216,6 +220,10 @@ std::string RenderedSize(const SceneOptions& o, ImageSize& rendered);
 
 /** The largest supersampling, N x N samples a pixel. */
 constexpr int MaxSupersampling = 8;
+
+/** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
+constexpr int MaxOrbitFrames = 3600;
+constexpr int MaxFramesPerSecond = 120;
 
 /** The largest image side and area: the float read-back of 8192x8192 is 1 GiB. */
 constexpr int MaxImageSide = 16384;

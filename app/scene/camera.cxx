@@ -132,6 +132,13 @@ void Turn(vtkCamera* camera, const Vec3& axis, double degrees)
 }
 }
 
+SceneOptions OrbitFrame(const SceneOptions& options, int k)
+{
+  SceneOptions frame = options;
+  frame.Azimuth += 360.0 * k / options.Orbit;
+  return frame;
+}
+
 std::string ApplyCamera(const SceneOptions& o, vtkPoints* points, double aspect, vtkCamera* camera)
 {
   double bounds[6];

@@ -21,6 +21,12 @@ namespace shadelab
 std::string ApplyCamera(
   const SceneOptions& options, vtkPoints* points, double aspect, vtkCamera* camera);
 
+/**
+ * Frame k of options' --orbit: its camera turned by 360*k/N degrees more,
+ * which is exactly --azimuth with that much added.
+ */
+SceneOptions OrbitFrame(const SceneOptions& options, int k);
+
 /** The conventions above, for --help. */
 extern const char* const CameraHelp;
 }

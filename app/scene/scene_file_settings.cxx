@@ -143,7 +143,7 @@ void ConvertShot(
       // "=": CLI11 would take "-Z" for an option of its own.
       Apply(o, { "--up=" + Choice(v, path, "up axis", Names<UpAxis>()) }, path);
     }
-    else if (key == "ssaa")
+    else if (key == "ssaa" || key == "orbit" || key == "fps")
     {
       Apply(o, { "--" + key, Number(v, path) }, path);
     }

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -30,6 +31,27 @@ std::string Quote(const std::string& s)
   return q + "'";
 }
 
+Point3 Minus(const Point3& a, const Point3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+double Dot(const Point3& a, const Point3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Point3 Cross(const Point3& a, const Point3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+Point3 Unit(const Point3& v)
+{
+  const double n = std::sqrt(Dot(v, v));
+  return { v[0] / n, v[1] / n, v[2] / n };
+}
+
 std::string Slurp(const std::filesystem::path& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -39,10 +61,16 @@ std::string Slurp(const std::filesystem::path& path)
 }
 }
 
-RunResult RunShadelab(const std::vector<std::string>& args)
+RunResult RunShadelab(
+  const std::vector<std::string>& args, const std::vector<std::string>& environment)
 {
   TempDir capture;
-  std::string command = "env -u DISPLAY " + Quote(SHADELAB_BINARY);
+  std::string command = "env -u DISPLAY";
+  for (const std::string& setting : environment)
+  {
+    command += " " + Quote(setting);
+  }
+  command += " " + Quote(SHADELAB_BINARY);
   for (const std::string& a : args)
   {
     command += " " + Quote(a);
@@ -238,6 +266,40 @@ TestShape Box(const Point3& sides)
   // Quads (triangulated by the reader), each wound outwards.
   box.Faces = "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
   return box;
+}
+
+RecordedCamera CameraOf(const Image& image)
+{
+  const auto j = nlohmann::json::parse(image.Description).at("camera");
+  RecordedCamera c;
+  c.Position = j.at("position").get<Point3>();
+  c.Focal = j.at("focal_point").get<Point3>();
+  c.Up = j.at("view_up").get<Point3>();
+  c.Orthographic = j.at("projection") == "orthographic";
+  c.ViewAngle = c.Orthographic ? 0 : j.at("view_angle_deg").get<double>();
+  c.ParallelScale = c.Orthographic ? j.at("parallel_scale").get<double>() : 0;
+  return c;
+}
+
+Extents Project(const RecordedCamera& c, const std::vector<Point3>& vertices, int width, int height)
+{
+  const Point3 forward = Unit(Minus(c.Focal, c.Position));
+  const Point3 right = Unit(Cross(forward, c.Up));
+  const Point3 up = Cross(right, forward);
+  Extents e;
+  for (const Point3& p : vertices)
+  {
+    const Point3 v = Minus(p, c.Position);
+    const double halfHeight =
+      c.Orthographic ? c.ParallelScale : Dot(v, forward) * std::tan(c.ViewAngle * M_PI / 360);
+    const double x = (Dot(v, right) / (halfHeight * width / height) + 1) / 2 * width;
+    const double y = (1 - Dot(v, up) / halfHeight) / 2 * height;
+    e.Left = std::min(e.Left, x);
+    e.Right = std::max(e.Right, x);
+    e.Top = std::min(e.Top, y);
+    e.Bottom = std::max(e.Bottom, y);
+  }
+  return e;
 }
 
 std::filesystem::path TestMesh(const std::string& name)

@@ -3,6 +3,7 @@
 #define shadelab_cli_test_support_h
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,8 +17,12 @@ struct RunResult
   std::string Stderr;
 };
 
-/** Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI). */
-RunResult RunShadelab(const std::vector<std::string>& args);
+/**
+ * Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI) and the
+ * environment's NAME=VALUE settings.
+ */
+RunResult RunShadelab(
+  const std::vector<std::string>& args, const std::vector<std::string>& environment = {});
 
 /**
  * Starts `shadelab ARGS...` as RunShadelab does, without waiting, its
@@ -86,6 +91,29 @@ struct TestShape
 
 /** A box of the given sides about the origin, its faces wound outwards. */
 TestShape Box(const Point3& sides);
+
+/** The camera a picture's metadata (its ImageDescription) records. */
+struct RecordedCamera
+{
+  Point3 Position, Focal, Up;
+  bool Orthographic = false;
+  double ViewAngle = 0, ParallelScale = 0;
+};
+RecordedCamera CameraOf(const Image& image);
+
+/** Where points land in a picture, in pixels from its left and top edges. */
+struct Extents
+{
+  double Left = INFINITY, Right = -INFINITY, Top = INFINITY, Bottom = -INFINITY;
+};
+
+/**
+ * The extents of vertices projected by camera into a width x height
+ * picture, which spans [0, width] x [0, height]: VTK's projection, computed
+ * here in double (the view angle vertical).
+ */
+Extents Project(
+  const RecordedCamera& camera, const std::vector<Point3>& vertices, int width, int height);
 
 /** A real mesh of tests/data/meshes. */
 std::filesystem::path TestMesh(const std::string& name);

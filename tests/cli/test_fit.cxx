@@ -7,7 +7,6 @@
 #include "image/comparison_picture.h" // the layout's documented constants
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,27 +15,6 @@ using namespace shadelab_test;
 
 namespace
 {
-Point3 Minus(const Point3& a, const Point3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-
-double Dot(const Point3& a, const Point3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Point3 Cross(const Point3& a, const Point3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-
-Point3 Unit(const Point3& v)
-{
-  const double n = std::sqrt(Dot(v, v));
-  return { v[0] / n, v[1] / n, v[2] / n };
-}
-
 // An ellipsoid off the origin: 12 rings of 24 vertices and the two poles.
 TestShape Ellipsoid(const Point3& radii, const Point3& centre)
 {
@@ -67,56 +45,6 @@ TestShape Ellipsoid(const Point3& radii, const Point3& centre)
     }
     e.Faces += "f " + std::to_string(south) + " " + std::to_string(at(rings, s)) + " " +
       std::to_string(at(rings, s + 1)) + "\n";
-  }
-  return e;
-}
-
-// The camera a picture's metadata records.
-struct Camera
-{
-  Point3 Position, Focal, Up;
-  bool Orthographic = false;
-  double ViewAngle = 0, ParallelScale = 0;
-};
-
-Camera CameraOf(const Image& image)
-{
-  const auto j = nlohmann::json::parse(image.Description).at("camera");
-  Camera c;
-  c.Position = j.at("position").get<Point3>();
-  c.Focal = j.at("focal_point").get<Point3>();
-  c.Up = j.at("view_up").get<Point3>();
-  c.Orthographic = j.at("projection") == "orthographic";
-  c.ViewAngle = c.Orthographic ? 0 : j.at("view_angle_deg").get<double>();
-  c.ParallelScale = c.Orthographic ? j.at("parallel_scale").get<double>() : 0;
-  return c;
-}
-
-// Where the vertices land in a width x height picture, in pixels from its
-// left and top edges (the picture spans [0, width] x [0, height]): VTK's
-// projection, the view angle vertical.
-struct Extents
-{
-  double Left = INFINITY, Right = -INFINITY, Top = INFINITY, Bottom = -INFINITY;
-};
-
-Extents Project(const Camera& c, const std::vector<Point3>& vertices, int width, int height)
-{
-  const Point3 forward = Unit(Minus(c.Focal, c.Position));
-  const Point3 right = Unit(Cross(forward, c.Up));
-  const Point3 up = Cross(right, forward);
-  Extents e;
-  for (const Point3& p : vertices)
-  {
-    const Point3 v = Minus(p, c.Position);
-    const double halfHeight =
-      c.Orthographic ? c.ParallelScale : Dot(v, forward) * std::tan(c.ViewAngle * M_PI / 360);
-    const double x = (Dot(v, right) / (halfHeight * width / height) + 1) / 2 * width;
-    const double y = (1 - Dot(v, up) / halfHeight) / 2 * height;
-    e.Left = std::min(e.Left, x);
-    e.Right = std::max(e.Right, x);
-    e.Top = std::min(e.Top, y);
-    e.Bottom = std::max(e.Bottom, y);
   }
   return e;
 }
@@ -293,7 +221,7 @@ TEST(Fit, GivenCameraSettingsStayAsGiven)
   // A given focal point stays the picture's centre; only the distance is fitted.
   const Picture focal = Render(dir, box,
     { "--size", "200x150", "--view", "iso", "--fit", "tight", "--camera-focal-point", "0.3,0,0" });
-  const Camera c = CameraOf(focal.Pixels);
+  const RecordedCamera c = CameraOf(focal.Pixels);
   EXPECT_EQ(c.Focal, (Point3{ 0.3, 0, 0 }));
   const Extents& e = focal.Projected;
   EXPECT_TRUE(std::fabs(e.Left) < Exact || std::fabs(e.Right - 200) < Exact ||

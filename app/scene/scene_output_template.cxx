@@ -117,7 +117,7 @@ std::string ExpandShot(const std::string& pattern, const Shot& shot, const std::
     return error;
   }
   fields["frame"] = "0";
-  Expand(pattern, fields, expanded.Output);
+  Expand(pattern, fields, expanded.Output); // as above: it expands
   if (expanded.Output == second)
   {
     const std::string extension = LowerExtension(expanded.Output);
@@ -135,7 +135,7 @@ std::string ExpandShot(const std::string& pattern, const Shot& shot, const std::
   {
     expanded.Scene = OrbitFrame(shot.Scene, k);
     fields["frame"] = Padded(static_cast<std::size_t>(k), static_cast<std::size_t>(frames));
-    Expand(pattern, fields, expanded.Output);
+    Expand(pattern, fields, expanded.Output); // as above: it expands
     shots.push_back(expanded);
   }
   return {};

@@ -143,7 +143,7 @@ public:
     {
       if (frame.Index > 0 && Interrupted)
       {
-        this->Fail(shot, shot.Output, "interrupted before its last frame: not written");
+        this->FailFrame(shot, frame, shot.Output, "interrupted before its last frame: not written");
         return;
       }
       const SceneOptions scene =
@@ -151,7 +151,7 @@ public:
       const SceneCache::Shown shown = context->Scenes.Show(scene, renderer.GetRenderer());
       if (!shown.Scene)
       {
-        this->Fail(shot, shown.Input, shown.Error);
+        this->FailFrame(shot, frame, shown.Input, shown.Error);
         return;
       }
       if (!this->RenderAndSubmit(shot, scene, frame, *shown.Scene, renderer))
@@ -172,6 +172,17 @@ private:
   {
     ++this->Failed;
     ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
+  }
+
+  // A shot that fails at one of its frames: the frame before, still with
+  // the writer, is collected first, so that a shot fails once.
+  void FailFrame(
+    const Shot& shot, const FramePlace& frame, const std::string& input, const std::string& problem)
+  {
+    if (frame.Index == 0 || this->Collect())
+    {
+      this->Fail(shot, input, problem);
+    }
   }
 
   // An output template (a scene file's, or many meshes') may name folders
@@ -239,12 +250,12 @@ private:
     this->Timer.Lap("frame");
     if (!renderer.GetError().empty())
     {
-      this->Fail(shot, "render", renderer.GetError());
+      this->FailFrame(shot, frame, "render", renderer.GetError());
       return false;
     }
     if (dump && !dump->GetError().empty())
     {
-      this->Fail(shot, dump->GetErrorFile(), dump->GetError());
+      this->FailFrame(shot, frame, dump->GetErrorFile(), dump->GetError());
       return false;
     }
     const auto metadata = DescribePicture(

@@ -9,9 +9,15 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <signal.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <thread>
 
 using namespace shadelab_test;
 
@@ -201,6 +207,46 @@ TEST(Orbit, AFailingFfmpegLeavesNothing)
     EXPECT_NE(r.Stderr.find(std::string(name) + ": "), std::string::npos) << r.Stderr;
     EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 1) << r.Stderr;
     EXPECT_TRUE(dir.Files().empty()) << "no video, no temporary";
+  }
+}
+
+TEST(Orbit, AnAnimationCutShortIsNotWritten)
+{
+  for (const std::string format : { ".gif", ".mp4" })
+  {
+    SCOPED_TRACE(format);
+    if (format == ".mp4" && !OnPath("ffmpeg"))
+    {
+      continue; // AnMp4HoldsEveryFrame says it is skipped
+    }
+    TempDir dir, logs;
+    const std::string out = (dir / ("spin" + format)).string();
+    const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o", out, "--orbit",
+                                    "1000", "--size", "320x240", "-v" },
+      logs / "stdout", logs / "stderr");
+    ASSERT_GT(pid, 0);
+    // -v prints a line per frame: stop it a few frames in.
+    const auto start = std::chrono::steady_clock::now();
+    std::string said;
+    while (std::count(said.begin(), said.end(), '\n') < 3 ||
+      said.find("shadelab: frame") == std::string::npos)
+    {
+      ASSERT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      std::ifstream err(logs / "stderr");
+      said.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+    }
+    kill(pid, SIGINT);
+    EXPECT_EQ(WaitShadelab(pid), 128 + SIGINT);
+    std::ifstream err(logs / "stderr");
+    said.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+    EXPECT_NE(
+      said.find("shadelab: error: " + out + ": interrupted before its last frame: not written\n"),
+      std::string::npos)
+      << said;
+    EXPECT_NE(said.find("after 1 of 1 shots: 0 written, 0 skipped, 1 failed"), std::string::npos)
+      << said;
+    EXPECT_TRUE(dir.Files().empty()) << "no animation, no temporary";
   }
 }
 

@@ -21,6 +21,8 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
   CLI::App* render = program.add_subcommand(
     "render", "Render MESH headless into the image OUT, or every shot of a scene file (--scene)");
   AddSceneOptions(*render, o.Scene);
+  AddOrbitOptions(*render, o.Scene);
+  render->get_option("--fps")->needs("--orbit");
   // render takes many meshes (files, folders, globs), rendered in one process.
   render->remove_option(render->get_option("MESH"));
   render->add_option("MESH", o.Meshes,
@@ -83,13 +85,13 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
 
 namespace
 {
-// The command line's shots: one mesh file to OUT as it is; many meshes (or a
-// folder, or a glob) each to OUT as a template, sharing one process. An exit
-// status on error, else 0.
+// The command line's shots: one mesh file to OUT as it is (with --orbit, as
+// a template for its frames); many meshes (or a folder, or a glob) each to
+// OUT as a template, sharing one process. An exit status on error, else 0.
 int CommandLineShots(const RenderOptions& o, std::vector<Shot>& shots)
 {
-  Shot shot{ o.Scene, o.Output, o.Pixels, "", false };
-  if (IsOneMeshFile(o.Meshes))
+  Shot shot{ o.Scene, o.Output, o.Pixels, "", false, false };
+  if (IsOneMeshFile(o.Meshes) && o.Scene.Orbit == 0)
   {
     shot.Scene.Mesh = o.Meshes[0];
     shots.push_back(shot);
@@ -106,21 +108,24 @@ int CommandLineShots(const RenderOptions& o, std::vector<Shot>& shots)
   for (std::size_t i = 0; i < meshes.size(); ++i)
   {
     shot.Scene.Mesh = meshes[i];
-    if (const std::string error =
-          ExpandOutputTemplate(o.Output, shot, "", i, meshes.size(), shot.Output);
+    std::vector<Shot> expanded;
+    if (const std::string error = ExpandShot(o.Output, shot, "", i, meshes.size(), expanded);
         !error.empty())
     {
       ReportError("--output", error);
       return ExitUsage;
     }
-    if (const auto [other, added] = outputs.emplace(shot.Output, meshes[i]); !added)
+    for (const Shot& one : expanded)
     {
-      ReportError("--output",
-        "\"" + shot.Output + "\" is the output of " + other->second + " and " + meshes[i] +
-          ": name each mesh's, as with {mesh} or {index}");
-      return ExitUsage;
+      if (const auto [other, added] = outputs.emplace(one.Output, meshes[i]); !added)
+      {
+        ReportError("--output",
+          "\"" + one.Output + "\" is the output of " + other->second + " and " + meshes[i] +
+            ": name each mesh's, as with {mesh} or {index}");
+        return ExitUsage;
+      }
+      shots.push_back(one);
     }
-    shots.push_back(shot);
   }
   return 0;
 }

@@ -104,6 +104,9 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
   AddChoice(command, "--view", o.View,
     "Where the fitted camera looks from: for up +Y front looks along -Z, for up +Z along +Y; "
     "iso from front, right and above (default front)");
+  AddChoice(command, "--fit", o.Fit,
+    "How the missing camera settings are fitted: sphere, the bounding sphere fills the view "
+    "(VTK's ResetCamera); tight, the mesh's projection fills the picture (default sphere)");
   command.add_flag("--edges", o.Edges, "The triangles' edges over the shading");
   AddParsed(command, "--edge-color", o.EdgeColor, ParseRgb, "Their colour (default 0.05,0.05,0.05)")
     ->option_text("R,G,B");
@@ -123,7 +126,8 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
   command.add_flag("--normal-glyphs", o.NormalGlyphs,
     "A line along each vertex normal (those gouraud and phong use)");
   AddParsed(command, "--azimuth", o.Azimuth, ParseNumber,
-    "Turn the camera by DEG about the view-up through the focal point")
+    "Turn the camera by DEG about the up axis (--camera-view-up when given, else --up's) "
+    "through the focal point")
     ->option_text("DEG");
   AddParsed(command, "--elevation", o.Elevation, ParseNumber,
     "Then by DEG up about the horizontal through the focal point")
@@ -230,10 +234,36 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   AddNormalsSettings(command, o.Computed);
 }
 
+void AddOrbitOptions(CLI::App& command, SceneOptions& o)
+{
+  command
+    .add_option("--orbit", o.Orbit,
+      "N frames turning the camera once about the up axis through the focal point (frame k "
+      "at --azimuth plus 360*k/N degrees): into a -o template with {frame}, or one .gif or "
+      ".mp4 (through the ffmpeg program)")
+    ->check(CLI::Range(1, MaxOrbitFrames))
+    ->option_text("N");
+  AddParsed(
+    command, "--fps", o.FramesPerSecond,
+    [](const std::string& t)
+    {
+      const double f = ParseNumber(t);
+      if (!(f > 0 && f <= MaxFramesPerSecond))
+      {
+        throw std::invalid_argument(
+          "'" + t + "' is outside (0, " + std::to_string(MaxFramesPerSecond) + "] frames a second");
+      }
+      return f;
+    },
+    "An --orbit animation's frames a second (default 25; a .gif's at most 50)")
+    ->option_text("F");
+}
+
 void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args)
 {
   CLI::App app;
   AddSceneOptions(app, o);
+  AddOrbitOptions(app, o);
   std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 takes them backwards
   try
   {

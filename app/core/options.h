@@ -93,6 +93,21 @@ struct NameTable<ViewPreset>
   };
 };
 
+/** --fit: how missing camera settings are fitted to the mesh. */
+enum class FitMode
+{
+  Sphere, // the bounding sphere fills the narrower view angle, as VTK's ResetCamera
+  Tight   // the points' projection fills the picture
+};
+
+template <>
+struct NameTable<FitMode>
+{
+  static constexpr std::array<std::pair<FitMode, const char*>, 2> Entries{
+    { { FitMode::Sphere, "sphere" }, { FitMode::Tight, "tight" } }
+  };
+};
+
 struct ImageSize
 {
   int Width = 1024;
@@ -134,6 +149,9 @@ struct SceneOptions
   ViewPreset View = ViewPreset::Front;
   double Azimuth = 0, Elevation = 0; // degrees, turning the camera about the focal point
   double Zoom = 1;                   // vtkCamera::Zoom: the view angle (or scale) divided by it
+  FitMode Fit = FitMode::Sphere;
+  int Orbit = 0;               // --orbit N: N frames turning once about the up axis; 0: one picture
+  double FramesPerSecond = 25; // an --orbit animation's (.gif, .mp4)
   double ViewAngle = 30;
   bool Orthographic = false;
   std::optional<double> ParallelScale;
@@ -185,6 +203,9 @@ void AddSceneOptions(CLI::App& command, SceneOptions& options);
  */
 void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
 
+/** Declares --orbit and --fps (render's, and scene files'). */
+void AddOrbitOptions(CLI::App& command, SceneOptions& options);
+
 /** Declares --weighting, --feature-angle and --orient on command. */
 void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 
@@ -210,6 +231,10 @@ std::string RenderedSize(const SceneOptions& o, ImageSize& rendered);
 
 /** The largest supersampling, N x N samples a pixel. */
 constexpr int MaxSupersampling = 8;
+
+/** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
+constexpr int MaxOrbitFrames = 3600;
+constexpr int MaxFramesPerSecond = 120;
 
 /** The largest image side and area: the float read-back of 8192x8192 is 1 GiB. */
 constexpr int MaxImageSide = 16384;

@@ -199,29 +199,63 @@ std::string WriteFile(const std::string& path, std::string_view bytes)
   return file.Commit();
 }
 
+MemoryFile::MemoryFile()
+  : Memory(memfd_create("shadelab-output", MFD_CLOEXEC))
+{
+  if (this->Memory < 0)
+  {
+    this->Failure = CannotWrite(errno);
+  }
+}
+
+MemoryFile::~MemoryFile()
+{
+  if (this->Memory >= 0)
+  {
+    close(this->Memory);
+  }
+}
+
+std::string MemoryFile::Name() const
+{
+  return "/proc/" + std::to_string(getpid()) + "/fd/" + std::to_string(this->Memory);
+}
+
+std::string MemoryFile::Read() const
+{
+  std::string text;
+  std::vector<char> chunk(1 << 16);
+  ssize_t n = 0;
+  while ((n = pread(this->Memory, chunk.data(), chunk.size(), static_cast<off_t>(text.size()))) > 0)
+  {
+    text.append(chunk.data(), static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
+std::string MemoryFile::WriteTo(const std::string& path) const
+{
+  OutputFile file(path);
+  std::vector<char> chunk(1 << 20);
+  off_t offset = 0;
+  ssize_t n = 0;
+  while ((n = pread(this->Memory, chunk.data(), chunk.size(), offset)) > 0 &&
+    file.Write(chunk.data(), static_cast<std::size_t>(n)))
+  {
+    offset += n;
+  }
+  return n < 0 ? CannotWrite(errno) : file.Commit();
+}
+
 std::string WriteFileThroughMemory(
   const std::string& path, const std::function<std::string(const std::string& name)>& write)
 {
-  const int memory = memfd_create("shadelab-output", MFD_CLOEXEC);
-  if (memory < 0)
+  const MemoryFile memory;
+  if (!memory.Error().empty())
   {
-    return CannotWrite(errno);
+    return memory.Error();
   }
-  std::string error = write("/proc/self/fd/" + std::to_string(memory));
-  if (error.empty())
-  {
-    OutputFile file(path);
-    std::vector<char> chunk(1 << 20);
-    off_t offset = 0;
-    ssize_t n = 0;
-    while ((n = pread(memory, chunk.data(), chunk.size(), offset)) > 0 &&
-      file.Write(chunk.data(), static_cast<std::size_t>(n)))
-    {
-      offset += n;
-    }
-    error = n < 0 ? CannotWrite(errno) : file.Commit();
-  }
-  close(memory);
-  return error;
+  const std::string error = write(memory.Name());
+  return error.empty() ? memory.WriteTo(path) : error;
 }
 }

@@ -53,10 +53,42 @@ private:
 std::string WriteFile(const std::string& path, std::string_view bytes);
 
 /**
- * For libraries that write only to a file they name and open themselves
- * (and do not all check their writes): write(name) writes into an anonymous
- * memory file named `name`; its bytes then go to path through an
- * OutputFile. write returns "" or its own error, which is passed on.
+ * An anonymous file in memory (memfd), for libraries and programs that write
+ * only to a file they name and open themselves (and do not all check their
+ * writes): Name() opens it, in this process or in a child; WriteTo then
+ * writes what it holds to path through an OutputFile.
+ */
+class MemoryFile
+{
+public:
+  /** Makes the file; Error() says why when it cannot. */
+  MemoryFile();
+  ~MemoryFile();
+
+  /** "/proc/PID/fd/N": the same file, whichever process of ours opens it. */
+  std::string Name() const;
+  /** For a child's standard output or error (dup2 it there). */
+  int Descriptor() const { return this->Memory; }
+  /** "" while all is well, else "cannot write: REASON". */
+  const std::string& Error() const { return this->Failure; }
+
+  /** What the file holds (a log, say). */
+  std::string Read() const;
+  /** Writes what it holds to path through an OutputFile: "" or "cannot write: REASON". */
+  std::string WriteTo(const std::string& path) const;
+
+private:
+  MemoryFile(const MemoryFile&) = delete;
+  void operator=(const MemoryFile&) = delete;
+
+  int Memory = -1;
+  std::string Failure;
+};
+
+/**
+ * write(name) writes into a MemoryFile named `name`; its bytes then go to
+ * path through an OutputFile. write returns "" or its own error, which is
+ * passed on.
  */
 std::string WriteFileThroughMemory(
   const std::string& path, const std::function<std::string(const std::string& name)>& write);

@@ -83,10 +83,11 @@ int Inspector::Load()
     return ExitUsage;
   }
   loaded.Mesh->GetBounds(this->Bounds);
+  this->Points = loaded.Mesh->GetPoints();
   this->Triangles = loaded.Mesh->GetNumberOfPolys();
   this->FileNormals = loaded.NormalsFromFile;
   this->Lights = scene.Lights.empty() ? LightMode::PointAtCamera : LightMode::Given;
-  if (const std::string error = ApplyCamera(scene, this->Bounds,
+  if (const std::string error = ApplyCamera(scene, this->Points,
         static_cast<double>(scene.Size.Width) / scene.Size.Height, this->Camera);
       !error.empty())
   {
@@ -224,7 +225,7 @@ void Inspector::ResetCamera()
   const int* size = this->Window->GetSize();
   const double aspect = (static_cast<double>(size[0]) / this->Columns) /
     (static_cast<double>(std::max(size[1], 1)) / this->Rows);
-  ApplyCamera(this->Options.Scene, this->Bounds, aspect, this->Camera); // checked at start
+  ApplyCamera(this->Options.Scene, this->Points, aspect, this->Camera); // checked at start
   this->Slots.front().Renderer->ResetCameraClippingRange(this->Bounds);
 }
 

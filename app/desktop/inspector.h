@@ -123,6 +123,7 @@ private:
   std::string Problem;      // the last thing that went wrong, shown in the HUD
   MeshCache Meshes;
   double Bounds[6] = {};
+  vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)
   vtkIdType Triangles = 0;
 
   vtkNew<vtkRenderWindow> Window;

@@ -7,6 +7,7 @@
 #include "headless/shader_dump.h"
 #include "image/image_writer_process.h"
 #include "image/metadata.h"
+#include "scene/camera.h"
 #include "scene/mesh_cache.h"
 #include "scene/overlays.h"
 #include "scene/scene.h"
@@ -78,6 +79,13 @@ private:
   std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
 
+// Where a shot's pictures go in its file: every frame of an animation, or one.
+FramePlace FramesOf(const Shot& shot)
+{
+  return { 0, static_cast<std::uint32_t>(shot.Animation ? shot.Scene.Orbit : 1),
+    shot.Scene.FramesPerSecond };
+}
+
 // Per picture size: one context, and the scenes built in it for the
 // current mesh, one per rule, whose actors keep their uploaded buffers.
 struct Context
@@ -130,17 +138,31 @@ public:
     HeadlessRenderer& renderer = *context->Renderer;
     // Another mesh: the previous one's buffers go.
     context->Scenes.ForgetOtherMeshes(loaded.Mesh, renderer.GetRenderer());
-    const SceneCache::Shown shown = context->Scenes.Show(shot.Scene, renderer.GetRenderer());
-    if (!shown.Scene)
+    // An animation's frames, each handed to the writer as the next renders.
+    for (FramePlace frame = FramesOf(shot); frame.Index < frame.Count; ++frame.Index)
     {
-      this->Fail(shot, shown.Input, shown.Error);
-      return;
+      if (frame.Index > 0 && Interrupted)
+      {
+        this->FailFrame(shot, frame, shot.Output, "interrupted before its last frame: not written");
+        return;
+      }
+      const SceneOptions scene =
+        shot.Animation ? OrbitFrame(shot.Scene, static_cast<int>(frame.Index)) : shot.Scene;
+      const SceneCache::Shown shown = context->Scenes.Show(scene, renderer.GetRenderer());
+      if (!shown.Scene)
+      {
+        this->FailFrame(shot, frame, shown.Input, shown.Error);
+        return;
+      }
+      if (!this->RenderAndSubmit(shot, scene, frame, *shown.Scene, renderer))
+      {
+        return;
+      }
     }
-    this->RenderAndSubmit(shot, *shown.Scene, renderer);
   }
 
   // The last picture, written.
-  void Finish() { this->Collect(); }
+  void Finish() { (void)this->Collect(); }
 
   std::size_t Failed = 0, Skipped = 0;
 
@@ -150,6 +172,17 @@ private:
   {
     ++this->Failed;
     ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
+  }
+
+  // A shot that fails at one of its frames: the frame before, still with
+  // the writer, is collected first, so that a shot fails once.
+  void FailFrame(
+    const Shot& shot, const FramePlace& frame, const std::string& input, const std::string& problem)
+  {
+    if (frame.Index == 0 || this->Collect())
+    {
+      this->Fail(shot, input, problem);
+    }
   }
 
   // An output template (a scene file's, or many meshes') may name folders
@@ -200,52 +233,66 @@ private:
     return &context;
   }
 
-  void RenderAndSubmit(const Shot& shot, const BuiltScene& scene, HeadlessRenderer& renderer)
+  // Renders the shot's picture (scene, its frame) and submits it; false
+  // when the shot failed (and was reported).
+  bool RenderAndSubmit(const Shot& shot, const SceneOptions& options, const FramePlace& frame,
+    const BuiltScene& scene, HeadlessRenderer& renderer)
   {
     std::unique_ptr<ShaderDump> dump;
     if (!this->Options.DumpShaders.empty())
     {
       dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), this->Options.DumpShaders,
-        std::string(ToString(shot.Scene.ShadingRule)) + "-" + ToString(shot.Scene.ReflectionModel));
+        std::string(ToString(options.ShadingRule)) + "-" + ToString(options.ReflectionModel));
     }
-    const SceneOverlays overlays(shot.Scene, scene.Mesh, this->Meshes, renderer.GetRenderer());
+    const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());
     FloatImage image = renderer.Render();
-    image.Alpha = shot.Scene.TransparentBackground;
+    image.Alpha = options.TransparentBackground;
     this->Timer.Lap("frame");
     if (!renderer.GetError().empty())
     {
-      this->Fail(shot, "render", renderer.GetError());
-      return;
+      this->FailFrame(shot, frame, "render", renderer.GetError());
+      return false;
     }
     if (dump && !dump->GetError().empty())
     {
-      this->Fail(shot, dump->GetErrorFile(), dump->GetError());
-      return;
+      this->FailFrame(shot, frame, dump->GetErrorFile(), dump->GetError());
+      return false;
     }
     const auto metadata = DescribePicture(
-      this->CommandLine, shot.Scene, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
-    this->Collect(); // the previous picture, encoded while this one rendered
-    if (const std::string error = this->Writer.Submit(shot.Output, image, shot.Pixels, metadata);
+      this->CommandLine, options, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
+    // The previous picture, encoded while this one rendered: this shot's
+    // previous frame, whose failure ends the shot, or another shot's.
+    if (!this->Collect() && frame.Index > 0)
+    {
+      return false;
+    }
+    if (const std::string error =
+          this->Writer.Submit(shot.Output, image, shot.Pixels, metadata, frame);
         !error.empty())
     {
       this->Fail(shot, shot.Output, error);
-      return;
+      return false;
     }
     this->Writing = &shot;
+    return true;
   }
 
-  // The picture submitted before, once the writer has written it.
-  void Collect()
+  // The picture submitted before, once the writer has written it (or taken
+  // it, an animation's frame); false when it failed (and was reported).
+  bool Collect()
   {
-    if (this->Writing)
+    if (!this->Writing)
     {
-      if (const std::string error = this->Writer.Collect(); !error.empty())
-      {
-        this->Fail(*this->Writing, this->Writing->Output, error);
-      }
-      this->Writing = nullptr;
-      this->Timer.Lap("write");
+      return true;
     }
+    const std::string error = this->Writer.Collect();
+    if (!error.empty())
+    {
+      this->Fail(*this->Writing, this->Writing->Output, error);
+    }
+    this->Writing = nullptr;
+    this->Timer.Lap("write");
+    return error.empty();
   }
 
   const BatchOptions& Options;
@@ -281,6 +328,15 @@ int RenderShots(
     if (const std::string error = ShaderDump::PrepareFolder(o.DumpShaders); !error.empty())
     {
       return ReportError(o.DumpShaders, error);
+    }
+  }
+  // Before anything renders: what a shot's file format needs besides a picture.
+  for (const Shot* shot : mine)
+  {
+    if (const std::string error = ImageWriterProcess::CheckEncoder(shot->Output, FramesOf(*shot));
+        !error.empty())
+    {
+      return ReportError(shot->Output, error);
     }
   }
   const InterruptCatcher catcher;

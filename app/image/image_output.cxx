@@ -2,9 +2,6 @@
 
 #include "core/output_file.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -42,8 +39,8 @@ std::string OneLine(std::string s)
 // The writer for path's format, encoding into memory: OpenImageIO's PNG and
 // JPEG writers do not report a failed write to a file of their own, so the
 // bytes are written by OutputFile, which checks every step.
-std::unique_ptr<OIIO::ImageOutput> Open(const std::string& path, const OIIO::ImageSpec& spec,
-  OIIO::Filesystem::IOProxy& memory, std::string& error)
+std::unique_ptr<OIIO::ImageOutput> OpenInMemory(const std::string& path,
+  const OIIO::ImageSpec& spec, OIIO::Filesystem::IOProxy& memory, std::string& error)
 {
   auto out = OIIO::ImageOutput::create(path, &memory);
   if (!out)
@@ -80,51 +77,68 @@ std::unique_ptr<OIIO::ImageOutput> Open(const std::string& path, const OIIO::Ima
 }
 }
 
-std::string WriteImage(const std::string& path, const FloatImage& image, PixelType type,
-  const std::vector<std::pair<std::string, std::string>>& metadata,
-  const std::vector<std::uint8_t>* pixels8)
+std::string ImageEncoder::Open(const ImageRequest& first)
 {
-  const PixelType resolved = ResolvePixelType(path, type);
-  OIIO::ImageSpec spec(image.Width, image.Height, Channels(image), ToTypeDesc(resolved));
+  const FloatImage& image = first.Image;
+  this->Path = first.Path;
+  this->Type = ResolvePixelType(first.Path, first.Type);
+  this->Spec = OIIO::ImageSpec(image.Width, image.Height, Channels(image), ToTypeDesc(this->Type));
   if (image.Alpha)
   {
     // Associated alpha (the colours are over black), as OpenImageIO takes
     // it; PNG's writer stores it unassociated.
-    spec.alpha_channel = 3;
+    this->Spec.alpha_channel = 3;
   }
-  for (const auto& [key, value] : metadata)
+  for (const auto& [key, value] : first.Metadata)
   {
-    spec.attribute(key, value);
+    this->Spec.attribute(key, value);
   }
-  std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
+  if (first.Frame.Count > 1)
+  {
+    // An animation's (GIF counts a frame's time in whole hundredths of a second).
+    this->Spec.attribute("FramesPerSecond", static_cast<float>(first.Frame.FramesPerSecond));
+  }
+  this->Memory = std::make_unique<OIIO::Filesystem::IOVecOutput>(this->Encoded);
   std::string error;
-  auto out = Open(path, spec, memory, error);
-  if (!out)
+  this->Output = OpenInMemory(first.Path, this->Spec, *this->Memory, error);
+  return error;
+}
+
+std::string ImageEncoder::Add(const ImageRequest& frame)
+{
+  if (frame.Frame.Index > 0 &&
+    !this->Output->open(this->Path, this->Spec, OIIO::ImageOutput::AppendSubimage))
   {
-    return error;
+    return "cannot encode: " + OneLine(this->Output->geterror());
   }
+  const FloatImage& image = frame.Image;
   bool written = false;
-  switch (resolved)
+  switch (this->Type)
   {
     case PixelType::UInt16:
-      written = out->write_image(OIIO::TypeDesc::UINT16, Quantise<uint16_t>(image, 65535).data());
+      written =
+        this->Output->write_image(OIIO::TypeDesc::UINT16, Quantise<uint16_t>(image, 65535).data());
       break;
     case PixelType::Half:
     case PixelType::Float:
-      written = out->write_image(
+      written = this->Output->write_image(
         OIIO::TypeDesc::FLOAT, ToTopDown<float>(image, [](float v) { return v; }).data());
       break;
     default:
-      written = out->write_image(
-        OIIO::TypeDesc::UINT8, pixels8 ? pixels8->data() : Quantise<uint8_t>(image, 255).data());
+      written = this->Output->write_image(OIIO::TypeDesc::UINT8,
+        frame.Pixels8.empty() ? Quantise<uint8_t>(image, 255).data() : frame.Pixels8.data());
       break;
   }
-  if (!written || !out->close())
+  return written ? std::string() : "cannot encode: " + OneLine(this->Output->geterror());
+}
+
+std::string ImageEncoder::Finish()
+{
+  if (!this->Output->close())
   {
-    return "cannot encode: " + OneLine(out->geterror());
+    return "cannot encode: " + OneLine(this->Output->geterror());
   }
-  return WriteFile(
-    path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
+  return WriteFile(this->Path,
+    std::string_view(reinterpret_cast<const char*>(this->Encoded.data()), this->Encoded.size()));
 }
 }

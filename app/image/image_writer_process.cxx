@@ -1,5 +1,6 @@
 #include "image/image_writer_process.h"
 
+#include "core/find_program.h"
 #include "core/output_path.h"
 #include "core/sibling_executable.h"
 #include "image/image_writer_protocol.h"
@@ -123,8 +124,25 @@ std::string ImageWriterProcess::Write(const std::string& path, const FloatImage&
   return error.empty() ? this->Collect() : error;
 }
 
+std::string ImageWriterProcess::CheckEncoder(const std::string& path, const FramePlace& frames)
+{
+  const std::string extension = LowerExtension(path);
+  if (extension == ".mp4" && FindProgram("ffmpeg").empty())
+  {
+    return "writing .mp4 needs the ffmpeg program, which is not on PATH (Debian: apt-get "
+           "install ffmpeg)";
+  }
+  if (extension == ".gif" && frames.Count > 1 && frames.FramesPerSecond > 50)
+  {
+    return "a GIF's frames last at least 2/100 s (browsers slow shorter ones to 1/10 s): "
+           "--fps at most 50, or .mp4";
+  }
+  return {};
+}
+
 std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage& image,
-  PixelType type, const std::vector<std::pair<std::string, std::string>>& metadata)
+  PixelType type, const std::vector<std::pair<std::string, std::string>>& metadata,
+  const FramePlace& frame)
 {
   if (!this->StartError.empty())
   {
@@ -135,7 +153,7 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
     return "the image writer has stopped";
   }
   this->Written = true;
-  ImageRequest request{ path, type, metadata, {}, {} };
+  ImageRequest request{ path, type, metadata, frame, {}, {} };
   request.Image.Width = image.Width;
   request.Image.Height = image.Height;
   request.Image.Alpha = image.Alpha;

@@ -11,6 +11,7 @@
 #define shadelab_image_writer_process_h
 
 #include "image/image_pixels.h"
+#include "image/image_writer_protocol.h"
 
 #include <sys/types.h>
 
@@ -34,6 +35,14 @@ public:
    */
   static std::string CheckFolder(const std::string& path);
 
+  /**
+   * What needs no picture either, for a file of `frames`' count: a format
+   * written by another program (.mp4, through ffmpeg) has it on PATH; a
+   * GIF's frames last the whole hundredths of a second that browsers keep
+   * (at least 2). An error text or "".
+   */
+  static std::string CheckEncoder(const std::string& path, const FramePlace& frames);
+
   /** Hands the picture over and waits until it is written; an error text or "". */
   std::string Write(const std::string& path, const FloatImage& image, PixelType type,
     const std::vector<std::pair<std::string, std::string>>& metadata);
@@ -42,9 +51,11 @@ public:
    * Hands the picture over and returns once the writer has it, so that the
    * caller renders the next while this one is encoded. Each Submit must be
    * followed by one Collect (before the next Submit); "" or an error text.
+   * An animation's frames are submitted in order, each with its place; its
+   * file is written when the last is in (its Collect says so).
    */
   std::string Submit(const std::string& path, const FloatImage& image, PixelType type,
-    const std::vector<std::pair<std::string, std::string>>& metadata);
+    const std::vector<std::pair<std::string, std::string>>& metadata, const FramePlace& frame = {});
 
   /** Waits until the submitted picture is written: "" or an error text. */
   std::string Collect();

@@ -83,6 +83,8 @@ bool SendImageRequest(int fd, const ImageRequest& r)
   {
     ok = ok && SendText(fd, key) && SendText(fd, value);
   }
+  ok =
+    ok && Send(fd, r.Frame.Index) && Send(fd, r.Frame.Count) && Send(fd, r.Frame.FramesPerSecond);
   const bool bytes = !r.Pixels8.empty();
   return ok && Send<int32_t>(fd, r.Image.Width) && Send<int32_t>(fd, r.Image.Height) &&
     Send<uint32_t>(fd, bytes ? 1 : 0) && Send<uint32_t>(fd, r.Image.Alpha ? 1 : 0) &&
@@ -106,6 +108,13 @@ bool ReceiveImageRequest(int fd, ImageRequest& r)
     {
       return false;
     }
+  }
+  FramePlace& f = r.Frame;
+  if (!Receive(fd, f.Index) || !Receive(fd, f.Count) || !Receive(fd, f.FramesPerSecond) ||
+    f.Count < 1 || f.Count > static_cast<uint32_t>(MaxOrbitFrames) || f.Index >= f.Count ||
+    !(f.FramesPerSecond > 0 && f.FramesPerSecond <= MaxFramesPerSecond))
+  {
+    return false;
   }
   int32_t width = 0, height = 0;
   if (!Receive(fd, width) || !Receive(fd, height) || width < 1 || height < 1 ||

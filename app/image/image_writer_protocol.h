@@ -14,11 +14,23 @@
 
 namespace shadelab
 {
+/**
+ * Where a picture goes in its file: frame Index of Count, the frames of an
+ * --orbit animation shown FramesPerSecond (a picture: 0 of 1).
+ */
+struct FramePlace
+{
+  std::uint32_t Index = 0;
+  std::uint32_t Count = 1;
+  double FramesPerSecond = 25;
+};
+
 struct ImageRequest
 {
   std::string Path;
   PixelType Type = PixelType::Auto;
   std::vector<std::pair<std::string, std::string>> Metadata;
+  FramePlace Frame;
   FloatImage Image; // its Width and Height always; its pixels unless Pixels8 has them
   std::vector<std::uint8_t> Pixels8; // 8-bit pictures: top-down RGB(A), quantised by the sender
 };

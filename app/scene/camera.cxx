@@ -1,7 +1,12 @@
 #include "scene/camera.h"
 
+#include "scene/camera_fit.h"
+
 #include <vtkCamera.h>
 #include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkTransform.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,10 +21,15 @@ const char* const CameraHelp =
   "which the mesh's bounding sphere (half the box diagonal, grown to enclose the mesh around a "
   "given focal point) fills the narrower of the two view angles; the view-up to --up's axis, "
   "or, for a camera looking straight along it (top, bottom), to the front's direction: away "
-  "from it looking down, towards it looking up. --azimuth, --elevation and --zoom then turn "
-  "and magnify the camera, given or fitted, about its focal point. Orthographic: "
-  "--parallel-scale is half the view height in world units, fitted to the same sphere when "
-  "not given. The near and far planes always enclose the mesh.";
+  "from it looking down, towards it looking up. --azimuth (about the up axis: the view-up "
+  "given, else --up's) and --elevation then turn the camera, given or fitted, about its focal "
+  "point. Orthographic: --parallel-scale is half the view height in world units, fitted to "
+  "the same sphere when not given. --fit tight then fits what was not given to the mesh's "
+  "points instead, for the direction the camera now has: the distance (orthographic: the "
+  "parallel scale) at which the points' projection spans the picture exactly, without margin, "
+  "on the axis that limits it, and the focal point moved in the view plane to centre it (with "
+  "--orbit it stays the turn's centre, and the fit holds every frame). --zoom then magnifies. "
+  "The near and far planes always enclose the mesh.";
 
 namespace
 {
@@ -104,11 +114,35 @@ void Preset(ViewPreset view, const Frame& f, Vec3& eye, Vec3& up)
       break;
   }
 }
+
+// Turns the camera, its position and view-up, by degrees about axis
+// through the focal point.
+void Turn(vtkCamera* camera, const Vec3& axis, double degrees)
+{
+  const double* focal = camera->GetFocalPoint();
+  vtkNew<vtkTransform> turn;
+  turn->Translate(focal[0], focal[1], focal[2]);
+  turn->RotateWXYZ(degrees, axis.data());
+  turn->Translate(-focal[0], -focal[1], -focal[2]);
+  double position[3], up[3];
+  turn->TransformPoint(camera->GetPosition(), position);
+  turn->TransformVector(camera->GetViewUp(), up);
+  camera->SetPosition(position);
+  camera->SetViewUp(up);
+}
 }
 
-std::string ApplyCamera(
-  const SceneOptions& o, const double bounds[6], double aspect, vtkCamera* camera)
+SceneOptions OrbitFrame(const SceneOptions& options, int k)
 {
+  SceneOptions frame = options;
+  frame.Azimuth += 360.0 * k / options.Orbit;
+  return frame;
+}
+
+std::string ApplyCamera(const SceneOptions& o, vtkPoints* points, double aspect, vtkCamera* camera)
+{
+  double bounds[6];
+  points->GetBounds(bounds);
   const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
   const double corner[3] = { bounds[1], bounds[3], bounds[5] };
@@ -180,13 +214,23 @@ std::string ApplyCamera(
   camera->SetViewAngle(o.ViewAngle);
   camera->SetParallelProjection(o.Orthographic);
   camera->SetParallelScale(o.ParallelScale.value_or(aspect >= 1 ? radius : radius / aspect));
-  // Turns and magnification after everything else, given cameras too; none
-  // by default, so that a default camera is exactly as set above.
-  if (o.Azimuth != 0 || o.Elevation != 0)
+  // Turns, the tight fit and magnification after everything else, given
+  // cameras too; none by default, so that a default camera is exactly as set
+  // above. The azimuth (and an orbit) turns about the up axis: the given
+  // view-up, else --up's axis, so that from the top the picture spins.
+  const Vec3 axis = o.CameraViewUp.value_or(frame.Up);
+  if (o.Azimuth != 0)
   {
-    camera->Azimuth(o.Azimuth);
+    Turn(camera, axis, o.Azimuth);
+  }
+  if (o.Elevation != 0)
+  {
     camera->Elevation(o.Elevation);
     camera->OrthogonalizeViewUp();
+  }
+  if (o.Fit == FitMode::Tight)
+  {
+    FitTight(o, points, aspect, axis, camera);
   }
   if (o.Zoom != 1)
   {

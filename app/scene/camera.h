@@ -8,17 +8,24 @@
 #include <string>
 
 class vtkCamera;
+class vtkPoints;
 
 namespace shadelab
 {
 /**
- * Sets camera from options for a mesh with the given bounds and an image of
+ * Sets camera from options for a mesh of the given points and an image of
  * the given aspect (width/height). Returns an error text for an impossible
  * camera (position at the focal point, view-up along the view direction),
  * else an empty string. The clipping range is left to the renderer.
  */
 std::string ApplyCamera(
-  const SceneOptions& options, const double bounds[6], double aspect, vtkCamera* camera);
+  const SceneOptions& options, vtkPoints* points, double aspect, vtkCamera* camera);
+
+/**
+ * Frame k of options' --orbit: its camera turned by 360*k/N degrees more,
+ * which is exactly --azimuth with that much added.
+ */
+SceneOptions OrbitFrame(const SceneOptions& options, int k);
 
 /** The conventions above, for --help. */
 extern const char* const CameraHelp;

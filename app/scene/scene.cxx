@@ -48,7 +48,7 @@ BuiltScene BuildScene(
   mesh->GetBounds(bounds);
   const double aspect = static_cast<double>(options.Size.Width) / options.Size.Height;
   vtkCamera* camera = renderer->GetActiveCamera();
-  scene.Error = ApplyCamera(options, bounds, aspect, camera);
+  scene.Error = ApplyCamera(options, mesh->GetPoints(), aspect, camera);
   if (!scene.Error.empty())
   {
     return scene;

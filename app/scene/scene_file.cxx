@@ -20,7 +20,7 @@ using namespace scene_file;
 const std::vector<std::string> ShotKeys{ "name", "mesh", "output", "shading", "reflection",
   "material", "ambient", "lights", "camera", "size", "background", "normals", "weighting",
   "feature_angle", "orient", "pixel_type", "ssaa", "up", "edges", "edge_color", "edge_width",
-  "normal_glyphs" };
+  "normal_glyphs", "orbit", "fps" };
 
 // The file's JSON (comments allowed): "" or the problem.
 std::string ParseSceneJson(const std::string& path, json& scene)
@@ -75,10 +75,10 @@ PathOfKey PathsIn(const json& own, const std::string& prefix)
   };
 }
 
-// Where a shot's picture goes: the output template (-o, else its "output")
-// filled for shot number index of count.
-void ExpandShotOutput(const json& merged, const std::string& outputTemplate, const PathOfKey& where,
-  std::size_t index, std::size_t count, Shot& shot)
+// Where a shot's pictures go: the output template (-o, else its "output")
+// filled for shot number index of count; an --orbit's frames may make many.
+std::vector<Shot> ExpandShotOutput(const json& merged, const std::string& outputTemplate,
+  const PathOfKey& where, std::size_t index, std::size_t count, const Shot& shot)
 {
   const std::string pattern = !outputTemplate.empty() ? outputTemplate
     : merged.contains("output")                       ? merged["output"].get<std::string>()
@@ -88,11 +88,12 @@ void ExpandShotOutput(const json& merged, const std::string& outputTemplate, con
     throw SceneError{ where("output"), "missing: every shot needs an output (or give -o)" };
   }
   const std::string name = merged.contains("name") ? merged["name"].get<std::string>() : "";
-  if (std::string problem = ExpandOutputTemplate(pattern, shot, name, index, count, shot.Output);
-      !problem.empty())
+  std::vector<Shot> shots;
+  if (std::string problem = ExpandShot(pattern, shot, name, index, count, shots); !problem.empty())
   {
     throw SceneError{ outputTemplate.empty() ? where("output") : "-o", problem };
   }
+  return shots;
 }
 
 // The shots of a parsed scene file; throws SceneError.
@@ -126,16 +127,19 @@ std::vector<Shot> ReadShots(
     {
       throw SceneError{ where("mesh"), "missing: every shot needs a mesh" };
     }
-    ExpandShotOutput(merged, outputTemplate, where, i, list.size(), shot);
-    const auto [other, added] = outputs.emplace(shot.Output, prefix);
-    if (!added)
+    for (const Shot& expanded :
+      ExpandShotOutput(merged, outputTemplate, where, i, list.size(), shot))
     {
-      // The shot's resolved output, wherever its template came from.
-      throw SceneError{ prefix.empty() ? "output" : prefix + ".output",
-        "\"" + shot.Output + "\" is also " +
-          (other->second.empty() ? "another shot" : other->second) + "'s output" };
+      const auto [other, added] = outputs.emplace(expanded.Output, prefix);
+      if (!added)
+      {
+        // The shot's resolved output, wherever its template came from.
+        throw SceneError{ prefix.empty() ? "output" : prefix + ".output",
+          "\"" + expanded.Output + "\" is also " +
+            (other->second.empty() ? "another shot" : other->second) + "'s output" };
+      }
+      shots.push_back(expanded);
     }
-    shots.push_back(shot);
   }
   return shots;
 }

@@ -21,6 +21,7 @@ struct Shot
   PixelType Pixels = PixelType::Auto;
   std::string Label;        // "scene.json shots[3]" for a scene file's shot, "" on the command line
   bool MakeFolders = false; // the output came from a template: its folders are made as needed
+  bool Animation = false;   // Output holds every frame of Scene.Orbit (.gif, .mp4)
 };
 
 /** The JSON Schema of scene files (data/scene.schema.json, compiled in). */
@@ -48,6 +49,17 @@ std::string ReadSceneFile(
  */
 std::string ExpandOutputTemplate(const std::string& pattern, const Shot& shot,
   const std::string& name, std::size_t index, std::size_t count, std::string& output);
+
+/**
+ * The shots that shot makes with the output template pattern, appended to
+ * shots: one, its Output filled as ExpandOutputTemplate fills it; or, with
+ * --orbit N, N (frame k's camera turned by 360*k/N degrees, OrbitFrame) when
+ * pattern has {frame}, which numbers them zero-padded to N-1's digits; or
+ * one Animation of every frame when it has not and ends in .gif or .mp4.
+ * Returns "" or the problem.
+ */
+std::string ExpandShot(const std::string& pattern, const Shot& shot, const std::string& name,
+  std::size_t index, std::size_t count, std::vector<Shot>& shots);
 }
 
 #endif

@@ -11,7 +11,7 @@ namespace scene_file
 namespace
 {
 const std::vector<std::string> CameraKeys{ "position", "focal_point", "view_up", "view_angle",
-  "orthographic", "parallel_scale", "view", "azimuth", "elevation", "zoom" };
+  "orthographic", "parallel_scale", "view", "azimuth", "elevation", "zoom", "fit" };
 
 // The camera's keys; each one's path comes from where, which knows whether
 // the shot or the defaults gave it.
@@ -28,6 +28,10 @@ void ConvertCamera(const json& v, const std::string& path, const PathOfKey& wher
     else if (c.key() == "view")
     {
       Apply(o, { "--view", Choice(c.value(), at, "view", Names<ViewPreset>()) }, at);
+    }
+    else if (c.key() == "fit")
+    {
+      Apply(o, { "--fit", Choice(c.value(), at, "fit", Names<FitMode>()) }, at);
     }
     else if (c.key() == "view_angle" || c.key() == "parallel_scale" || c.key() == "azimuth" ||
       c.key() == "elevation" || c.key() == "zoom")
@@ -139,9 +143,9 @@ void ConvertShot(
       // "=": CLI11 would take "-Z" for an option of its own.
       Apply(o, { "--up=" + Choice(v, path, "up axis", Names<UpAxis>()) }, path);
     }
-    else if (key == "ssaa")
+    else if (key == "ssaa" || key == "orbit" || key == "fps")
     {
-      Apply(o, { "--ssaa", Number(v, path) }, path);
+      Apply(o, { "--" + key, Number(v, path) }, path);
     }
     else if (key == "feature_angle")
     {

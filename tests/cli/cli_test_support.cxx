@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -30,6 +31,27 @@ std::string Quote(const std::string& s)
   return q + "'";
 }
 
+Point3 Minus(const Point3& a, const Point3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+double Dot(const Point3& a, const Point3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Point3 Cross(const Point3& a, const Point3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+Point3 Unit(const Point3& v)
+{
+  const double n = std::sqrt(Dot(v, v));
+  return { v[0] / n, v[1] / n, v[2] / n };
+}
+
 std::string Slurp(const std::filesystem::path& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -39,10 +61,16 @@ std::string Slurp(const std::filesystem::path& path)
 }
 }
 
-RunResult RunShadelab(const std::vector<std::string>& args)
+RunResult RunShadelab(
+  const std::vector<std::string>& args, const std::vector<std::string>& environment)
 {
   TempDir capture;
-  std::string command = "env -u DISPLAY " + Quote(SHADELAB_BINARY);
+  std::string command = "env -u DISPLAY";
+  for (const std::string& setting : environment)
+  {
+    command += " " + Quote(setting);
+  }
+  command += " " + Quote(SHADELAB_BINARY);
   for (const std::string& a : args)
   {
     command += " " + Quote(a);
@@ -129,16 +157,13 @@ std::vector<std::string> TempDir::Files() const
   return FilesIn(this->Path);
 }
 
-Image ReadImage(const std::filesystem::path& path)
+namespace
+{
+// The subimage `in` is at, as an Image.
+Image ReadCurrent(OIIO::ImageInput& in, int subimage)
 {
   Image image;
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in)
-  {
-    (void)OIIO::geterror();
-    return image;
-  }
-  const OIIO::ImageSpec& spec = in->spec();
+  const OIIO::ImageSpec& spec = in.spec();
   image.Width = spec.width;
   image.Height = spec.height;
   image.Channels = spec.nchannels;
@@ -146,7 +171,7 @@ Image ReadImage(const std::filesystem::path& path)
   image.Description = spec.get_string_attribute("ImageDescription");
   image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data());
+  in.read_image(subimage, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.Pixels.data());
   if (eightBit)
   {
     for (float& v : image.Pixels)
@@ -154,8 +179,35 @@ Image ReadImage(const std::filesystem::path& path)
       v = std::round(v * 255.0f);
     }
   }
-  in->close();
   return image;
+}
+}
+
+Image ReadImage(const std::filesystem::path& path)
+{
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    (void)OIIO::geterror();
+    return {};
+  }
+  return ReadCurrent(*in, 0);
+}
+
+std::vector<Image> ReadSubimages(const std::filesystem::path& path)
+{
+  std::vector<Image> images;
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in)
+  {
+    (void)OIIO::geterror();
+    return images;
+  }
+  for (int k = 0; in->seek_subimage(k, 0); ++k)
+  {
+    images.push_back(ReadCurrent(*in, k));
+  }
+  return images;
 }
 
 size_t CountCovered(const Image& image)
@@ -166,6 +218,88 @@ size_t CountCovered(const Image& image)
     covered += image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
   }
   return covered;
+}
+
+Silhouette MeasureSilhouette(const Image& image)
+{
+  Silhouette s;
+  s.Left = image.Width;
+  s.Top = image.Height;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      const std::size_t i = (static_cast<std::size_t>(y) * image.Width + x) * image.Channels;
+      if (image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0)
+      {
+        s.Left = std::min(s.Left, x);
+        s.Right = std::max(s.Right, x);
+        s.Top = std::min(s.Top, y);
+        s.Bottom = std::max(s.Bottom, y);
+      }
+    }
+  }
+  s.Width = s.Right - s.Left + 1;
+  s.Height = s.Bottom - s.Top + 1;
+  return s;
+}
+
+std::string TestShape::Obj() const
+{
+  std::ostringstream obj;
+  obj.precision(17);
+  for (const Point3& v : this->Vertices)
+  {
+    obj << "v " << v[0] << " " << v[1] << " " << v[2] << "\n";
+  }
+  return obj.str() + this->Faces;
+}
+
+TestShape Box(const Point3& sides)
+{
+  TestShape box;
+  for (int i = 0; i < 8; ++i)
+  {
+    box.Vertices.push_back({ (i & 1 ? 0.5 : -0.5) * sides[0], (i & 2 ? 0.5 : -0.5) * sides[1],
+      (i & 4 ? 0.5 : -0.5) * sides[2] });
+  }
+  // Quads (triangulated by the reader), each wound outwards.
+  box.Faces = "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  return box;
+}
+
+RecordedCamera CameraOf(const Image& image)
+{
+  const auto j = nlohmann::json::parse(image.Description).at("camera");
+  RecordedCamera c;
+  c.Position = j.at("position").get<Point3>();
+  c.Focal = j.at("focal_point").get<Point3>();
+  c.Up = j.at("view_up").get<Point3>();
+  c.Orthographic = j.at("projection") == "orthographic";
+  c.ViewAngle = c.Orthographic ? 0 : j.at("view_angle_deg").get<double>();
+  c.ParallelScale = c.Orthographic ? j.at("parallel_scale").get<double>() : 0;
+  return c;
+}
+
+Extents Project(const RecordedCamera& c, const std::vector<Point3>& vertices, int width, int height)
+{
+  const Point3 forward = Unit(Minus(c.Focal, c.Position));
+  const Point3 right = Unit(Cross(forward, c.Up));
+  const Point3 up = Cross(right, forward);
+  Extents e;
+  for (const Point3& p : vertices)
+  {
+    const Point3 v = Minus(p, c.Position);
+    const double halfHeight =
+      c.Orthographic ? c.ParallelScale : Dot(v, forward) * std::tan(c.ViewAngle * M_PI / 360);
+    const double x = (Dot(v, right) / (halfHeight * width / height) + 1) / 2 * width;
+    const double y = (1 - Dot(v, up) / halfHeight) / 2 * height;
+    e.Left = std::min(e.Left, x);
+    e.Right = std::max(e.Right, x);
+    e.Top = std::min(e.Top, y);
+    e.Bottom = std::max(e.Bottom, y);
+  }
+  return e;
 }
 
 std::filesystem::path TestMesh(const std::string& name)

@@ -2,6 +2,8 @@
 #ifndef shadelab_cli_test_support_h
 #define shadelab_cli_test_support_h
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,8 +17,12 @@ struct RunResult
   std::string Stderr;
 };
 
-/** Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI). */
-RunResult RunShadelab(const std::vector<std::string>& args);
+/**
+ * Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI) and the
+ * environment's NAME=VALUE settings.
+ */
+RunResult RunShadelab(
+  const std::vector<std::string>& args, const std::vector<std::string>& environment = {});
 
 /**
  * Starts `shadelab ARGS...` as RunShadelab does, without waiting, its
@@ -59,8 +65,55 @@ struct Image
 /** Reads an image through OpenImageIO; Width 0 when it cannot. */
 Image ReadImage(const std::filesystem::path& path);
 
+/** Every subimage of a file (an animated GIF's frames); empty when it cannot be read. */
+std::vector<Image> ReadSubimages(const std::filesystem::path& path);
+
 /** Pixels that are not black: the mesh's coverage on the default background. */
 size_t CountCovered(const Image& image);
+
+/** The bounding box of the pixels that are not black, in pixels from the top left. */
+struct Silhouette
+{
+  int Left = 0, Right = -1, Top = 0, Bottom = -1;
+  int Width = 0, Height = 0;
+};
+Silhouette MeasureSilhouette(const Image& image);
+
+using Point3 = std::array<double, 3>;
+
+/** A mesh written by a test: its vertices, and its faces as OBJ lines. */
+struct TestShape
+{
+  std::vector<Point3> Vertices;
+  std::string Faces;
+  std::string Obj() const;
+};
+
+/** A box of the given sides about the origin, its faces wound outwards. */
+TestShape Box(const Point3& sides);
+
+/** The camera a picture's metadata (its ImageDescription) records. */
+struct RecordedCamera
+{
+  Point3 Position, Focal, Up;
+  bool Orthographic = false;
+  double ViewAngle = 0, ParallelScale = 0;
+};
+RecordedCamera CameraOf(const Image& image);
+
+/** Where points land in a picture, in pixels from its left and top edges. */
+struct Extents
+{
+  double Left = INFINITY, Right = -INFINITY, Top = INFINITY, Bottom = -INFINITY;
+};
+
+/**
+ * The extents of vertices projected by camera into a width x height
+ * picture, which spans [0, width] x [0, height]: VTK's projection, computed
+ * here in double (the view angle vertical).
+ */
+Extents Project(
+  const RecordedCamera& camera, const std::vector<Point3>& vertices, int width, int height);
 
 /** A real mesh of tests/data/meshes. */
 std::filesystem::path TestMesh(const std::string& name);

@@ -17,20 +17,6 @@ using V = std::array<double, 3>;
 // A box 1 x 2 x 4 (X, Y, Z) about the origin: every view of it differs.
 constexpr V BoxSize{ 1, 2, 4 };
 
-std::string BoxObj()
-{
-  std::string obj;
-  for (int i = 0; i < 8; ++i)
-  {
-    obj += "v " + std::to_string((i & 1 ? 0.5 : -0.5) * BoxSize[0]) + " " +
-      std::to_string((i & 2 ? 0.5 : -0.5) * BoxSize[1]) + " " +
-      std::to_string((i & 4 ? 0.5 : -0.5) * BoxSize[2]) + "\n";
-  }
-  // Quads (triangulated by the reader), each wound outwards.
-  obj += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
-  return obj;
-}
-
 V Cross(const V& a, const V& b)
 {
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
@@ -58,32 +44,6 @@ double PredictedAspect(const V& eye, const V& up)
   return Extent(right) / Extent(screenUp);
 }
 
-struct Silhouette
-{
-  int Width = 0, Height = 0;
-};
-
-// The bounding box of the pixels that are not the black background.
-Silhouette Measure(const Image& image)
-{
-  int left = image.Width, right = -1, top = image.Height, bottom = -1;
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      const std::size_t i = (static_cast<std::size_t>(y) * image.Width + x) * image.Channels;
-      if (image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0)
-      {
-        left = std::min(left, x);
-        right = std::max(right, x);
-        top = std::min(top, y);
-        bottom = std::max(bottom, y);
-      }
-    }
-  }
-  return { right - left + 1, bottom - top + 1 };
-}
-
 Silhouette Render(const TempDir& dir, const std::vector<std::string>& more)
 {
   std::vector<std::string> args{ "render", (dir / "box.obj").string(), "-o",
@@ -91,7 +51,7 @@ Silhouette Render(const TempDir& dir, const std::vector<std::string>& more)
   args.insert(args.end(), more.begin(), more.end());
   const RunResult r = RunShadelab(args);
   EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
-  return Measure(ReadImage(dir / "view.png"));
+  return MeasureSilhouette(ReadImage(dir / "view.png"));
 }
 
 double Aspect(const Silhouette& s)
@@ -103,7 +63,7 @@ double Aspect(const Silhouette& s)
 TEST(Views, EachPresetShowsThePredictedSilhouetteForUpYAndUpZ)
 {
   TempDir dir;
-  WriteText(dir / "box.obj", BoxObj());
+  WriteText(dir / "box.obj", Box(BoxSize).Obj());
   // What the presets mean, as the contract words them: for up +Y front looks
   // along -Z (the camera at +Z), for up +Z along +Y (the camera at -Y); right
   // is +X for both; top looks down with the front at the bottom of the
@@ -136,7 +96,7 @@ TEST(Views, EachPresetShowsThePredictedSilhouetteForUpYAndUpZ)
 TEST(Views, AzimuthElevationAndZoomTurnAndMagnifyTheFittedCamera)
 {
   TempDir dir;
-  WriteText(dir / "box.obj", BoxObj());
+  WriteText(dir / "box.obj", Box(BoxSize).Obj());
   const Silhouette front = Render(dir, {});
   const Silhouette right = Render(dir, { "--view", "right" });
   // A quarter turn about the view-up from the front is the right view.
@@ -147,6 +107,13 @@ TEST(Views, AzimuthElevationAndZoomTurnAndMagnifyTheFittedCamera)
   const Silhouette raised = Render(dir, { "--view", "right", "--elevation", "45" });
   const V eye{ std::cos(M_PI / 4), std::sin(M_PI / 4), 0 };
   EXPECT_NEAR(Aspect(raised), PredictedAspect(eye, { -eye[1], eye[0], 0 }), 0.05);
+  // The azimuth turns about the up axis, from the top too: the picture
+  // spins a quarter turn (a turn about the top view's screen-up would tip
+  // the camera down to a side view instead).
+  const Silhouette top = Render(dir, { "--view", "top" });
+  const Silhouette spun = Render(dir, { "--view", "top", "--azimuth", "90" });
+  EXPECT_NEAR(spun.Width, top.Height, 2);
+  EXPECT_NEAR(spun.Height, top.Width, 2);
   // Zoom 2: twice the size.
   const Silhouette zoomed = Render(dir, { "--zoom", "2" });
   EXPECT_NEAR(zoomed.Height, 2 * front.Height, 3);
@@ -156,7 +123,7 @@ TEST(Views, AzimuthElevationAndZoomTurnAndMagnifyTheFittedCamera)
 TEST(Views, ASceneFileSaysItAsTheCommandLineDoes)
 {
   TempDir dir;
-  WriteText(dir / "box.obj", BoxObj());
+  WriteText(dir / "box.obj", Box(BoxSize).Obj());
   const Silhouette cli =
     Render(dir, { "--up", "+Z", "--view", "iso", "--azimuth", "10", "--zoom", "1.5" });
   WriteText(dir / "scene.json",
@@ -165,7 +132,7 @@ TEST(Views, ASceneFileSaysItAsTheCommandLineDoes)
          "output": ")" +
       (dir / "scene.png").string() + R"(" })");
   ASSERT_EQ(RunShadelab({ "render", "--scene", (dir / "scene.json").string() }).ExitCode, 0);
-  const Silhouette scene = Measure(ReadImage(dir / "scene.png"));
+  const Silhouette scene = MeasureSilhouette(ReadImage(dir / "scene.png"));
   EXPECT_EQ(scene.Width, cli.Width);
   EXPECT_EQ(scene.Height, cli.Height);
 }
@@ -173,7 +140,7 @@ TEST(Views, ASceneFileSaysItAsTheCommandLineDoes)
 TEST(Views, BadValuesAreOneLineErrors)
 {
   TempDir dir;
-  WriteText(dir / "box.obj", BoxObj());
+  WriteText(dir / "box.obj", Box(BoxSize).Obj());
   for (const std::vector<std::string>& bad : { std::vector<std::string>{ "--view", "sideways" },
          { "--up", "W" }, { "--zoom", "0" }, { "--azimuth", "left" } })
   {

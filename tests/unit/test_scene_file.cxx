@@ -195,6 +195,32 @@ TEST(OutputTemplate, FillsEveryFieldAndSaysWhatIsWrong)
     "unmatched '}' in \"mesh}.png\" (write }} for a brace)");
 }
 
+TEST(OutputTemplate, AnOrbitMakesAFilePerFrameOrOneAnimation)
+{
+  Shot shot;
+  shot.Scene.Mesh = "spot.obj";
+  shot.Scene.Orbit = 100;
+  shot.Scene.Azimuth = 10;
+  std::vector<Shot> shots;
+  ASSERT_EQ(ExpandShot("{mesh}/{frame}-{{frame}}.png", shot, "", 0, 1, shots), "");
+  ASSERT_EQ(shots.size(), 100u);
+  EXPECT_EQ(shots[0].Output, "spot/00-{frame}.png"); // as wide as 99
+  EXPECT_EQ(shots[99].Output, "spot/99-{frame}.png");
+  EXPECT_EQ(shots[99].Scene.Azimuth, 10 + 356.4);
+  EXPECT_FALSE(shots[99].Animation);
+  shots.clear();
+  ASSERT_EQ(ExpandShot("{mesh}.GIF", shot, "", 0, 1, shots), "");
+  ASSERT_EQ(shots.size(), 1u);
+  EXPECT_EQ(shots[0].Output, "spot.GIF");
+  EXPECT_TRUE(shots[0].Animation);
+  EXPECT_EQ(shots[0].Scene.Azimuth, 10);
+  EXPECT_EQ(ExpandShot("{mesh}.png", shot, "", 0, 1, shots),
+    "\"{mesh}.png\" has no {frame} (a picture per frame of --orbit) nor the extension .gif or "
+    ".mp4 (one animation of them all)");
+  shot.Scene.Orbit = 0;
+  EXPECT_EQ(ExpandShot("{frame}.png", shot, "", 0, 1, shots).rfind("unknown field {frame}", 0), 0u);
+}
+
 TEST(SceneSchema, ListsTheNameTablesChoices)
 {
   // The schema is data, compiled in; its choices are the name tables', so
@@ -212,6 +238,8 @@ TEST(SceneSchema, ListsTheNameTablesChoices)
   EXPECT_EQ(shot["up"]["enum"].get<std::vector<std::string>>(), Names<UpAxis>());
   EXPECT_EQ(shot["camera"]["properties"]["view"]["enum"].get<std::vector<std::string>>(),
     Names<ViewPreset>());
+  EXPECT_EQ(
+    shot["camera"]["properties"]["fit"]["enum"].get<std::vector<std::string>>(), Names<FitMode>());
 }
 
 TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
@@ -238,7 +266,7 @@ TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
   }
   EXPECT_EQ(camera,
     (std::set<std::string>{ "position", "focal_point", "view_up", "view_angle", "orthographic",
-      "parallel_scale", "view", "azimuth", "elevation", "zoom" }));
+      "parallel_scale", "view", "azimuth", "elevation", "zoom", "fit" }));
   EXPECT_EQ(light,
     (std::set<std::string>{ "kind", "position", "direction", "color", "half_angle", "exponent" }));
   // The example scenes use only what the schema describes (the parser reads them all).

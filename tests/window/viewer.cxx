@@ -205,6 +205,15 @@ std::string Viewer::Stderr() const
 Change Compare(const Image& a, const Image& b, float by, int top, int bottom, int left, int right)
 {
   Change change;
+  // A screenshot that never came (a viewer that hung) is empty: fail the
+  // test instead of reading past it.
+  const auto covers = [&](const Image& image)
+  { return image.Width >= right && image.Height >= bottom && image.Channels >= 3; };
+  if (!covers(a) || !covers(b))
+  {
+    ADD_FAILURE() << "a screenshot is missing or smaller than the compared region";
+    return change;
+  }
   for (int y = top; y < bottom; ++y)
   {
     for (int x = left; x < right; ++x)

@@ -27,11 +27,6 @@ constexpr ComponentName ComponentTypes[] = { { 5120, ScalarType::Int8, "BYTE" },
 
 constexpr std::string_view ElementTypes[] = { "SCALAR", "VEC2", "VEC3", "VEC4" };
 
-[[noreturn]] void Fail(const std::string& message)
-{
-  throw MeshReadError(message);
-}
-
 // An accessor with its ranges checked: element i, component c is at
 // Data + i * Stride + c * SizeOf(Type).
 struct Layout

@@ -12,11 +12,6 @@ namespace
 {
 constexpr Matrix Identity = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 
-[[noreturn]] void Fail(const std::string& message)
-{
-  throw MeshReadError(message);
-}
-
 Matrix Multiply(const Matrix& a, const Matrix& b)
 {
   Matrix product{};
@@ -173,5 +168,50 @@ std::vector<MeshInstance> SceneMeshes(const Json& root)
     }
   }
   return instances;
+}
+
+WorldTransform::WorldTransform(const Matrix& m)
+  : M(m)
+{
+  const auto a = [&](int r, int c) { return m[4 * r + c]; };
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      this->Cofactor[3 * r + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
+    }
+  }
+  this->Determinant =
+    a(0, 0) * this->Cofactor[0] + a(0, 1) * this->Cofactor[1] + a(0, 2) * this->Cofactor[2];
+}
+
+void WorldTransform::Point(const float* p, std::vector<double>& out) const
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    out.push_back(this->M[4 * r] * p[0] + this->M[4 * r + 1] * p[1] + this->M[4 * r + 2] * p[2] +
+      this->M[4 * r + 3]);
+  }
+}
+
+// The inverse transpose is the cofactor matrix over the determinant; only
+// its sign matters before renormalising (and a singular transform, a
+// node scaled to nothing, gives what the cofactors give, or zero).
+void WorldTransform::Normal(const float* n, std::vector<float>& out) const
+{
+  const double sign = this->Determinant < 0 ? -1 : 1;
+  double v[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    v[r] = sign *
+      (this->Cofactor[3 * r] * n[0] + this->Cofactor[3 * r + 1] * n[1] +
+        this->Cofactor[3 * r + 2] * n[2]);
+  }
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (const double component : v)
+  {
+    out.push_back(static_cast<float>(length > 0 ? component / length : component));
+  }
 }
 }

@@ -24,6 +24,28 @@ namespace shadelab::gltf
 /** A 4x4 transform, row-major: element (r, c) is [4 * r + c]. */
 using Matrix = std::array<double, 16>;
 
+// The upper 3x3 of a world transform: where positions go and how normals
+// turn (by the inverse transpose, i.e. the cofactors over the determinant).
+class WorldTransform
+{
+public:
+  explicit WorldTransform(const Matrix& m);
+
+  /** A mirroring transform turns triangles round: glTF keeps their front in front. */
+  bool Mirrors() const { return this->Determinant < 0; }
+
+  /** Appends the transformed point p. */
+  void Point(const float* p, std::vector<double>& out) const;
+
+  /** Appends the transformed, renormalised normal n. */
+  void Normal(const float* n, std::vector<float>& out) const;
+
+private:
+  const Matrix& M;
+  double Cofactor[9];
+  double Determinant;
+};
+
 struct MeshInstance
 {
   std::uint64_t Mesh = 0;

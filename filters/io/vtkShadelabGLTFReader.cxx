@@ -40,70 +40,6 @@ enum Mode : std::uint64_t
   TriangleFan = 6
 };
 
-[[noreturn]] void Fail(const std::string& message)
-{
-  throw MeshReadError(message);
-}
-
-// The upper 3x3 of a world transform: where positions go and how normals
-// turn (by the inverse transpose, i.e. the cofactors over the determinant).
-class Transform
-{
-public:
-  explicit Transform(const Matrix& m)
-    : M(m)
-  {
-    const auto a = [&](int r, int c) { return m[4 * r + c]; };
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-        this->Cofactor[3 * r + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
-      }
-    }
-    this->Determinant =
-      a(0, 0) * this->Cofactor[0] + a(0, 1) * this->Cofactor[1] + a(0, 2) * this->Cofactor[2];
-  }
-
-  /** A mirroring transform turns triangles round: glTF keeps their front in front. */
-  bool Mirrors() const { return this->Determinant < 0; }
-
-  void Point(const float* p, std::vector<double>& out) const
-  {
-    for (int r = 0; r < 3; ++r)
-    {
-      out.push_back(this->M[4 * r] * p[0] + this->M[4 * r + 1] * p[1] + this->M[4 * r + 2] * p[2] +
-        this->M[4 * r + 3]);
-    }
-  }
-
-  // The inverse transpose is the cofactor matrix over the determinant; only
-  // its sign matters before renormalising (and a singular transform, a
-  // node scaled to nothing, gives what the cofactors give, or zero).
-  void Normal(const float* n, std::vector<float>& out) const
-  {
-    const double sign = this->Determinant < 0 ? -1 : 1;
-    double v[3];
-    for (int r = 0; r < 3; ++r)
-    {
-      v[r] = sign *
-        (this->Cofactor[3 * r] * n[0] + this->Cofactor[3 * r + 1] * n[1] +
-          this->Cofactor[3 * r + 2] * n[2]);
-    }
-    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (const double component : v)
-    {
-      out.push_back(static_cast<float>(length > 0 ? component / length : component));
-    }
-  }
-
-private:
-  const Matrix& M;
-  double Cofactor[9];
-  double Determinant;
-};
-
 // A node may draw a mesh that other nodes draw too, so a small file can ask
 // for any number of copies of its largest mesh. What the scene's triangle
 // primitives will take (their points with attributes and their corners, held
@@ -251,7 +187,7 @@ private:
       ReadFloats(this->Doc, Unsigned(attributes, "POSITION", where), PositionUse, where);
     const std::uint64_t count = positions.Count;
     const std::vector<std::uint32_t> indices = this->Indices(primitive, count, where);
-    const Transform transform(world);
+    const WorldTransform transform(world);
     this->Mesh.Points.reserve(this->Mesh.Points.size() + 3 * count);
     this->AddFaces(static_cast<Mode>(mode), indices, transform.Mirrors(), where);
     const std::size_t first = this->Mesh.Points.size() / 3;

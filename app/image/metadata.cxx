@@ -7,14 +7,54 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string_view>
+
 namespace shadelab
 {
+namespace
+{
+// Options that choose which of a batch's shots run, or what is printed, and
+// not what a picture is; with whether each takes a value.
+constexpr std::pair<std::string_view, bool> NotRecorded[] = { { "--shard", true },
+  { "--skip-existing", false }, { "-q", false }, { "--quiet", false }, { "-v", false },
+  { "--verbose", false } };
+
+// How many arguments from argv[i] on are a NotRecorded option: 0, 1 or 2.
+int NotRecordedAt(int argc, const char* const* argv, int i)
+{
+  const std::string_view arg = argv[i];
+  for (const auto& [name, takesValue] : NotRecorded)
+  {
+    if (arg == name)
+    {
+      return takesValue && i + 1 < argc ? 2 : 1;
+    }
+    if (takesValue && arg.size() > name.size() && arg.substr(0, name.size()) == name &&
+      arg[name.size()] == '=')
+    {
+      return 1;
+    }
+  }
+  return 0;
+}
+}
+
 std::string QuoteCommandLine(int argc, const char* const* argv)
 {
   std::string line;
+  bool options = true; // before "--"
   for (int i = 0; i < argc; ++i)
   {
+    if (options && i > 0)
+    {
+      if (const int skip = NotRecordedAt(argc, argv, i))
+      {
+        i += skip - 1;
+        continue;
+      }
+    }
     const std::string arg = argv[i];
+    options = options && arg != "--";
     const bool plain = !arg.empty() &&
       arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
                             "-_./=:,+@%") == std::string::npos;

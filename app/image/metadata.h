@@ -15,7 +15,12 @@ class vtkCamera;
 
 namespace shadelab
 {
-/** argv as one shell-quoted line. */
+/**
+ * argv as one shell-quoted line, without the options that choose which of a
+ * batch's shots run or what is printed (--shard, --skip-existing, --quiet,
+ * --verbose): a picture is the same file whichever shard, rerun or single
+ * process made it.
+ */
 std::string QuoteCommandLine(int argc, const char* const* argv);
 
 /**

@@ -124,6 +124,37 @@ TEST(Batch, ShardsCoverEveryShotExactlyOnce)
   EXPECT_EQ(std::set<std::string>(all.begin(), all.end()).size(), 24u) << "a shot in two shards";
 }
 
+TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
+{
+  TempDir dir;
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
+  const std::vector<std::string> whole{ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "out" / "{index}.png").string() };
+  ASSERT_EQ(RunShadelab(whole).ExitCode, 0);
+  std::vector<std::string> first;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
+  {
+    first.push_back(entry.path().filename().string() + Bytes(entry.path()));
+  }
+  ASSERT_EQ(first.size(), 24u);
+  std::filesystem::remove_all(dir / "out");
+  // The options that pick the shots and silence the run are not in the
+  // pictures' command line, so each shard writes what the whole run wrote.
+  for (const std::string& shard : { "0/2", "1/2" })
+  {
+    std::vector<std::string> args = whole;
+    args.insert(args.end(), { "--shard", shard, "--skip-existing", "-q", "--verbose" });
+    ASSERT_EQ(RunShadelab(args).ExitCode, 0);
+  }
+  std::vector<std::string> sharded;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
+  {
+    sharded.push_back(entry.path().filename().string() + Bytes(entry.path()));
+  }
+  EXPECT_EQ(std::set<std::string>(sharded.begin(), sharded.end()),
+    std::set<std::string>(first.begin(), first.end()));
+}
+
 TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
 {
   TempDir dir;

@@ -5,8 +5,8 @@
 # file names for meshes, outputs and folders.
 #   test_completion.sh SHADELAB COMPLETION_SCRIPT
 set -uo pipefail
-shadelab=$1
-script=$2
+shadelab=$(realpath "$1")
+script=$(realpath "$2")
 helpers=/usr/share/bash-completion/bash_completion
 [[ -r $helpers ]] || { echo "FAIL: $helpers is missing (apt-get install bash-completion)" >&2; exit 1; }
 source "$(dirname "$0")/help_text.sh"

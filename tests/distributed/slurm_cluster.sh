@@ -34,6 +34,11 @@ slurm_cluster_start() {
   node=$(hostname -s)
   cpus=$(nproc)
   mkdir -p "$dir"/{munge,state,spool,log}
+  # The daemons run in sessions of their own; should this shell die without
+  # its trap (SIGKILL, a ctest timeout), a watchdog outside its process
+  # group stops them.
+  setsid bash -c 'while kill -0 "$1" 2>/dev/null; do sleep 1; done; source "$2"; slurm_cluster_stop "$3"' \
+    watchdog $$ "${BASH_SOURCE[0]}" "$dir" </dev/null >/dev/null 2>&1 &
   chmod 755 "$dir/munge" # the socket's folder: munged wants it open to all
   head -c 1024 /dev/urandom >"$dir/munge/munge.key"
   chmod 400 "$dir/munge/munge.key"
@@ -45,7 +50,7 @@ slurm_cluster_start() {
 
   cat >"$dir/slurm.conf" <<CONF
 ClusterName=shadelab-test
-SlurmctldHost=$node
+SlurmctldHost=$node(127.0.0.1)
 SlurmctldPort=$(free_port)
 SlurmdPort=$(free_port)
 SlurmUser=$user
@@ -70,7 +75,7 @@ ReturnToService=2
 SchedulerType=sched/backfill
 SchedulerParameters=sched_interval=1
 MinJobAge=600
-NodeName=$node CPUs=$cpus State=UNKNOWN
+NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
 PartitionName=test Nodes=$node Default=YES MaxTime=INFINITE State=UP
 CONF
   export SLURM_CONF=$dir/slurm.conf
@@ -79,12 +84,23 @@ CONF
   wait_for 30 node_idle
 }
 
+no_jobs() {
+  local queued
+  queued=$(squeue -h) && [[ -z $queued ]]
+}
+
 node_idle() {
   [[ $(sinfo -h -N -o %t) == idle ]]
 }
 
 slurm_cluster_stop() {
   local dir=$1 pidfile pid
+  # Jobs first: their steps outlive slurmd.
+  if [[ -s $dir/slurmctld.pid ]]; then
+    export SLURM_CONF=$dir/slurm.conf
+    scancel --quiet --full --user="$(id -un)" 2>/dev/null &&
+      wait_for 20 no_jobs || true
+  fi
   for pidfile in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid"; do
     [[ -s $pidfile ]] || continue
     pid=$(<"$pidfile")

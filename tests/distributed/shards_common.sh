@@ -61,5 +61,5 @@ check_complete() {
 
 # mtimes RUN_DIR: each picture's name and modification time, to the nanosecond.
 mtimes() {
-  (cd "$1" && find out -type f -printf '%p %T@\n' | sort)
+  (cd "$1" && find out -name '*.png' -printf '%p %T@\n' | sort)
 }

@@ -51,6 +51,13 @@ started || fail "the jobs wrote nothing"
 kill -TERM -- "-$group"
 status=0
 wait "$group" || status=$?
+# The script is gone; parallel and the shadelab processes finish their
+# pictures before they go.
+for ((i = 0; i < 600; i++)); do
+  kill -0 -- "-$group" 2>/dev/null || break
+  sleep 0.05
+done
+! kill -0 -- "-$group" 2>/dev/null || fail "the jobs did not stop within 30 s of SIGTERM"
 group=""
 ((status != 0)) || fail "the interrupted run exited 0"
 written=$(find "$work/run/out" -name '*.png' | wc -l)

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # What the distributed tests share, sourced by them: a 200-shot scene, its
 # pictures rendered by one process, and the checks on a sharded run's.
 #

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # A single-machine Slurm of the test's own, sourced by the distributed
 # tests: its own munge key and socket, its own slurm.conf on free ports, its
 # state, spool, logs and pid files under one temporary folder, daemons run

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # What the doc tests read from shadelab's --help, sourced by them.
 
 # The commands that `shadelab --help` lists.

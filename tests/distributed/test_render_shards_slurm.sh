@@ -72,20 +72,30 @@ for ((i = 0; i < shards; i++)); do
 done
 
 # Task 2 cancelled once its first picture is there: SIGTERM, and shadelab
-# stops between shots.
-rm -rf "$work/run/out"
-job=$(submit 0-$((shards - 1)))
-wait_for 60 shard_started "$work/run" 2 $shards || fail "task 2 wrote nothing"
-scancel "${job}_2"
-wait_job "$job"
-grep -q CANCELLED "$work/run/shadelab-shard-${job}_2.log" || fail "task 2 was not cancelled"
-written=0
-for f in $(shard_files 2 $shards); do
-  if [[ -f $work/run/$f ]]; then
-    written=$((written + 1))
-  fi
+# stops between shots. A shard of 50 small shots of the bunny lasts about a second
+# on a quiet machine, about as long as a cancel takes to reach it, so an
+# attempt in which the task finished first says nothing about the scripts
+# and is tried again.
+cancel_task_2() {
+  local job f written=0
+  rm -rf "$work/run/out"
+  job=$(submit 0-$((shards - 1)))
+  wait_for 60 shard_started "$work/run" 2 $shards || fail "task 2 wrote nothing"
+  scancel "${job}_2"
+  wait_job "$job"
+  grep -q CANCELLED "$work/run/shadelab-shard-${job}_2.log" || return 1
+  for f in $(shard_files 2 $shards); do
+    if [[ -f $work/run/$f ]]; then
+      written=$((written + 1))
+    fi
+  done
+  ((written < shots / shards))
+}
+for attempt in 1 2 3 4; do
+  cancel_task_2 && break
+  ((attempt < 4)) || fail "task 2 finished before each of $attempt cancels reached it"
+  echo "task 2 finished before the cancel reached it; again"
 done
-((written < shots / shards)) || fail "task 2 finished ($written pictures) before it was cancelled"
 before=$(mtimes "$work/run")
 
 job=$(submit 0-$((shards - 1)) --skip-existing)

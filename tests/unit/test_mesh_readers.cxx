@@ -1,6 +1,7 @@
 // The mesh readers: every test mesh (tests/data/meshes), small hand-made files of each format
 // and form, and bad input of every kind (one-line error, no partial mesh).
 #include "mesh_reader_fixture.h"
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYReader.h"
@@ -325,6 +326,49 @@ TEST_F(MeshReaders, PlyWithoutAllThreeNormalComponentsHasNoNormals)
     "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 2\n"));
   ASSERT_TRUE(result.Ok) << result.Error;
   EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
+}
+
+// Vertex colours: integers as a fraction of their type's largest value,
+// floats as they are, alpha 1 when absent; without all of red, green and
+// blue no colours.
+TEST_F(MeshReaders, PlyVertexColorsAreFractionsOfTheirTypesLargestValue)
+{
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string xyz = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                          "property float y\nproperty float z\n";
+  struct Case
+  {
+    std::string Properties, Values;
+    std::array<float, 4> First; // the first vertex's colour
+  };
+  const std::vector<Case> cases{
+    { "property uchar red\nproperty uchar green\nproperty uchar blue\n", "255 51 0",
+      { 1, 0.2f, 0, 1 } },
+    { "property ushort red\nproperty ushort green\nproperty ushort blue\nproperty ushort alpha\n",
+      "65535 0 13107 32768", { 1, 0, 0.2f, static_cast<float>(32768 / 65535.0) } },
+    { "property float red\nproperty float green\nproperty float blue\n", "0.25 2 0.5",
+      { 0.25f, 2, 0.5f, 1 } },
+  };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(c.Properties);
+    const ReadResult result = Read(this->Write("colors.ply",
+      xyz + c.Properties + faces + "0 0 0 " + c.Values + "\n1 0 0 " + c.Values + "\n0 1 0 " +
+        c.Values + "\n3 0 1 2\n"));
+    ASSERT_TRUE(result.Ok) << result.Error;
+    vtkDataArray* colors = result.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName);
+    ASSERT_NE(colors, nullptr);
+    ASSERT_EQ(colors->GetNumberOfComponents(), 4);
+    for (int k = 0; k < 4; ++k)
+    {
+      EXPECT_FLOAT_EQ(colors->GetComponent(0, k), c.First[k]) << "component " << k;
+    }
+  }
+  const ReadResult partial = Read(this->Write("partial.ply",
+    xyz + "property uchar red\nproperty uchar green\n" + faces +
+      "0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n3 0 1 2\n"));
+  ASSERT_TRUE(partial.Ok) << partial.Error;
+  EXPECT_EQ(partial.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName), nullptr);
 }
 
 TEST_F(MeshReaders, PlyStripsSeparatedByMinusOneAndJoinTrianglesDropped)

@@ -39,6 +39,15 @@ constexpr const char* PartArrayName = "Part";
 constexpr const char* PartMaterialsArrayName = "PartMaterials";
 /** Field data, one per part: its material's index in the file (int), -1 without one. */
 constexpr const char* PartMaterialIndicesArrayName = "PartMaterialIndices";
+/**
+ * Field data, one tuple per part, where the file defines the parts'
+ * materials (OBJ's MTL): float ka, kd, ks (3 components) and ns (1); zeros
+ * for a part whose index is -1.
+ */
+constexpr const char* PartKaArrayName = "PartKa";
+constexpr const char* PartKdArrayName = "PartKd";
+constexpr const char* PartKsArrayName = "PartKs";
+constexpr const char* PartNsArrayName = "PartNs";
 
 struct PolygonMesh
 {

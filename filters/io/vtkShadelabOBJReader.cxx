@@ -5,19 +5,12 @@
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 
-#include <vtkFieldData.h>
-#include <vtkFloatArray.h>
-#include <vtkIntArray.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
-#include <initializer_list>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -264,59 +257,28 @@ void SplitByNormal(ObjData& obj, shadelab::PolygonMesh& mesh)
   }
 }
 
-vtkSmartPointer<vtkFloatArray> PartArray(const char* name, int components, vtkIdType parts)
+// Each part's material: its name's first definition in the libraries'
+// materials (in their order), or none.
+std::vector<shadelab::PartMaterial> PartMaterials(
+  const std::vector<std::string>& names, const std::vector<shadelab::Material>& library)
 {
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(parts);
-  array->Fill(0);
-  return array;
-}
-
-// The parts' material names and, from the libraries' materials (in their
-// order), each part's index among them (-1: not defined) and coefficients,
-// as field data.
-void AddPartMaterials(const std::vector<std::string>& names,
-  const std::vector<shadelab::Material>& library, vtkPolyData* triangles)
-{
-  const auto parts = static_cast<vtkIdType>(names.size());
-  vtkNew<vtkStringArray> materials;
-  materials->SetName(shadelab::PartMaterialsArrayName);
-  vtkNew<vtkIntArray> indices;
-  indices->SetName(shadelab::PartMaterialIndicesArrayName);
-  auto ka = PartArray(shadelab::PartKaArrayName, 3, parts);
-  auto kd = PartArray(shadelab::PartKdArrayName, 3, parts);
-  auto ks = PartArray(shadelab::PartKsArrayName, 3, parts);
-  auto ns = PartArray(shadelab::PartNsArrayName, 1, parts);
-  for (vtkIdType part = 0; part < parts; ++part)
+  std::vector<shadelab::PartMaterial> parts;
+  for (const std::string& name : names)
   {
-    const std::string& name = names[part];
-    int index = -1;
+    shadelab::PartMaterial part;
+    part.Name = name;
     for (std::size_t m = 0; m < library.size() && !name.empty(); ++m)
     {
       if (library[m].Name == name)
       {
-        index = static_cast<int>(m);
+        part.Index = static_cast<int>(m);
+        part.Coefficients = library[m];
         break;
       }
     }
-    materials->InsertNextValue(name);
-    indices->InsertNextValue(index);
-    if (index >= 0)
-    {
-      const shadelab::Material& m = library[index];
-      ka->SetTuple(part, m.Ka.data());
-      kd->SetTuple(part, m.Kd.data());
-      ks->SetTuple(part, m.Ks.data());
-      ns->SetTuple(part, &m.Ns);
-    }
+    parts.push_back(part);
   }
-  for (vtkAbstractArray* array :
-    std::initializer_list<vtkAbstractArray*>{ materials, indices, ka, kd, ks, ns })
-  {
-    triangles->GetFieldData()->AddArray(array);
-  }
+  return parts;
 }
 }
 
@@ -346,7 +308,8 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles, 1);
   if (!obj.MaterialNames.empty())
   {
-    AddPartMaterials(obj.MaterialNames, this->ReadLibraries(fileName, obj.Libraries), triangles);
+    shadelab::AddPartMaterials(
+      PartMaterials(obj.MaterialNames, this->ReadLibraries(fileName, obj.Libraries)), triangles);
   }
 }
 

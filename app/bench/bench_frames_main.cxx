@@ -4,7 +4,11 @@
 // program that per-scene generation is measured against.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
+//                         [--vertex-colors]
 //
+// --vertex-colors gives every point a colour (from its position in the
+// bounding box), which our variants light as per-vertex kd: the cost of
+// vertex colours against the same run without them.
 // Each variant gets a fresh OpenGL context, so its first frame includes
 // compiling its programs; run with MESA_SHADER_CACHE_DISABLE=true to measure
 // compilation (scripts/bench-shading does).
@@ -14,13 +18,16 @@
 #include "headless/headless_renderer.h"
 #include "scene/mesh_input.h"
 #include "scene/scene.h"
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkFloatArray.h>
 #include <vtkLight.h>
 #include <vtkLogger.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -72,6 +79,29 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
   light->SetPosition(renderer->GetActiveCamera()->GetPosition());
   renderer->AddLight(light);
 }
+
+// A colour per point: its position in the mesh's bounding box as r, g, b.
+void AddPositionColors(vtkPolyData* mesh)
+{
+  double b[6];
+  mesh->GetBounds(b);
+  auto colors = vtkSmartPointer<vtkFloatArray>::New();
+  colors->SetName(ColorsArrayName);
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    float rgba[4] = { 0, 0, 0, 1 };
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[c] = static_cast<float>((p[c] - b[2 * c]) / std::max(b[2 * c + 1] - b[2 * c], 1e-30));
+    }
+    colors->SetTypedTuple(i, rgba);
+  }
+  mesh->GetPointData()->AddArray(colors);
+}
 }
 
 int main(int argc, char** argv)
@@ -84,11 +114,13 @@ int main(int argc, char** argv)
   std::string size = "1920x1080";
   int frames = 10;
   int subdivide = 0;
+  bool vertexColors = false;
   app.add_option("MESH", o.Mesh)->required();
   app.add_option("--size", size);
   app.add_option("--frames", frames)->check(CLI::Range(1, 1000));
   app.add_option("--subdivide", subdivide, "Loop subdivision levels first")
     ->check(CLI::Range(0, 4));
+  app.add_flag("--vertex-colors", vertexColors, "Colour the points, lit as per-vertex kd");
   CLI11_PARSE(app, argc, argv);
   o.Size = ParseSize(size);
 
@@ -102,6 +134,13 @@ int main(int argc, char** argv)
   if (subdivide > 0)
   {
     mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
+  }
+  if (vertexColors)
+  {
+    auto colored = vtkSmartPointer<vtkPolyData>::New();
+    colored->ShallowCopy(mesh); // its own point data, sharing the arrays
+    AddPositionColors(colored);
+    mesh = colored;
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },

@@ -81,6 +81,7 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   // compiled program and uploaded buffers.
   SceneCache scenes(meshes);
   std::vector<FloatImage> pictures;
+  vtkPolyData* mesh = nullptr; // every panel's
   for (const Panel& panel : panels)
   {
     ScenePicture shot = RenderScenePicture(panel.Scene, scenes, meshes, renderer);
@@ -89,6 +90,7 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
       return ReportError(shot.Input, shot.Error);
     }
     pictures.push_back(std::move(shot.Picture));
+    mesh = shot.Scene->Mesh;
   }
 
   std::vector<ComparisonCell> cells;
@@ -112,8 +114,8 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   }
   const FloatImage picture =
     ComposeComparison(cells, plan.Columns, heat.get(), static_cast<int>(cells.size()) - 1);
-  const auto metadata =
-    DescribePicture(commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera(), "", labels);
+  const auto metadata = DescribePicture(
+    commandLine, o.Scene, renderer.GetRenderer()->GetActiveCamera(), mesh, "", labels);
   if (const std::string error = writer.Write(o.Output, picture, PixelType::Auto, metadata);
       !error.empty())
   {

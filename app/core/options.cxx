@@ -38,8 +38,11 @@ CLI::Option* AddParsed(
 void AddMaterialOptions(CLI::App& command, SceneOptions& o)
 {
   const std::vector<std::string> names = LectureMaterialNames();
-  command.add_option("--material", o.MaterialName, "The lecture's material (default chrome)")
+  command
+    .add_option("--material", o.MaterialName,
+      "The lecture's material (default chrome, or the mesh's colours as kd)")
     ->check(CLI::IsMember(names))
+    ->each([&o](const std::string&) { o.MaterialGiven = true; })
     ->option_text(CLI::detail::join(names, "|"));
   AddParsed(command, "--ka", o.Ka, ParseRgb, "Ambient coefficients, overriding the material")
     ->option_text("R,G,B");

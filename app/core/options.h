@@ -136,6 +136,7 @@ struct SceneOptions
   Shading ShadingRule = Shading::Phong;
   Reflection ReflectionModel = Reflection::BlinnPhong;
   std::string MaterialName = "chrome";
+  bool MaterialGiven = false; // --material: it replaces the file's materials and colours
   std::optional<Rgb> Ka, Kd, Ks;
   std::optional<double> Ns;
   // OpenGL's default global ambient: the lecture's table is OpenGL's classic
@@ -166,6 +167,9 @@ struct SceneOptions
 
   /** The material after the --ka/--kd/--ks/--ns overrides. */
   Material EffectiveMaterial() const;
+
+  /** --material or --kd: the mesh's vertex colours are not its kd. */
+  bool OverridesKd() const { return this->MaterialGiven || this->Kd.has_value(); }
 };
 
 struct RenderOptions

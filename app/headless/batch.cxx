@@ -258,8 +258,8 @@ private:
       this->FailFrame(shot, frame, dump->GetErrorFile(), dump->GetError());
       return false;
     }
-    const auto metadata = DescribePicture(
-      this->CommandLine, options, renderer.GetRenderer()->GetActiveCamera(), shot.Label);
+    const auto metadata = DescribePicture(this->CommandLine, options,
+      renderer.GetRenderer()->GetActiveCamera(), scene.Mesh, shot.Label);
     // The previous picture, encoded while this one rendered: this shot's
     // previous frame, whose failure ends the shot, or another shot's.
     if (!this->Collect() && frame.Index > 0)

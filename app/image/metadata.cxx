@@ -104,7 +104,7 @@ nlohmann::ordered_json DescribeMaterial(const Material& m)
 }
 
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
-  const SceneOptions& o, vtkCamera* camera, const std::string& shot,
+  const SceneOptions& o, vtkCamera* camera, vtkPolyData* mesh, const std::string& shot,
   const std::vector<std::string>& panels)
 {
   Vec3 position, focal, up;
@@ -127,6 +127,7 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["shading"] = ToString(o.ShadingRule);
   j["reflection"] = ToString(o.ReflectionModel);
   j["material"] = DescribeMaterial(o.EffectiveMaterial());
+  j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors" : "material";
   j["ambient"] = o.Ambient;
   auto lights = nlohmann::ordered_json::array();
   for (const Light& light : EffectiveLights(o, position))

@@ -12,6 +12,7 @@
 #include <vector>
 
 class vtkCamera;
+class vtkPolyData;
 
 namespace shadelab
 {
@@ -25,12 +26,13 @@ std::string QuoteCommandLine(int argc, const char* const* argv);
 
 /**
  * The image attributes: "Software" and "ImageDescription" (JSON of every
- * parameter, the camera as rendered; `shot`, when given, names the scene
- * file and shot it comes from; `panels`, a comparison's panel labels). No
- * time stamps: the same scene gives the same bytes.
+ * parameter, the camera as rendered, where kd came from in `mesh`, the mesh
+ * as read; `shot`, when given, names the scene file and shot it comes from;
+ * `panels`, a comparison's panel labels). No time stamps: the same scene
+ * gives the same bytes.
  */
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
-  const SceneOptions& options, vtkCamera* camera, const std::string& shot = "",
+  const SceneOptions& options, vtkCamera* camera, vtkPolyData* mesh, const std::string& shot = "",
   const std::vector<std::string>& panels = {});
 
 /** A light as the description writes it: kind, position, direction, color, a spot's cone. */

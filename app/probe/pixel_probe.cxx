@@ -1,6 +1,7 @@
 #include "probe/pixel_probe.h"
 
 #include "scene/scene.h"
+#include "shadelabTriangleMesh.h"
 
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -59,6 +60,19 @@ PixelProber::PixelProber(
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
+  if (UsesVertexKd(options, mesh))
+  {
+    s.VertexKd = true;
+    vtkDataArray* colors = mesh->GetPointData()->GetArray(ColorsArrayName);
+    this->Kd.resize(colors->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < colors->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Kd[i][c] = colors->GetComponent(i, c);
+      }
+    }
+  }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
   {
     s.HasNormals = true;
@@ -91,6 +105,10 @@ PixelProbe PixelProber::Probe(Pixel at) const
     {
       p.Fragment.Normals[k] = this->Normals[corners[k]];
     }
+  }
+  if (p.VertexKd)
+  {
+    p.Fragment.VertexKd = { this->Kd[corners[0]], this->Kd[corners[1]], this->Kd[corners[2]] };
   }
   p.Fragment.Weights = hit.Weights;
   p.Fragment.Front = hit.Front;

@@ -33,6 +33,7 @@ struct PixelProbe
   Rgb Background{};
   bool Orthographic = false;
   bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
+  bool VertexKd = false;   // kd from the mesh's vertex colours (Fragment.VertexKd)
   Rgb Rendered{};          // the picture's value at the pixel: the caller's to set
   // Pixels from its centre to the nearest edge that may cover it (with no
   // hit: of any triangle).
@@ -65,6 +66,7 @@ private:
   IlluminationInputs In;
   PictureTriangles Triangles;
   std::vector<Vec3> Normals; // per point, when the mesh has them
+  std::vector<Rgb> Kd;       // per point, when its colours are kd
 };
 }
 

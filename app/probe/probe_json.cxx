@@ -55,6 +55,10 @@ ordered_json VertexJson(const PixelProbe& p, int k)
   {
     v["mesh_normal"] = p.Fragment.Normals[k];
   }
+  if (p.Fragment.VertexKd)
+  {
+    v["kd"] = (*p.Fragment.VertexKd)[k];
+  }
   if (p.Rule == Shading::Gouraud)
   {
     const IlluminationTerms& t = p.Shaded.Vertices[k];
@@ -87,6 +91,9 @@ ordered_json ProbeJson(const PixelProbe& p)
   j["triangle"] = p.Triangle;
   j["front_facing"] = p.Fragment.Front;
   j["material"] = DescribeMaterial(p.Surface);
+  // The kd that lit the pixel and where it came from (material or vertex colours).
+  j["kd"] = p.Shaded.Kd;
+  j["kd_from"] = p.VertexKd ? "vertex colors" : "material";
   j["ia"] = p.Ia;
   if (p.Rule == Shading::None)
   {

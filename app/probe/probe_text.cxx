@@ -161,6 +161,12 @@ std::string ProbeText(const PixelProbe& p)
       (p.Model == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") + "; material " + m.Name +
       ": ka " + ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) +
       ", ns " + ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
+  if (p.VertexKd)
+  {
+    out.Add("", "kd = " + ProbeTriple(p.Shaded.Kd),
+      p.Rule == Shading::Flat ? "the provoking vertex's colour, not the material's"
+                              : "the vertex colours mixed by the weights, not the material's");
+  }
   out.Add("", "weights = " + ProbeTriple(p.Fragment.Weights),
     "barycentric, perspective-correct, of the triangle's vertices");
   const IlluminationTerms& t = p.Shaded.Terms;

@@ -1,11 +1,13 @@
 #include "scene/scene.h"
 
 #include "scene/camera.h"
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -13,6 +15,11 @@
 
 namespace shadelab
 {
+bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh)
+{
+  return !options.OverridesKd() && mesh->GetPointData()->GetArray(ColorsArrayName);
+}
+
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition)
 {
   if (!options.Lights.empty())
@@ -67,6 +74,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   scene.Shading = vtkSmartPointer<vtkShadelabShading>::New();
   scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
     options.EffectiveMaterial(), options.Ambient, lights);
+  scene.Shading->SetVertexKd(UsesVertexKd(options, mesh));
   const vtkShadelabShading* previous = nullptr;
   if (reuse && reuse->Actor && reuse->Mesh == mesh &&
     reuse->Shading->GetFeatures().Rule == options.ShadingRule)

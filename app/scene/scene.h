@@ -42,6 +42,12 @@ BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRendere
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
   vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr);
 
+/**
+ * Whether mesh's vertex colours are its kd: it has them ("Colors") and
+ * options do not override kd (--material, --kd).
+ */
+bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh);
+
 /** The lights the scene uses: the given ones, or the lecture's default. */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
 

@@ -69,12 +69,12 @@ const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
   }
 )glsl";
 
-// The material's uniforms: ks and ns only where there is specular code.
-std::string MaterialUniforms(bool specular)
+// The material's uniforms: ks and ns only where there is specular code; kd
+// per vertex is a variable that the stage sets before lighting.
+std::string MaterialUniforms(bool specular, bool vertexKd)
 {
-  std::string s = R"glsl(uniform vec3 shadelabKa;
-uniform vec3 shadelabKd;
-)glsl";
+  std::string s = std::string("uniform vec3 shadelabKa;\n") +
+    (vertexKd ? "vec3 shadelabKd; // per vertex\n" : "uniform vec3 shadelabKd;\n");
   if (specular)
   {
     s += R"glsl(uniform vec3 shadelabKs;
@@ -160,9 +160,9 @@ const char* const AllFeaturesLightLoopSource = R"glsl(  for (int i = 0; i < shad
 
 // The all-features baseline: the same equation for any lights, up to
 // AllFeaturesMaxLights of them.
-std::string AllFeaturesIlluminateSource()
+std::string AllFeaturesIlluminateSource(bool vertexKd)
 {
-  return MaterialUniforms(true) +
+  return MaterialUniforms(true, vertexKd) +
     FillGlsl(R"glsl(uniform int shadelabReflection;
 uniform int shadelabLightCount;
 uniform int shadelabLightKind[$];
@@ -176,7 +176,7 @@ uniform int shadelabLightKind[$];
 std::string DeclarationsSource(const ShaderFeatures& f)
 {
   std::string s = "// shadelab: the lecture's illumination model (shadelabShadingOracle.cxx)\n" +
-    MaterialUniforms(f.Specular);
+    MaterialUniforms(f.Specular, f.VertexKd);
   if (!f.Lights.empty())
   {
     s += LightUniforms(f.Lights.size(), HasPositions(f), HasDirections(f), Has(f, LightKind::Spot));
@@ -295,7 +295,7 @@ std::string IlluminateSource(const ShaderFeatures& f)
 {
   if (f.AllFeatures)
   {
-    return AllFeaturesIlluminateSource();
+    return AllFeaturesIlluminateSource(f.VertexKd);
   }
   std::string s = DeclarationsSource(f);
   if (f.Specular)

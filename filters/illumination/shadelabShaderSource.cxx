@@ -8,11 +8,13 @@ namespace shadelab
 {
 const char* const FaceNormalArrayName = "shadelabFaceNormal";
 const char* const FaceNormalAttributeName = "shadelabFaceNormalMC";
+const char* const VertexKdAttributeName = "shadelabVertexKd";
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
-    this->Specular == o.Specular && this->AllFeatures == o.AllFeatures;
+    this->Specular == o.Specular && this->VertexKd == o.VertexKd &&
+    this->AllFeatures == o.AllFeatures;
 }
 
 namespace
@@ -69,10 +71,28 @@ const char* const ShadeFragmentSource = R"glsl(  vec3 shadelabN;
   fragOutput0 = vec4(shadelabIlluminate(vertexVC.xyz, shadelabN), 1.0);
 )glsl";
 
+// Per-vertex kd for the fragment stage (none, phong): the vertex stage
+// passes the attribute on, interpolated.
+void AddVertexKdPassing(std::vector<ShaderReplacement>& r)
+{
+  r.push_back({ true, "//VTK::Light::Dec",
+    std::string("in vec4 ") + VertexKdAttributeName + ";\nout vec3 shadelabKdVSOutput;\n" });
+  r.push_back({ true, "//VTK::Light::Impl",
+    std::string("  shadelabKdVSOutput = ") + VertexKdAttributeName + ".rgb;\n" });
+}
+
 // No shading: the diffuse colour as it is.
-void AddUnlit(std::vector<ShaderReplacement>& r)
+void AddUnlit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
   r.push_back({ false, "//VTK::UniformFlow::Impl", "" });
+  if (f.VertexKd)
+  {
+    AddVertexKdPassing(r);
+    r.push_back({ false, "//VTK::Light::Dec", "in vec3 shadelabKdVSOutput;\n//VTK::Light::Dec" });
+    r.push_back(
+      { false, "//VTK::Light::Impl", "  fragOutput0 = vec4(shadelabKdVSOutput, 1.0);\n" });
+    return;
+  }
   r.push_back({ false, "//VTK::Light::Dec", "uniform vec3 shadelabKd;\n//VTK::Light::Dec" });
   r.push_back({ false, "//VTK::Light::Impl", "  fragOutput0 = vec4(shadelabKd, 1.0);\n" });
 }
@@ -90,11 +110,16 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
     declarations = std::string("in vec3 ") + FaceNormalAttributeName +
       ";\nuniform mat3 shadelabNormalMatrix;\n" + declarations;
   }
+  std::string lighting = FillGlsl(VertexLightingSource,
+    flat ? std::string("shadelabNormalMatrix * ") + FaceNormalAttributeName
+         : std::string("normalVCVSOutput"));
+  if (f.VertexKd)
+  {
+    declarations = std::string("in vec4 ") + VertexKdAttributeName + ";\n" + declarations;
+    lighting = std::string("  shadelabKd = ") + VertexKdAttributeName + ".rgb;\n" + lighting;
+  }
   r.push_back({ true, "//VTK::Light::Dec", declarations });
-  r.push_back({ true, "//VTK::Light::Impl",
-    FillGlsl(VertexLightingSource,
-      flat ? std::string("shadelabNormalMatrix * ") + FaceNormalAttributeName
-           : std::string("normalVCVSOutput")) });
+  r.push_back({ true, "//VTK::Light::Impl", lighting });
   r.push_back({ false, "//VTK::UniformFlow::Impl", "" });
   r.push_back({ false, "//VTK::Light::Dec",
     qualifier + "in vec3 shadelabFront;\n" + qualifier +
@@ -105,9 +130,17 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 // Phong: lit per fragment by the interpolated normal.
 void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
-  r.push_back({ false, "//VTK::Light::Dec", IlluminateSource(f) + "//VTK::Light::Dec" });
+  std::string declarations = IlluminateSource(f) + "//VTK::Light::Dec";
+  std::string shade = ShadeFragmentSource;
+  if (f.VertexKd)
+  {
+    AddVertexKdPassing(r);
+    declarations = "in vec3 shadelabKdVSOutput;\n" + declarations;
+    shade = "  shadelabKd = shadelabKdVSOutput;\n" + shade;
+  }
+  r.push_back({ false, "//VTK::Light::Dec", declarations });
   r.push_back({ false, "//VTK::UniformFlow::Impl", GeometricNormalSource });
-  r.push_back({ false, "//VTK::Light::Impl", ShadeFragmentSource });
+  r.push_back({ false, "//VTK::Light::Impl", shade });
 }
 }
 
@@ -120,7 +153,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   switch (f.Rule)
   {
     case Shading::None:
-      AddUnlit(r);
+      AddUnlit(f, r);
       break;
     case Shading::Flat:
     case Shading::Gouraud:

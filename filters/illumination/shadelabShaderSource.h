@@ -22,6 +22,10 @@ struct ShaderFeatures
   Reflection Model = Reflection::BlinnPhong;
   std::vector<LightKind> Lights;
   bool Specular = true; // false when ks is zero: no specular code at all
+  // kd per vertex, from the mesh's colours (VertexKdAttributeName): the
+  // vertex that lights uses its own (gouraud; flat's provoking vertex), phong
+  // and none interpolate it to the fragment.
+  bool VertexKd = false;
   // The baseline that per-scene generation is measured against: one program
   // with every light kind, specular, and both reflection models, chosen by
   // uniforms at run time, for up to AllFeaturesMaxLights lights.
@@ -49,6 +53,8 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
 constexpr int AllFeaturesMaxLights = 8;
 extern const char* const FaceNormalArrayName;
 extern const char* const FaceNormalAttributeName;
+/** The vertex attribute (RGBA, alpha unused) that VertexKd reads. */
+extern const char* const VertexKdAttributeName;
 }
 
 #endif

@@ -44,13 +44,29 @@ IlluminationTerms MixTerms(
 }
 
 ShadedFragment ShadeTriangleFragment(
-  const IlluminationInputs& in, Shading rule, const TriangleFragment& f)
+  const IlluminationInputs& material, Shading rule, const TriangleFragment& f)
 {
   const auto& P = f.Positions;
   const auto& w = f.Weights;
   ShadedFragment s;
   s.Point = Mix<Vec3>(w, [&](int k) { return P[k]; });
   s.FaceNormal = normalize(cross(P[1] - P[0], P[2] - P[0]));
+  // The inputs with vertex k's kd (the material's without VertexKd).
+  const auto atVertex = [&](int k)
+  {
+    IlluminationInputs in = material;
+    if (f.VertexKd)
+    {
+      in.Surface.Kd = (*f.VertexKd)[k];
+    }
+    return in;
+  };
+  IlluminationInputs in = atVertex(2); // flat's: the provoking vertex's
+  if (f.VertexKd && rule != Shading::Flat)
+  {
+    in.Surface.Kd = Mix<Rgb>(w, [&](int k) { return (*f.VertexKd)[k]; });
+  }
+  s.Kd = in.Surface.Kd;
   switch (rule)
   {
     case Shading::None:
@@ -62,7 +78,7 @@ ShadedFragment ShadeTriangleFragment(
     case Shading::Gouraud:
       for (int k = 0; k < 3; ++k)
       {
-        s.Vertices[k] = ShadeVertex(in, P[k], f.Normals[k], f.Front);
+        s.Vertices[k] = ShadeVertex(atVertex(k), P[k], f.Normals[k], f.Front);
       }
       s.Terms = MixTerms(s.Vertices, w);
       s.Color = Mix<Rgb>(w, [&](int k) { return s.Vertices[k].Total(); });

@@ -8,6 +8,7 @@
 #include "shadelabShadingOracle.h"
 
 #include <array>
+#include <optional>
 
 namespace shadelab
 {
@@ -20,12 +21,17 @@ struct TriangleFragment
   // rasteriser interpolates): those of the point on the triangle itself.
   std::array<double, 3> Weights{};
   bool Front = true; // the triangle faces the viewer (counter-clockwise on the screen)
+  // kd per vertex (the mesh's colours), instead of the material's.
+  std::optional<std::array<Rgb, 3>> VertexKd;
 };
 
 /** The fragment as its rule shades it. */
 struct ShadedFragment
 {
-  Rgb Color{};       // the rule's value: the oracle's intensity of the fragment
+  Rgb Color{}; // the rule's value: the oracle's intensity of the fragment
+  // The kd that lit: the material's, or from VertexKd flat's provoking
+  // vertex's and the others' the weights' mix (gouraud lit each vertex with its own).
+  Rgb Kd{};
   Vec3 Point{};      // the fragment on the surface: the weights' mix of the positions
   Vec3 FaceNormal{}; // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
   // phong: the interpolated normal was too short, so the face normal lit.
@@ -42,7 +48,9 @@ struct ShadedFragment
  * Shades fragment f under rule: none gives kd; flat ShadeFlat; gouraud
  * ShadeVertex at each vertex, mixed by the weights; phong ShadeFragment with
  * the interpolated normal, falling back to the face normal turned towards
- * the viewer. Back faces light with their normals flipped.
+ * the viewer. Back faces light with their normals flipped. With VertexKd,
+ * each vertex that lights uses its own kd (flat the provoking vertex's),
+ * none and phong the weights' mix of them.
  */
 ShadedFragment ShadeTriangleFragment(
   const IlluminationInputs& in, Shading rule, const TriangleFragment& f);

@@ -112,11 +112,13 @@ Property ReadPropertyLine(TextScanner& scanner)
 
 void AssignVertexRoles(Element& element)
 {
-  constexpr std::string_view names[] = { "x", "y", "z", "nx", "ny", "nz" };
-  int found[6] = {};
+  constexpr std::string_view names[] = { "x", "y", "z", "nx", "ny", "nz", "red", "green", "blue",
+    "alpha" };
+  constexpr int count = static_cast<int>(std::size(names));
+  int found[count] = {};
   for (Property& property : element.Properties)
   {
-    for (int k = 0; k < 6; ++k)
+    for (int k = 0; k < count; ++k)
     {
       if (property.Name == names[k])
       {
@@ -129,7 +131,7 @@ void AssignVertexRoles(Element& element)
       }
     }
   }
-  for (int k = 0; k < 6; ++k)
+  for (int k = 0; k < count; ++k)
   {
     if (found[k] > 1)
     {
@@ -141,11 +143,14 @@ void AssignVertexRoles(Element& element)
     throw MeshReadError("the vertex element lacks x, y or z");
   }
   const bool hasNormals = found[3] && found[4] && found[5];
+  const bool hasColors = found[6] && found[7] && found[8];
   for (Property& property : element.Properties)
   {
-    if (!hasNormals && property.Role >= Use::NX)
+    // A partial normal is no normal, a partial colour no colour.
+    if ((!hasNormals && property.Role >= Use::NX && property.Role <= Use::NZ) ||
+      (!hasColors && property.Role >= Use::Red && property.Role <= Use::Alpha))
     {
-      property.Role = Use::Skip; // a partial normal is no normal
+      property.Role = Use::Skip;
     }
   }
 }

@@ -20,7 +20,7 @@ namespace shadelab::ply
 {
 using Scalar = ScalarType;
 
-// What the reader does with a property's values; X .. NZ in this order.
+// What the reader does with a property's values; X .. Alpha in this order.
 enum class Use
 {
   Skip,
@@ -30,6 +30,10 @@ enum class Use
   NX,
   NY,
   NZ,
+  Red,
+  Green,
+  Blue,
+  Alpha,
   Indices
 };
 
@@ -76,8 +80,8 @@ Header ReadHeader(std::string_view bytes, TextScanner& scanner);
 
 /**
  * Marks the vertex element's x, y, z (and nx, ny, nz when all three are
- * there) and the index lists of face and tristrips elements; throws
- * MeshReadError on a header that lacks them or has them twice.
+ * there; red, green, blue and an optional alpha likewise) and the index lists of face and tristrips
+ * elements; throws MeshReadError on a header that lacks them or has them twice.
  */
 void AssignRoles(Header& header);
 

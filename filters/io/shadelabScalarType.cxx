@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace shadelab
 {
@@ -52,6 +53,33 @@ std::size_t SizeOf(ScalarType type)
 bool IsInteger(ScalarType type)
 {
   return type != ScalarType::Float32 && type != ScalarType::Float64;
+}
+
+double LargestValue(ScalarType type)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+      return std::numeric_limits<std::int8_t>::max();
+    case ScalarType::UInt8:
+      return std::numeric_limits<std::uint8_t>::max();
+    case ScalarType::Int16:
+      return std::numeric_limits<std::int16_t>::max();
+    case ScalarType::UInt16:
+      return std::numeric_limits<std::uint16_t>::max();
+    case ScalarType::Int32:
+      return std::numeric_limits<std::int32_t>::max();
+    case ScalarType::UInt32:
+      return std::numeric_limits<std::uint32_t>::max();
+    case ScalarType::Int64:
+      return static_cast<double>(std::numeric_limits<std::int64_t>::max());
+    case ScalarType::UInt64:
+      return static_cast<double>(std::numeric_limits<std::uint64_t>::max());
+    case ScalarType::Float32:
+    case ScalarType::Float64:
+      break;
+  }
+  return 1;
 }
 
 double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian)

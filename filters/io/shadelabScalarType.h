@@ -29,6 +29,10 @@ std::size_t SizeOf(ScalarType type);
 
 bool IsInteger(ScalarType type);
 
+/** An integer type's largest value (a colour stored as one is that fraction of it); 1 for floats.
+ */
+double LargestValue(ScalarType type);
+
 /** The SizeOf(type) bytes at `bytes`, in the given byte order, as a double. */
 double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian);
 

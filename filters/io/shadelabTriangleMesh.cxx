@@ -6,6 +6,7 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
@@ -15,10 +16,12 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
+#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 
 namespace shadelab
@@ -376,6 +379,45 @@ void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType f
   if (vtkSmartPointer<vtkIntArray> parts = TriangleParts(polygons, sources))
   {
     triangles->GetCellData()->AddArray(parts);
+  }
+}
+void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* triangles)
+{
+  const auto count = static_cast<vtkIdType>(parts.size());
+  vtkNew<vtkStringArray> names;
+  names->SetName(PartMaterialsArrayName);
+  vtkNew<vtkIntArray> indices;
+  indices->SetName(PartMaterialIndicesArrayName);
+  const auto coefficients = [count](const char* name, int components)
+  {
+    auto array = vtkSmartPointer<vtkFloatArray>::New();
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(count);
+    array->Fill(0);
+    return array;
+  };
+  auto ka = coefficients(PartKaArrayName, 3);
+  auto kd = coefficients(PartKdArrayName, 3);
+  auto ks = coefficients(PartKsArrayName, 3);
+  auto ns = coefficients(PartNsArrayName, 1);
+  for (vtkIdType part = 0; part < count; ++part)
+  {
+    const PartMaterial& p = parts[part];
+    names->InsertNextValue(p.Name);
+    indices->InsertNextValue(p.Index);
+    if (p.Index >= 0)
+    {
+      ka->SetTuple(part, p.Coefficients.Ka.data());
+      kd->SetTuple(part, p.Coefficients.Kd.data());
+      ks->SetTuple(part, p.Coefficients.Ks.data());
+      ns->SetTuple(part, &p.Coefficients.Ns);
+    }
+  }
+  for (vtkAbstractArray* array :
+    std::initializer_list<vtkAbstractArray*>{ names, indices, ka, kd, ks, ns })
+  {
+    triangles->GetFieldData()->AddArray(array);
   }
 }
 }

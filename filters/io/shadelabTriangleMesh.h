@@ -13,9 +13,12 @@
 #ifndef shadelabTriangleMesh_h
 #define shadelabTriangleMesh_h
 
+#include "shadelabIllumination.h"
+
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
+#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -39,6 +42,16 @@ constexpr const char* PartArrayName = "Part";
 constexpr const char* PartMaterialsArrayName = "PartMaterials";
 /** Field data, one per part: its material's index in the file (int), -1 without one. */
 constexpr const char* PartMaterialIndicesArrayName = "PartMaterialIndices";
+/**
+ * Field data, one tuple per part: its material's float ka, kd, ks (3
+ * components) and ns (1) (OBJ: from its MTL; glTF: mapped from
+ * metallic-roughness, shadelabGLTFMaterial.h); zeros for a part whose index
+ * is -1.
+ */
+constexpr const char* PartKaArrayName = "PartKa";
+constexpr const char* PartKdArrayName = "PartKd";
+constexpr const char* PartKsArrayName = "PartKs";
+constexpr const char* PartNsArrayName = "PartNs";
 
 struct PolygonMesh
 {
@@ -54,6 +67,21 @@ struct PolygonMesh
   // The part of each face, then of each strip (VTK's cell order); or empty.
   std::vector<int> Parts;
 };
+
+/** A part's material as its file names and defines it. */
+struct PartMaterial
+{
+  std::string Name;      // "" without one
+  int Index = -1;        // in the file; -1 without one, or where the file does not define it
+  Material Coefficients; // where Index >= 0
+};
+
+/**
+ * Adds the parts' materials to `triangles` as field data: PartMaterials,
+ * PartMaterialIndices, and PartKa, PartKd, PartKs, PartNs (zeros where the
+ * index is -1).
+ */
+void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* triangles);
 
 /** The parser's arrays as vtkPolyData: points, point and cell attributes, polys and strips. */
 vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);

@@ -2,16 +2,13 @@
 
 #include "shadelabGLTFAccessor.h"
 #include "shadelabGLTFDocument.h"
+#include "shadelabGLTFMaterial.h"
 #include "shadelabGLTFScene.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabTriangleMesh.h"
 
-#include <vtkFieldData.h>
-#include <vtkIntArray.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
 
 #include <cmath>
 #include <cstdint>
@@ -133,8 +130,7 @@ public:
     return this->Mesh;
   }
 
-  std::vector<std::string> MaterialNames;
-  std::vector<int> MaterialIndices;
+  std::vector<shadelab::PartMaterial> Materials; // per part
   std::size_t Skipped = 0;
   bool SomeLackNormals = false;
   bool SomeHaveNormals = false;
@@ -269,7 +265,7 @@ private:
     {
       Fail(where + " has " + std::to_string(n) + " vertices, which make no whole triangles");
     }
-    const int part = static_cast<int>(this->MaterialNames.size());
+    const int part = static_cast<int>(this->Materials.size());
     if (mode != TriangleStrip)
     {
       const std::size_t triangles = mode == Triangles ? n / 3 : n - 2;
@@ -321,14 +317,13 @@ private:
   {
     if (!primitive.contains("material"))
     {
-      this->MaterialNames.emplace_back();
-      this->MaterialIndices.push_back(-1);
+      this->Materials.emplace_back();
       return;
     }
     const std::uint64_t index = Unsigned(primitive, "material", where);
     const Json& material = Item(this->Doc.Root, "materials", index, where);
-    this->MaterialNames.push_back(String(material, "name", "material " + std::to_string(index)));
-    this->MaterialIndices.push_back(static_cast<int>(index));
+    const shadelab::Material m = LectureMaterial(material, "material " + std::to_string(index));
+    this->Materials.push_back({ m.Name, static_cast<int>(index), m });
   }
 
   const Document& Doc;
@@ -359,15 +354,5 @@ void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   }
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(builder.Finish()), triangles);
 
-  vtkNew<vtkStringArray> names;
-  names->SetName(shadelab::PartMaterialsArrayName);
-  vtkNew<vtkIntArray> indices;
-  indices->SetName(shadelab::PartMaterialIndicesArrayName);
-  for (std::size_t part = 0; part < builder.MaterialNames.size(); ++part)
-  {
-    names->InsertNextValue(builder.MaterialNames[part]);
-    indices->InsertNextValue(builder.MaterialIndices[part]);
-  }
-  triangles->GetFieldData()->AddArray(names);
-  triangles->GetFieldData()->AddArray(indices);
+  shadelab::AddPartMaterials(builder.Materials, triangles);
 }

@@ -1,6 +1,7 @@
 #include "vtkShadelabOBJReader.h"
 
 #include "shadelabMeshReadError.h"
+#include "shadelabMtlParser.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 
@@ -9,6 +10,7 @@
 
 #include <charconv>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -31,6 +33,12 @@ struct ObjData
   std::vector<vtkIdType> NormalIds; // 0-based or NoNormal, per corner
   bool SomeCornersHaveNormals = false;
   bool SomeCornersLackNormals = false;
+  // usemtl: each face's part, one part per material name in the order of
+  // first use ("" for faces before the first usemtl); empty without usemtl.
+  std::vector<int> FaceParts;
+  std::vector<std::string> MaterialNames;
+  int Part = 0;                       // the part of the faces read now
+  std::vector<std::string> Libraries; // mtllib's files, as written
 };
 
 // A 1-based or negative (relative) OBJ index as a 0-based one.
@@ -108,6 +116,25 @@ void ReadCorner(std::string_view token, ObjData& obj, const TextScanner& scanner
   }
 }
 
+// usemtl NAME: the faces that follow are the part of that material.
+void UseMaterial(const std::string& name, ObjData& obj)
+{
+  if (obj.MaterialNames.empty() && !obj.FaceParts.empty())
+  {
+    obj.MaterialNames.push_back(""); // the faces read so far: part 0, without a material
+  }
+  std::size_t part = 0;
+  while (part < obj.MaterialNames.size() && obj.MaterialNames[part] != name)
+  {
+    ++part;
+  }
+  if (part == obj.MaterialNames.size())
+  {
+    obj.MaterialNames.push_back(name);
+  }
+  obj.Part = static_cast<int>(part);
+}
+
 // A statement's end: the line's end or a comment.
 bool AtStatementEnd(std::string_view token)
 {
@@ -148,6 +175,22 @@ ObjData Parse(std::string_view text)
         scanner.Fail("unexpected " + Quote(token) + " after a normal");
       }
     }
+    else if (keyword == "mtllib")
+    {
+      for (auto name = scanner.NextToken(); !AtStatementEnd(name); name = scanner.NextToken())
+      {
+        obj.Libraries.emplace_back(name);
+      }
+    }
+    else if (keyword == "usemtl")
+    {
+      const auto name = scanner.NextToken();
+      if (AtStatementEnd(name))
+      {
+        scanner.Fail("usemtl without a material name");
+      }
+      UseMaterial(std::string(name), obj);
+    }
     else if (keyword == "f")
     {
       const std::size_t first = obj.VertexIds.size();
@@ -161,7 +204,12 @@ ObjData Parse(std::string_view text)
         scanner.Fail("face has " + std::to_string(corners) + " vertices, at least 3 are needed");
       }
       obj.FaceOffsets.push_back(static_cast<vtkIdType>(obj.VertexIds.size()));
+      obj.FaceParts.push_back(obj.Part);
     }
+  }
+  if (obj.MaterialNames.empty())
+  {
+    obj.FaceParts.clear();
   }
   return obj;
 }
@@ -208,6 +256,30 @@ void SplitByNormal(ObjData& obj, shadelab::PolygonMesh& mesh)
     }
   }
 }
+
+// Each part's material: its name's first definition in the libraries'
+// materials (in their order), or none.
+std::vector<shadelab::PartMaterial> PartMaterials(
+  const std::vector<std::string>& names, const std::vector<shadelab::Material>& library)
+{
+  std::vector<shadelab::PartMaterial> parts;
+  for (const std::string& name : names)
+  {
+    shadelab::PartMaterial part;
+    part.Name = name;
+    for (std::size_t m = 0; m < library.size() && !name.empty(); ++m)
+    {
+      if (library[m].Name == name)
+      {
+        part.Index = static_cast<int>(m);
+        part.Coefficients = library[m];
+        break;
+      }
+    }
+    parts.push_back(part);
+  }
+  return parts;
+}
 }
 
 void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
@@ -232,5 +304,46 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   }
   mesh.FaceOffsets = std::move(obj.FaceOffsets);
   mesh.FaceIds = std::move(obj.VertexIds);
+  mesh.Parts = std::move(obj.FaceParts);
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles, 1);
+  if (!obj.MaterialNames.empty())
+  {
+    shadelab::AddPartMaterials(
+      PartMaterials(obj.MaterialNames, this->ReadLibraries(fileName, obj.Libraries)), triangles);
+  }
+}
+
+std::vector<shadelab::Material> vtkShadelabOBJReader::ReadLibraries(
+  const char* fileName, const std::vector<std::string>& libraries)
+{
+  std::vector<shadelab::Material> materials;
+  const std::filesystem::path folder = std::filesystem::path(fileName).parent_path();
+  for (const std::string& library : libraries)
+  {
+    std::string text;
+    try
+    {
+      text = ReadFileBytes((folder / library).c_str());
+    }
+    catch (const shadelab::MeshReadError& e)
+    {
+      // OBJ files from the web often come without their MTL: drawn anyway.
+      vtkWarningMacro(<< "material library " << shadelab::Quote(library) << ": " << e.what()
+                      << "; its materials are the default");
+      continue;
+    }
+    try
+    {
+      for (shadelab::Material& m : shadelab::ParseMtl(text))
+      {
+        materials.push_back(std::move(m));
+      }
+    }
+    catch (const shadelab::MeshReadError& e)
+    {
+      throw shadelab::MeshReadError(
+        "material library " + shadelab::Quote(library) + " " + e.what());
+    }
+  }
+  return materials;
 }

@@ -32,13 +32,14 @@ public:
     , Role(element.Role)
     , Offsets(element.Role == Kind::Strips ? mesh.StripOffsets : mesh.FaceOffsets)
     , Ids(element.Role == Kind::Strips ? mesh.StripIds : mesh.FaceIds)
-    , HasNormals(std::any_of(element.Properties.begin(), element.Properties.end(),
-        [](const Property& property) { return property.Role == Use::NX; }))
+    , HasNormals(Has(element, Use::NX))
+    , HasColors(Has(element, Use::Red))
   {
     if (this->Role == Kind::Vertex)
     {
       mesh.Points.reserve(3 * element.Count);
       mesh.Normals.reserve(this->HasNormals ? 3 * element.Count : 0);
+      mesh.Colors.reserve(this->HasColors ? 4 * element.Count : 0);
     }
     else
     {
@@ -46,9 +47,17 @@ public:
     }
   }
 
-  /** A vertex property's value: x y z nx ny nz by its Use. */
-  void SetCoordinate(Use role, double value)
+  /**
+   * A vertex property's value of `type`: x y z nx ny nz red green blue
+   * alpha by its Use; an integer colour is a fraction of its type's largest
+   * value (uchar 255 is 1).
+   */
+  void SetCoordinate(Use role, Scalar type, double value)
   {
+    if (role >= Use::Red && IsInteger(type))
+    {
+      value /= LargestValue(type);
+    }
     this->Vertex[static_cast<int>(role) - static_cast<int>(Use::X)] = value;
   }
 
@@ -76,6 +85,10 @@ public:
       {
         this->Mesh.Normals.insert(this->Mesh.Normals.end(), this->Vertex + 3, this->Vertex + 6);
       }
+      if (this->HasColors)
+      {
+        this->Mesh.Colors.insert(this->Mesh.Colors.end(), this->Vertex + 6, this->Vertex + 10);
+      }
     }
     else if (this->Role == Kind::Strips)
     {
@@ -88,6 +101,12 @@ public:
   }
 
 private:
+  static bool Has(const Element& element, Use role)
+  {
+    return std::any_of(element.Properties.begin(), element.Properties.end(),
+      [role](const Property& property) { return property.Role == role; });
+  }
+
   void EndStrip()
   {
     if (static_cast<vtkIdType>(this->Ids.size()) > this->Offsets.back())
@@ -101,7 +120,10 @@ private:
   std::vector<vtkIdType>& Offsets;
   std::vector<vtkIdType>& Ids;
   bool HasNormals;
-  double Vertex[6] = {}; // x y z nx ny nz, indexed by Use - Use::X
+  bool HasColors;
+  // x y z nx ny nz red green blue alpha, indexed by Use - Use::X; alpha 1
+  // unless the file has it.
+  double Vertex[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 1 };
 };
 
 // A list property of item i: its length, then its values, kept if they are
@@ -159,7 +181,7 @@ void ReadProperty(Source& source, const Element& element, std::uint64_t i, const
   }
   if (property.Role != Use::Skip)
   {
-    target.SetCoordinate(property.Role, value);
+    target.SetCoordinate(property.Role, property.Type, value);
   }
 }
 

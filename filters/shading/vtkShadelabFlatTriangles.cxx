@@ -1,6 +1,7 @@
 #include "vtkShadelabFlatTriangles.h"
 
 #include "shadelabShaderSource.h"
+#include "shadelabTriangleMesh.h"
 
 #include <array>
 
@@ -39,6 +40,16 @@ int vtkShadelabFlatTriangles::RequestData(
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(3 * triangles);
 
+  vtkDataArray* colors = input->GetPointData()->GetArray(shadelab::ColorsArrayName);
+  vtkSmartPointer<vtkDataArray> cornerColors;
+  if (colors)
+  {
+    cornerColors.TakeReference(colors->NewInstance());
+    cornerColors->SetName(shadelab::ColorsArrayName);
+    cornerColors->SetNumberOfComponents(colors->GetNumberOfComponents());
+    cornerColors->SetNumberOfTuples(3 * triangles);
+  }
+
   vtkIdType npts = 0;
   const vtkIdType* ids = nullptr;
   vtkIdType next = 0;
@@ -49,6 +60,10 @@ int vtkShadelabFlatTriangles::RequestData(
     {
       input->GetPoint(ids[k], p[k]);
       points->SetPoint(next + k, p[k]);
+      if (colors)
+      {
+        cornerColors->SetTuple(next + k, ids[k], colors);
+      }
     }
     double e1[3], e2[3], n[3];
     vtkMath::Subtract(p[1], p[0], e1);
@@ -82,6 +97,10 @@ int vtkShadelabFlatTriangles::RequestData(
   output->SetPoints(points);
   output->SetPolys(cells);
   output->GetPointData()->AddArray(normals);
+  if (colors)
+  {
+    output->GetPointData()->AddArray(cornerColors);
+  }
   return 1;
 }
 

@@ -7,7 +7,9 @@
  * vertex shader sees one vertex at a time, so each triangle gets its own
  * three points, in the cell's order (the last one provokes), and the point
  * array shadelabFaceNormal holds the unit normal of (p1 - p0) x (p2 - p0),
- * computed in double; (0,0,0) for a degenerate triangle. No other arrays.
+ * computed in double; (0,0,0) for a degenerate triangle. The vertex colours
+ * ("Colors", per-vertex kd) go along, each point with its corner's; no other
+ * arrays.
  */
 #ifndef vtkShadelabFlatTriangles_h
 #define vtkShadelabFlatTriangles_h

@@ -1,5 +1,6 @@
 #include "vtkShadelabShading.h"
 
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabFlatTriangles.h"
 
 #include <vtkActor.h>
@@ -73,6 +74,12 @@ void vtkShadelabShading::SetLightPlacement(const std::vector<Light>& lights)
   this->Lights = lights;
 }
 
+void vtkShadelabShading::SetVertexKd(bool fromColors)
+{
+  this->Features.VertexKd = fromColors;
+  this->Modified();
+}
+
 void vtkShadelabShading::SetAllFeatures(bool all)
 {
   this->Features.AllFeatures = all;
@@ -130,6 +137,11 @@ void vtkShadelabShading::Attach(
     {
       mapper->MapDataArrayToVertexAttribute(
         FaceNormalAttributeName, FaceNormalArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+    if (this->Features.VertexKd)
+    {
+      mapper->MapDataArrayToVertexAttribute(
+        VertexKdAttributeName, ColorsArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
   }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
@@ -233,4 +245,5 @@ void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Model: " << ToString(this->Features.Model) << "\n";
   os << indent << "Lights: " << this->Lights.size() << "\n";
   os << indent << "Specular: " << this->Features.Specular << "\n";
+  os << indent << "VertexKd: " << this->Features.VertexKd << "\n";
 }

@@ -45,6 +45,12 @@ public:
    */
   void SetLightPlacement(const std::vector<shadelab::Light>& lights);
 
+  /**
+   * Whether kd comes per vertex from the mesh's colours (point data
+   * "Colors") instead of the material (ShaderFeatures::VertexKd).
+   */
+  void SetVertexKd(bool fromColors);
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 

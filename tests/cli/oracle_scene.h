@@ -6,7 +6,8 @@
 // Every scene is a grid of triangles over [-1, 1]^2 in local coordinates,
 // on the plane z = SlopeX*x + SlopeY*y, seen by an orthographic camera on +Z
 // (parallel scale 1.1, +Y up), written as OBJ with one `vn` per vertex so the
-// normals and the triangles' vertex order are exactly the test's. A whole
+// normals and the triangles' vertex order are exactly the test's (as PLY
+// with normals and uchar colours where the scene has vertex colours). A whole
 // scene can be scaled and translated (mesh, lights, camera, parallel scale).
 // The expected image follows DESIGN.md's shading rules through the oracle's
 // functions, in world coordinates: the ray through each pixel centre meets
@@ -85,6 +86,7 @@ struct Mesh
   std::vector<Vec3> Positions; // local coordinates
   std::vector<Vec3> Normals;   // per vertex, float-exact (what the reader keeps)
   std::vector<shadelab::TriangleCorners> Triangles; // draw order; the third is the provoking vertex
+  std::vector<std::array<int, 3>> Colors;           // per vertex, 0..255, or empty
 };
 
 struct GridSpec
@@ -109,7 +111,18 @@ struct GridSpec
   // vertex; (a, mid(a, b), b), collinear, with a vertex of its own; and
   // (a, a', c) with a' = a + 1e-12 (b - a), a nearly coincident twin.
   bool Degenerate = false;
+  // A colour per vertex (red, green, blue as PLY uchar), which is its kd
+  // unless the scene overrides kd: neighbours differ strongly, so a wrong
+  // vertex's colour or a wrong mix shows.
+  bool VertexColors = false;
 };
+
+// The colour of grid vertex (i, j); vertices added off the grid are grey.
+inline std::array<int, 3> GridColor(int i, int j)
+{
+  constexpr int red[] = { 230, 60, 140 }, green[] = { 50, 200, 120 }, blue[] = { 90, 30, 220 };
+  return { red[(i + j) % 3], green[(2 * i + j) % 3], blue[(i + 2 * j) % 3] };
+}
 
 // The vertex normal at (x, y), before rounding to float.
 inline Vec3 GridNormal(const GridSpec& g, double x, double y)
@@ -144,6 +157,10 @@ inline Mesh Grid(const GridSpec& g)
         c = static_cast<float>(c); // the OBJ reader keeps normals as float
       }
       m.Normals.push_back(normal);
+      if (g.VertexColors)
+      {
+        m.Colors.push_back(GridColor(i, j));
+      }
     }
   }
   for (int j = 0; j < g.Cells; ++j)
@@ -182,6 +199,10 @@ inline Mesh Grid(const GridSpec& g)
     }
     m.Positions.push_back(p);
     m.Normals.push_back(normal);
+    if (g.VertexColors)
+    {
+      m.Colors.push_back({ 128, 128, 128 });
+    }
     return static_cast<int>(m.Positions.size() - 1);
   };
   std::vector<shadelab::TriangleCorners> triangles;
@@ -270,6 +291,11 @@ struct Scene
   // still expects to be the grid's.
   std::string Normals = "file";
   std::string Weighting = "angle";
+  // With Geometry.VertexColors: --kd given, so the material's kd wins over them.
+  bool OverrideKd = false;
+
+  /** kd comes from the mesh's vertex colours. */
+  bool VertexKd() const { return this->Geometry.VertexColors && !this->OverrideKd; }
 
   Vec3 World(const Vec3& p) const { return this->Offset + this->Scale * p; }
 };
@@ -323,21 +349,52 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
   return obj.str();
 }
 
+// An ASCII PLY of the mesh with double positions, float normals and uchar
+// colours: what the grid is when it has vertex colours.
+inline std::string PlyText(const Scene& s, const Mesh& m)
+{
+  std::ostringstream ply;
+  ply << "ply\nformat ascii 1.0\nelement vertex " << m.Positions.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\n"
+         "property float nx\nproperty float ny\nproperty float nz\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face "
+      << m.Triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (std::size_t v = 0; v < m.Positions.size(); ++v)
+  {
+    const Vec3 w = s.World(m.Positions[v]);
+    const Vec3& n = m.Normals[v];
+    ply << Num(w[0]) << " " << Num(w[1]) << " " << Num(w[2]) << " " << Num(n[0]) << " " << Num(n[1])
+        << " " << Num(n[2]) << " " << m.Colors[v][0] << " " << m.Colors[v][1] << " "
+        << m.Colors[v][2] << "\n";
+  }
+  for (const auto& t : m.Triangles)
+  {
+    ply << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  }
+  return ply.str();
+}
+
 // Renders the scene with `shadelab render`; every setting is passed
 // explicitly, lights included (shadelab's default is a light at the camera).
 inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
 {
-  const auto mesh = dir / "mesh.obj";
+  const bool ply = s.Geometry.VertexColors;
+  const auto mesh = dir / (ply ? "mesh.ply" : "mesh.obj");
   const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
-  WriteText(mesh, ObjText(s, Grid(s.Geometry)));
+  const Mesh m = Grid(s.Geometry);
+  WriteText(mesh, ply ? PlyText(s, m) : ObjText(s, m));
   const std::string size = std::to_string(s.Size) + "x" + std::to_string(s.Size);
   std::vector<std::string> args{ "render", mesh.string(), "-o", out.string(), "--size", size,
     "--orthographic", "--camera-position", Triple(s.World({ 0, 0, s.CameraDistance })),
     "--camera-focal-point", Triple(s.World({ 0, 0, 0 })), "--camera-view-up", "0,1,0",
     "--parallel-scale", Num(s.Scale * ParallelScale), "--shading", ToString(s.Rule), "--reflection",
-    ToString(s.Model), "--ka", Triple(s.Surface.Ka), "--kd", Triple(s.Surface.Kd), "--ks",
-    Triple(s.Surface.Ks), "--ns", Num(s.Surface.Ns), "--ambient", Triple(s.Ambient), "--background",
-    "0,0,0", "--normals", s.Normals, "--weighting", s.Weighting };
+    ToString(s.Model), "--ka", Triple(s.Surface.Ka), "--ks", Triple(s.Surface.Ks), "--ns",
+    Num(s.Surface.Ns), "--ambient", Triple(s.Ambient), "--background", "0,0,0", "--normals",
+    s.Normals, "--weighting", s.Weighting };
+  if (!s.VertexKd())
+  {
+    args.insert(args.end(), { "--kd", Triple(s.Surface.Kd) });
+  }
   for (const Light& l : WorldLights(s))
   {
     args.push_back("--light");
@@ -525,6 +582,19 @@ private:
     }
     f.Weights = w;
     f.Front = front;
+    if (this->S.VertexKd())
+    {
+      f.VertexKd.emplace();
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto& c = this->M.Colors[this->M.Triangles[t][k]];
+        for (int channel = 0; channel < 3; ++channel)
+        {
+          // What the reader keeps: the fraction of 255 as float.
+          (*f.VertexKd)[k][channel] = static_cast<float>(c[channel] / 255.0);
+        }
+      }
+    }
     const shadelab::ShadedFragment shaded =
       shadelab::ShadeTriangleFragment(this->In, this->S.Rule, f);
     e.Value = shaded.Color;

@@ -67,6 +67,13 @@ const BadCase Cases[] = {
     [](const TempDir& d)
     { return WithMesh(d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"); },
     1, { "range.obj", "9" } },
+  { "ObjMalformedMaterialLibrary",
+    [](const TempDir& d)
+    {
+      WriteText(d / "bad.mtl", "newmtl a\nKd 1 nope 0\n");
+      return WithMesh(d, "lib.obj", "mtllib bad.mtl\nusemtl a\n" + Tetrahedron);
+    },
+    1, { "lib.obj", "material library 'bad.mtl' line 2: malformed Kd 'nope'" } },
   { "ObjZeroIndex",
     [](const TempDir& d)
     { return WithMesh(d, "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); },

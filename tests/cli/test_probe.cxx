@@ -350,6 +350,56 @@ TEST(Probe, NoneIsKdUnlit)
   EXPECT_FALSE(p[0].contains("lights") || p[0].contains("ambient"));
 }
 
+// Vertex colours are kd: the probe says so and which kd lit (flat the
+// provoking vertex's, the others the weights' mix), each light's diffuse
+// term is that kd's; --kd puts the material's back.
+TEST(Probe, VertexColorsAreTheKdThatLit)
+{
+  TempDir dir;
+  const auto mesh = dir / "rgb.ply";
+  WriteText(mesh,
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  const std::array<Rgb, 3> colors{ { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
+  for (Shading rule : { Shading::None, Shading::Flat, Shading::Gouraud, Shading::Phong })
+  {
+    SCOPED_TRACE(ToString(rule));
+    std::string error;
+    const std::vector<std::string> common{ mesh.string(), "--size", "64x48", "--shading",
+      ToString(rule) };
+    const std::vector<json> p = Probe(common, { { 32, 24 } }, error);
+    ASSERT_EQ(error, "");
+    ASSERT_TRUE(p.at(0).at("hit").get<bool>());
+    EXPECT_EQ(p[0].at("kd_from"), "vertex colors");
+    Rgb mixed{};
+    for (int k = 0; k < 3; ++k)
+    {
+      const json& v = p[0].at("vertices").at(k);
+      EXPECT_EQ(Vec(v.at("kd")), colors[v.at("index").get<int>()]);
+      mixed = mixed + v.at("weight").get<double>() * colors[v.at("index").get<int>()];
+    }
+    const Rgb kd = rule == Shading::Flat ? colors[p[0].at("provoking_vertex").get<int>()] : mixed;
+    ExpectNear(Vec(p[0].at("kd")), kd, 1e-12, "kd");
+    if (rule == Shading::Flat || rule == Shading::Phong)
+    {
+      const json& light = p[0].at("lights").at(0);
+      ExpectNear(Vec(light.at("diffuse")), light.at("n_dot_l").get<double>() * kd, 1e-12,
+        "diffuse = kd*Il*(N.L), white light");
+    }
+    // The render agrees with the oracle (its float error, as the oracle tests bound it).
+    ExpectNear(Vec(p[0].at("rendered")), Vec(p[0].at("oracle")), 1e-4, "rendered");
+
+    std::vector<std::string> overridden = common;
+    overridden.insert(overridden.end(), { "--kd", "0.3,0.5,0.7" });
+    const std::vector<json> q = Probe(overridden, { { 32, 24 } }, error);
+    ASSERT_EQ(error, "");
+    EXPECT_EQ(q.at(0).at("kd_from"), "material");
+    EXPECT_EQ(Vec(q[0].at("kd")), (Rgb{ 0.3, 0.5, 0.7 }));
+  }
+}
+
 namespace
 {
 std::string Number(double v)

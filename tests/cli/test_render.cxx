@@ -189,6 +189,35 @@ TEST(Render, PictureCarriesItsParameters)
   }
 }
 
+// A mesh's vertex colours are kd unless --material or --kd replaces them;
+// the picture says which.
+TEST(Render, PictureSaysWhereKdCameFrom)
+{
+  TempDir dir;
+  const auto mesh = dir / "rgb.ply";
+  WriteText(mesh,
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+    { {}, "\"kd_from\":\"vertex colors\"" },
+    { { "--material", "chrome" }, "\"kd_from\":\"material\"" },
+    { { "--kd", "0.5,0.5,0.5" }, "\"kd_from\":\"material\"" },
+  };
+  for (const auto& [options, expected] : cases)
+  {
+    std::vector<std::string> args{ "render", mesh.string(), "-o", (dir / "m.png").string(),
+      "--size", "32x32" };
+    args.insert(args.end(), options.begin(), options.end());
+    const RunResult r = RunShadelab(args);
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    const Image image = ReadImage(dir / "m.png");
+    EXPECT_NE(image.Description.find(expected), std::string::npos)
+      << expected << " not in: " << image.Description;
+  }
+}
+
 TEST(Render, HelpDocumentsTheCameraConventions)
 {
   const RunResult r = RunShadelab({ "render", "--help" });

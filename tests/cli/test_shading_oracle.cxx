@@ -74,6 +74,19 @@ std::vector<Case> Cases()
     add("gouraud_phong_png", s);
   }
 
+  // Vertex colours (PLY red, green, blue) as kd under every rule: flat
+  // takes the provoking vertex's, gouraud lights each vertex with its own,
+  // phong and none interpolate them; --kd given overrides them.
+  for (Shading r : { Shading::None, Shading::Flat, Shading::Gouraud, Shading::Phong })
+  {
+    Scene s = coloured;
+    s.Rule = r;
+    s.Geometry.VertexColors = true;
+    add("vertex_colors_" + std::string(ToString(r)), s);
+    s.OverrideKd = true;
+    add("vertex_colors_overridden_" + std::string(ToString(r)), s);
+  }
+
   // A spot cone whose boundary crosses the mesh: pixels inside and outside,
   // a hard edge (exponent 0) and a soft fall-off.
   for (Shading r : LitRules)

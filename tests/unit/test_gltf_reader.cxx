@@ -479,7 +479,11 @@ TEST_F(MeshReaders, GltfPartsCarryTheirMaterials)
   red["material"] = 1;
   Json blue = Primitive(position, gltf.Indices({ 0, 2, 3 }));
   blue["material"] = 0;
-  gltf.Doc["materials"] = { { { "name", "blue" } }, { { "name", "red" } } };
+  gltf.Doc["materials"] = { { { "name", "blue" },
+                              { "pbrMetallicRoughness",
+                                { { "baseColorFactor", { 0.2, 0.4, 1, 1 } },
+                                  { "metallicFactor", 0.25 }, { "roughnessFactor", 0.5 } } } },
+    { { "name", "red" } } };
   gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh({ red, blue, Primitive(position) }) } }) });
   gltf.Doc["meshes"][0]["primitives"][2]["indices"] = gltf.Indices({ 1, 2, 3 });
 
@@ -488,6 +492,26 @@ TEST_F(MeshReaders, GltfPartsCarryTheirMaterials)
   EXPECT_EQ(Parts(result.Mesh), (std::vector<int>{ 0, 1, 2 }));
   EXPECT_EQ(MaterialNames(result.Mesh), (std::vector<std::string>{ "red", "blue", "" }));
   EXPECT_EQ(MaterialIndices(result.Mesh), (std::vector<int>{ 1, 0, -1 }));
+  // The lecture's coefficients (shadelabGLTFMaterial.h): red has the
+  // specification's defaults (white, metallic 1, roughness 1); blue
+  // kd = B (1 - m), ka = kd, ks = 0.04 (1 - m) + B m, ns = 2/r^4 - 2.
+  const std::vector<std::array<double, 3>> ka{ { 0, 0, 0 }, { 0.15, 0.3, 0.75 }, { 0, 0, 0 } },
+    kd = ka, ks{ { 1, 1, 1 }, { 0.08, 0.13, 0.28 }, { 0, 0, 0 } };
+  const std::vector<double> ns{ 0, 30, 0 };
+  vtkFieldData* field = result.Mesh->GetFieldData();
+  for (vtkIdType part = 0; part < 3; ++part)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_FLOAT_EQ(
+        field->GetArray(shadelab::PartKaArrayName)->GetComponent(part, c), ka[part][c]);
+      EXPECT_FLOAT_EQ(
+        field->GetArray(shadelab::PartKdArrayName)->GetComponent(part, c), kd[part][c]);
+      EXPECT_FLOAT_EQ(
+        field->GetArray(shadelab::PartKsArrayName)->GetComponent(part, c), ks[part][c]);
+    }
+    EXPECT_FLOAT_EQ(field->GetArray(shadelab::PartNsArrayName)->GetComponent(part, 0), ns[part]);
+  }
 }
 
 TEST_F(MeshReaders, GltfSkipsPointsAndLinesAndPartialNormalsWithAWarning)

@@ -1,6 +1,9 @@
 // The mesh readers: every test mesh (tests/data/meshes), small hand-made files of each format
 // and form, and bad input of every kind (one-line error, no partial mesh).
 #include "mesh_reader_fixture.h"
+#include "shadelabMeshReadError.h"
+#include "shadelabMtlParser.h"
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYReader.h"
@@ -24,6 +27,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <gtest/gtest.h>
@@ -327,6 +331,49 @@ TEST_F(MeshReaders, PlyWithoutAllThreeNormalComponentsHasNoNormals)
   EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
 }
 
+// Vertex colours: integers as a fraction of their type's largest value,
+// floats as they are, alpha 1 when absent; without all of red, green and
+// blue no colours.
+TEST_F(MeshReaders, PlyVertexColorsAreFractionsOfTheirTypesLargestValue)
+{
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string xyz = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                          "property float y\nproperty float z\n";
+  struct Case
+  {
+    std::string Properties, Values;
+    std::array<float, 4> First; // the first vertex's colour
+  };
+  const std::vector<Case> cases{
+    { "property uchar red\nproperty uchar green\nproperty uchar blue\n", "255 51 0",
+      { 1, 0.2f, 0, 1 } },
+    { "property ushort red\nproperty ushort green\nproperty ushort blue\nproperty ushort alpha\n",
+      "65535 0 13107 32768", { 1, 0, 0.2f, static_cast<float>(32768 / 65535.0) } },
+    { "property float red\nproperty float green\nproperty float blue\n", "0.25 2 0.5",
+      { 0.25f, 2, 0.5f, 1 } },
+  };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(c.Properties);
+    const ReadResult result = Read(this->Write("colors.ply",
+      xyz + c.Properties + faces + "0 0 0 " + c.Values + "\n1 0 0 " + c.Values + "\n0 1 0 " +
+        c.Values + "\n3 0 1 2\n"));
+    ASSERT_TRUE(result.Ok) << result.Error;
+    vtkDataArray* colors = result.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName);
+    ASSERT_NE(colors, nullptr);
+    ASSERT_EQ(colors->GetNumberOfComponents(), 4);
+    for (int k = 0; k < 4; ++k)
+    {
+      EXPECT_FLOAT_EQ(colors->GetComponent(0, k), c.First[k]) << "component " << k;
+    }
+  }
+  const ReadResult partial = Read(this->Write("partial.ply",
+    xyz + "property uchar red\nproperty uchar green\n" + faces +
+      "0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n3 0 1 2\n"));
+  ASSERT_TRUE(partial.Ok) << partial.Error;
+  EXPECT_EQ(partial.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName), nullptr);
+}
+
 TEST_F(MeshReaders, PlyStripsSeparatedByMinusOneAndJoinTrianglesDropped)
 {
   // Two squares as two strips: separated by -1 in the first list, joined in
@@ -416,6 +463,112 @@ TEST_F(MeshReaders, ObjVertexUsedWithTwoNormalsIsSplit)
   EXPECT_EQ(p[0] + p[1] + p[2], 0.0); // the copy of vertex 1
   result.Mesh->GetPoint(5, p);
   EXPECT_EQ(p[0], 1.0); // the copy of vertex 2
+}
+
+// usemtl: a part per material name in the order of first use, the faces
+// before the first in a part of their own named "".
+TEST_F(MeshReaders, ObjMaterialsMakeParts)
+{
+  const ReadResult result = Read(this->Write("parts.obj",
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+    "f 1 2 3\nusemtl red\nf 1 3 4\nusemtl blue # a comment\nf 2 5 3\nusemtl red\nf 4 3 1\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ExpectTriangleMesh(result.Mesh);
+  vtkDataArray* parts = result.Mesh->GetCellData()->GetArray(shadelab::PartArrayName);
+  ASSERT_NE(parts, nullptr);
+  ASSERT_EQ(parts->GetNumberOfTuples(), 4);
+  for (vtkIdType i = 0; i < 4; ++i)
+  {
+    EXPECT_EQ(parts->GetComponent(i, 0), (std::array<int, 4>{ 0, 1, 2, 1 })[i]) << i;
+  }
+  auto* names = vtkStringArray::SafeDownCast(
+    result.Mesh->GetFieldData()->GetAbstractArray(shadelab::PartMaterialsArrayName));
+  auto* indices = vtkIntArray::SafeDownCast(
+    result.Mesh->GetFieldData()->GetArray(shadelab::PartMaterialIndicesArrayName));
+  ASSERT_TRUE(names && indices);
+  ASSERT_EQ(names->GetNumberOfValues(), 3);
+  EXPECT_EQ(names->GetValue(0), "");
+  EXPECT_EQ(names->GetValue(1), "red");
+  EXPECT_EQ(names->GetValue(2), "blue");
+  for (vtkIdType part = 0; part < 3; ++part)
+  {
+    EXPECT_EQ(indices->GetValue(part), -1) << part; // no mtllib: no material defined
+  }
+
+  const ReadResult plain = Read(this->Write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_TRUE(plain.Ok) << plain.Error;
+  EXPECT_EQ(plain.Mesh->GetCellData()->GetArray(shadelab::PartArrayName), nullptr);
+}
+
+// mtllib: the parts' materials from the libraries beside the OBJ; one
+// that is missing is a warning, a name they do not define has index -1.
+TEST_F(MeshReaders, ObjMaterialLibrariesGiveThePartsTheirMaterials)
+{
+  this->Write("lib.mtl",
+    "# a library\nnewmtl green\nKd 0 1 0\n\nnewmtl red\nKa 0.1\n"
+    "Kd 1 0 0 # red\nKs 0.5 0.25 0.125\nNs 20\nillum 2\nmap_Kd red.png\n");
+  const ReadResult result = Read(this->Write("lib.obj",
+    "mtllib lib.mtl missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+    "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  ASSERT_EQ(result.Warnings.size(), 1u);
+  EXPECT_NE(
+    result.Warnings[0].find("material library 'missing.mtl': cannot open"), std::string::npos)
+    << result.Warnings[0];
+  vtkFieldData* field = result.Mesh->GetFieldData();
+  auto* indices =
+    vtkIntArray::SafeDownCast(field->GetArray(shadelab::PartMaterialIndicesArrayName));
+  ASSERT_NE(indices, nullptr);
+  EXPECT_EQ(indices->GetValue(0), 1);  // red, the library's second
+  EXPECT_EQ(indices->GetValue(1), -1); // blue, defined nowhere
+  const auto tuple = [&](const char* name, vtkIdType part)
+  {
+    vtkDataArray* array = field->GetArray(name);
+    std::array<double, 3> v{};
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      v[c] = array->GetComponent(part, c);
+    }
+    return v;
+  };
+  EXPECT_EQ(tuple(shadelab::PartKaArrayName, 0), (std::array<double, 3>{ 0.1f, 0.1f, 0.1f }));
+  EXPECT_EQ(tuple(shadelab::PartKdArrayName, 0), (std::array<double, 3>{ 1, 0, 0 }));
+  EXPECT_EQ(tuple(shadelab::PartKsArrayName, 0), (std::array<double, 3>{ 0.5, 0.25, 0.125 }));
+  EXPECT_EQ(tuple(shadelab::PartNsArrayName, 0)[0], 20);
+  EXPECT_EQ(tuple(shadelab::PartKdArrayName, 1), (std::array<double, 3>{ 0, 0, 0 }));
+}
+
+TEST_F(MeshReaders, MtlCoefficientsDefaultsAndMistakes)
+{
+  const auto materials = shadelab::ParseMtl("newmtl a\nKd 0.5\nTr 0.25\nnewmtl b\nd 0.5\n");
+  ASSERT_EQ(materials.size(), 2u);
+  EXPECT_EQ(materials[0].Name, "a");
+  EXPECT_EQ(materials[0].Kd, (shadelab::Rgb{ 0.5, 0.5, 0.5 }));
+  EXPECT_EQ(materials[0].Ka, (shadelab::Rgb{ 0, 0, 0 }));
+  EXPECT_EQ(materials[0].Ns, 0);
+  EXPECT_EQ(materials[0].Translucency, 0.75);
+  EXPECT_EQ(materials[1].Translucency, 0.5);
+  const std::vector<std::pair<std::string, std::string>> mistakes{
+    { "Kd 1 1 1\n", "line 1: Kd before any newmtl" },
+    { "newmtl\n", "line 1: newmtl without a material name" },
+    { "newmtl a\nKd 1 x 1\n", "line 2: malformed Kd 'x'" },
+    { "newmtl a\nKd 1 1\n", "line 2: missing Kd" },
+    { "newmtl a\nKs 1 1 1 1\n", "line 2: unexpected '1' after Ks" },
+    { "newmtl a\nNs -1\n", "line 2: negative Ns" },
+    { "newmtl a\nKa nan\n", "line 2: non-finite Ka" },
+  };
+  for (const auto& [text, message] : mistakes)
+  {
+    try
+    {
+      shadelab::ParseMtl(text);
+      ADD_FAILURE() << "no error for " << text;
+    }
+    catch (const shadelab::MeshReadError& e)
+    {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  }
 }
 
 TEST_F(MeshReaders, ObjIgnoresWhatItDoesNotRender)
@@ -679,6 +832,11 @@ TEST_F(MeshReaders, BadObj)
   this->ExpectError(
     "inf.obj", "v 0 0 0\nv 0 -inf 0\nv 1 1 0\nf 1 2 3\n", { "infinite coordinate in vertex 2" });
   this->ExpectError("normalnan.obj", square + "vn 0 nan 1\nf 1//1 2//1 3//1\n", { "NaN normal" });
+  this->ExpectError(
+    "usemtl.obj", square + "usemtl\n", { "line 4", "usemtl without a material name" });
+  this->Write("bad.mtl", "newmtl a\nKd 1 0,5 0\n");
+  this->ExpectError("badmtl.obj", "mtllib bad.mtl\n" + square + "usemtl a\nf 1 2 3\n",
+    { "material library 'bad.mtl' line 2: malformed Kd '0,5'" });
   this->ExpectError("empty.obj", "", { "no triangles" });
   this->ExpectError("lines.obj", square + "l 1 2 3\np 1\n", { "no triangles" });
   this->ExpectError("binary.obj",

@@ -20,6 +20,7 @@
 
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 class vtkActor;
 class vtkCallbackCommand;
@@ -44,6 +45,26 @@ public:
    * and number SetIllumination gave (a light that follows the camera).
    */
   void SetLightPlacement(const std::vector<shadelab::Light>& lights);
+
+  ///@{
+  /**
+   * The scene part by part, for wrappers such as Python that cannot pass
+   * SetIllumination's C++ types: each call changes one part and keeps the
+   * others (a new vtkShadelabShading: phong, blinn, black material, no Ia, no
+   * lights). The rule, model and material are named as on the command line
+   * (the material from the lecture's table); an unknown name returns false
+   * and changes nothing. Lights are white, in world coordinates. Call Attach
+   * after the last change.
+   */
+  bool SetShadingRuleByName(const char* name);
+  bool SetReflectionModelByName(const char* name);
+  bool SetMaterialByName(const char* name);
+  void SetAmbientIntensity(double red, double green, double blue);
+  void AddPointLight(double x, double y, double z);
+  /** A light shining along (x, y, z). */
+  void AddDirectionalLight(double x, double y, double z);
+  void RemoveAllLights();
+  ///@}
 
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
@@ -75,13 +96,16 @@ private:
   void operator=(const vtkShadelabShading&) = delete;
 
   void SetUniforms(vtkShaderProgram* program);
+  void AddLight(const shadelab::Light& light);
 
   shadelab::ShaderFeatures Features;
   shadelab::Material Surface;
   shadelab::Rgb Ambient{};
   std::vector<shadelab::Light> Lights;
-  vtkActor* Actor = nullptr;       // not owned: the actor owns its mapper, which holds the observer
-  vtkRenderer* Renderer = nullptr; // not owned
+  // Not owned, and either may go first (a Python script drops its actor
+  // before its shading): weak, so that neither is used once gone.
+  vtkWeakPointer<vtkActor> Actor; // its mapper holds the observer
+  vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkCallbackCommand> Observer;
 };
 

@@ -21,6 +21,7 @@
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
+#include <vtkWrappingHints.h>
 
 class vtkActor;
 class vtkCallbackCommand;
@@ -75,9 +76,11 @@ public:
   /**
    * The mesh as the rule reads it: flat gets its triangles exploded with face
    * normals (vtkShadelabFlatTriangles), none and flat lose the point normals
-   * they do not use; gouraud and phong keep the mesh as it is.
+   * they do not use; gouraud and phong keep the mesh as it is. Not wrapped
+   * (VTK 9.1's Python cannot return a vtkSmartPointer): Python puts
+   * vtkShadelabFlatTriangles in its pipeline for flat.
    */
-  vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
+  VTK_WRAPEXCLUDE vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
 
   /**
    * Installs the replacements on actor; renderer gives the camera and lights.

@@ -38,9 +38,9 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
+# dpkg-shlibdeps finds our own libraries in the package through the
+# binaries' relative run paths, and leaves them out of Depends.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# Our own libraries lie in the package: dpkg-shlibdeps looks for them there.
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 if(SHADELAB_PYTHON)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3, python3-vtk9")
 endif()

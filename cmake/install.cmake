@@ -12,9 +12,10 @@ install(FILES data/materials.json data/scene.schema.json data/spot.obj
 install(DIRECTORY data/scenes DESTINATION "${SHADELAB_DATA_DIR}" COMPONENT runtime)
 
 # The CMake package: find_package(shadelab) gives shadelab::filters.
+# vtk_module_build installs the targets (shadelab-targets.cmake) and their
+# VTK module properties (shadelab-vtk-module-properties.cmake, which
+# vtk_module_autoinit and VTK's wrapping read); the config file loads both.
 set(cmake_dir "${CMAKE_INSTALL_LIBDIR}/cmake/shadelab")
-install(EXPORT shadelab NAMESPACE shadelab:: FILE shadelabTargets.cmake
-  DESTINATION "${cmake_dir}" COMPONENT development)
 # The VTK modules the filters link (filters/vtk.module), for find_dependency.
 set(SHADELAB_FILTERS_VTK_COMPONENTS CommonCore CommonDataModel CommonExecutionModel FiltersCore
   FiltersGeneral IOCore IOLegacy IOXML RenderingCore RenderingOpenGL2)

@@ -14,7 +14,7 @@ deb=$(ls "$work"/*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 for package in "$@"; do
-  grep -qE "(^|, )$package[ ,(]|(^|, )$package\$" <<<"$depends" || { echo "Depends lacks $package"; exit 1; }
+  grep -qE "(^|, )${package}[ ,(]|(^|, )${package}\$" <<<"$depends" || { echo "Depends lacks $package"; exit 1; }
 done
 dpkg-deb -x "$deb" "$work/root"
 "$here/installed_render.sh" "$work/root/usr/bin/shadelab" "$reference" "$mesh" "$work/render"

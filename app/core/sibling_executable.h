@@ -1,4 +1,6 @@
-// shadelab's helper executables sit beside the one running.
+// shadelab's helper executables (shadelab-image-writer, shadelab-view): in
+// the build tree beside the one running; installed, in the helper folder
+// (libexec/shadelab, GNU's place for programs that only programs run).
 #ifndef shadelab_sibling_executable_h
 #define shadelab_sibling_executable_h
 
@@ -6,7 +8,11 @@
 
 namespace shadelab
 {
-/** The path of the executable `name` in the running executable's folder. */
+/**
+ * The path of the helper executable `name`: in the installed helper folder
+ * relative to the running executable's folder if it is there, else in that
+ * folder itself.
+ */
 std::string SiblingExecutable(const std::string& name);
 }
 

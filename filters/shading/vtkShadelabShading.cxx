@@ -61,6 +61,73 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   this->Modified();
 }
 
+bool vtkShadelabShading::SetShadingRuleByName(const char* name)
+{
+  const auto rule = FromName<Shading>(name ? name : "");
+  if (rule)
+  {
+    this->SetIllumination(*rule, this->Features.Model, this->Surface, this->Ambient, this->Lights);
+  }
+  return rule.has_value();
+}
+
+bool vtkShadelabShading::SetReflectionModelByName(const char* name)
+{
+  const auto model = FromName<Reflection>(name ? name : "");
+  if (model)
+  {
+    this->SetIllumination(this->Features.Rule, *model, this->Surface, this->Ambient, this->Lights);
+  }
+  return model.has_value();
+}
+
+bool vtkShadelabShading::SetMaterialByName(const char* name)
+{
+  const Material* material = FindLectureMaterial(name ? name : "");
+  if (material)
+  {
+    this->SetIllumination(
+      this->Features.Rule, this->Features.Model, *material, this->Ambient, this->Lights);
+  }
+  return material != nullptr;
+}
+
+void vtkShadelabShading::SetAmbientIntensity(double red, double green, double blue)
+{
+  this->SetIllumination(this->Features.Rule, this->Features.Model, this->Surface,
+    Rgb{ red, green, blue }, this->Lights);
+}
+
+void vtkShadelabShading::AddPointLight(double x, double y, double z)
+{
+  Light light;
+  light.Kind = LightKind::Point;
+  light.Position = { x, y, z };
+  this->AddLight(light);
+}
+
+void vtkShadelabShading::AddDirectionalLight(double x, double y, double z)
+{
+  Light light;
+  light.Kind = LightKind::Directional;
+  light.Direction = { x, y, z };
+  this->AddLight(light);
+}
+
+void vtkShadelabShading::AddLight(const Light& light)
+{
+  auto lights = this->Lights;
+  lights.push_back(light);
+  this->SetIllumination(
+    this->Features.Rule, this->Features.Model, this->Surface, this->Ambient, lights);
+}
+
+void vtkShadelabShading::RemoveAllLights()
+{
+  this->SetIllumination(
+    this->Features.Rule, this->Features.Model, this->Surface, this->Ambient, {});
+}
+
 void vtkShadelabShading::SetLightPlacement(const std::vector<Light>& lights)
 {
   const bool sameKinds = lights.size() == this->Lights.size() &&
@@ -157,6 +224,10 @@ void vtkShadelabShading::Attach(
 
 void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
 {
+  if (!this->Actor || !this->Renderer)
+  {
+    return;
+  }
   // World to view coordinates, in double.
   vtkMatrix4x4* view = this->Renderer->GetActiveCamera()->GetModelViewTransformMatrix();
   double rotation[3][3];

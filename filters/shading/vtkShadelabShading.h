@@ -20,6 +20,8 @@
 
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
+#include <vtkWrappingHints.h>
 
 class vtkActor;
 class vtkCallbackCommand;
@@ -51,6 +53,26 @@ public:
    */
   void SetVertexKd(bool fromColors);
 
+  ///@{
+  /**
+   * The scene part by part, for wrappers such as Python that cannot pass
+   * SetIllumination's C++ types: each call changes one part and keeps the
+   * others (a new vtkShadelabShading: phong, blinn, black material, no Ia, no
+   * lights). The rule, model and material are named as on the command line
+   * (the material from the lecture's table); an unknown name returns false
+   * and changes nothing. Lights are white, in world coordinates. Call Attach
+   * after the last change.
+   */
+  bool SetShadingRuleByName(const char* name);
+  bool SetReflectionModelByName(const char* name);
+  bool SetMaterialByName(const char* name);
+  void SetAmbientIntensity(double red, double green, double blue);
+  void AddPointLight(double x, double y, double z);
+  /** A light shining along (x, y, z). */
+  void AddDirectionalLight(double x, double y, double z);
+  void RemoveAllLights();
+  ///@}
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 
@@ -60,9 +82,11 @@ public:
   /**
    * The mesh as the rule reads it: flat gets its triangles exploded with face
    * normals (vtkShadelabFlatTriangles), none and flat lose the point normals
-   * they do not use; gouraud and phong keep the mesh as it is.
+   * they do not use; gouraud and phong keep the mesh as it is. Not wrapped
+   * (VTK 9.1's Python cannot return a vtkSmartPointer): Python puts
+   * vtkShadelabFlatTriangles in its pipeline for flat.
    */
-  vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
+  VTK_WRAPEXCLUDE vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
 
   /**
    * Installs the replacements on actor; renderer gives the camera and lights.
@@ -81,13 +105,16 @@ private:
   void operator=(const vtkShadelabShading&) = delete;
 
   void SetUniforms(vtkShaderProgram* program);
+  void AddLight(const shadelab::Light& light);
 
   shadelab::ShaderFeatures Features;
   shadelab::Material Surface;
   shadelab::Rgb Ambient{};
   std::vector<shadelab::Light> Lights;
-  vtkActor* Actor = nullptr;       // not owned: the actor owns its mapper, which holds the observer
-  vtkRenderer* Renderer = nullptr; // not owned
+  // Not owned, and either may go first (a Python script drops its actor
+  // before its shading): weak, so that neither is used once gone.
+  vtkWeakPointer<vtkActor> Actor; // its mapper holds the observer
+  vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkCallbackCommand> Observer;
 };
 

@@ -140,7 +140,7 @@ TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
   std::filesystem::remove_all(dir / "out");
   // The options that pick the shots and silence the run are not in the
   // pictures' command line, so each shard writes what the whole run wrote.
-  for (const std::string& shard : { "0/2", "1/2" })
+  for (const char* shard : { "0/2", "1/2" })
   {
     std::vector<std::string> args = whole;
     args.insert(args.end(), { "--shard", shard, "--skip-existing", "-q", "--verbose" });

@@ -1,11 +1,13 @@
-// The desktop inspector: `shadelab view` in a window of VTK's native backend
-// (shadelab-view, without the OSMesa linkage). The mesh is shown under the
-// lecture's shaders and every setting changes live with a key; the
-// comparison layout shows compare's panels with one camera. Its parts:
-// inspector.cxx starts it and follows the camera, inspector_panels.cxx lays
-// out the panels, inspector_overlay.cxx draws the HUD and the help,
-// inspector_keys.cxx acts on the keys, inspector_pictures.cxx reads the
-// window back (screenshots, the difference cell).
+// The desktop inspector's picture: `shadelab view`'s VTK side, drawn into
+// the Qt window's 3D view (desktop/inspector_window.h) by VTK's native
+// backend (shadelab-view, without the OSMesa linkage). The mesh is shown
+// under the lecture's shaders and every setting changes live, by a key or
+// the control panel, both through ViewState; the comparison layout shows
+// compare's panels with one camera. Its parts: inspector.cxx starts it and
+// follows the camera, inspector_panels.cxx lays out the panels,
+// inspector_overlay.cxx draws the HUD and the help, inspector_keys.cxx acts
+// on the keys, inspector_pictures.cxx reads the window back (screenshots,
+// the difference cell).
 #ifndef shadelab_inspector_h
 #define shadelab_inspector_h
 
@@ -20,16 +22,17 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -47,22 +50,51 @@ enum class LightMode
   Spot           // at the camera, along the view direction
 };
 
+/** The mode as the HUD and the control panel name it. */
+const char* Describe(LightMode mode);
+
 /** value with `digits` decimals, as the HUD and the drag's timing print it. */
 std::string Fixed(double value, int digits);
+
+// What the picture shows: the keys and the control panel change it.
+struct ViewState
+{
+  SceneOptions Scene; // the command line's, then as changed
+  LightMode Lights = LightMode::PointAtCamera;
+  bool Ambient = true, Diffuse = true, Specular = true;
+  bool Glyphs = false, Edges = false, Compare = false, Help = false;
+};
 
 class Inspector
 {
 public:
-  Inspector(const ViewOptions& options, const std::string& commandLine)
-    : Options(options)
-    , CommandLine(commandLine)
-    , GlyphsOn(options.Scene.NormalGlyphs)
-    , EdgesOn(options.Scene.Edges)
-    , CompareOn(options.Compare)
-  {
-  }
+  Inspector(const ViewOptions& options, const std::string& commandLine);
 
-  int Run(void* display);
+  /** The mesh, the comparison's plan and the camera, checked before any
+   * window opens; 0, or the exit code of what is wrong (reported). */
+  int Load();
+  /** The render window that the Qt widget shows; Start once it does. */
+  vtkGenericOpenGLRenderWindow* GetWindow() { return this->Window; }
+  void Start();
+  /** --measure-drag: times a simulated drag and prints it. */
+  int MeasureDrag();
+
+  const ViewState& GetState() const { return this->State; }
+  /** Shows `state`, and tells Changed. */
+  void SetState(const ViewState& state);
+  /** The mesh has normals of its own: the first of the normals' choices. */
+  bool HasFileNormals() const { return this->FileNormals; }
+  /** The command line gave lights: LightMode::Given is a choice. */
+  bool HasGivenLights() const { return !this->Options.Scene.Lights.empty(); }
+
+  /** Acts on `key` (as Qt names it: "1", "Escape", ...) if the key table
+   * has it; whether it does. */
+  bool OnKey(const std::string& key);
+  /** The key table's `action` (`which`: the key's place in its row). */
+  void Do(ViewAction action, int which = 0);
+
+  std::function<void()> Changed; // after a key or SetState changed the state
+  std::function<void()> Quit;    // the quit key
 
 private:
   // A panel of the window: its renderer, and per rule and mesh the actor
@@ -82,14 +114,13 @@ private:
 
   // inspector.cxx: start-up, the camera and the lights that follow it, the
   // drag's timing.
-  int Load();
-  void SetUpWindow(void* display);
+  void SetUpWindow();
   void ObserveFrames();
   void ObserveDrags();
   std::vector<Light> CameraLights(const SceneOptions& scene) const;
   void FollowCamera();
   void ResetCamera();
-  int MeasureDrag();
+  void Show(bool layout);
 
   // inspector_panels.cxx: the panels, one or compare's grid.
   void Apply();
@@ -103,7 +134,6 @@ private:
   void UpdateHud();
 
   // inspector_keys.cxx: the key table's actions.
-  void OnKey(const std::string& key);
   bool Act(ViewAction action, int which);
   void StepMaterial(int step);
   void NextLights();
@@ -114,11 +144,10 @@ private:
   void RefreshDifference();
   void Screenshot();
 
-  ViewOptions Options; // Options.Scene: the command line's, then as the keys change it
+  const ViewOptions Options; // the command line's
   std::string CommandLine;
-  LightMode Lights = LightMode::PointAtCamera;
-  bool Ambient = true, Diffuse = true, Specular = true;
-  bool GlyphsOn = false, EdgesOn = false, CompareOn = false, HelpOn = false, Dragging = false;
+  ViewState State;
+  bool Dragging = false;
   bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
   std::string Problem;      // the last thing that went wrong, shown in the HUD
   MeshCache Meshes;
@@ -126,8 +155,8 @@ private:
   vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)
   vtkIdType Triangles = 0;
 
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkGenericOpenGLRenderWindow> Window;
+  vtkRenderWindowInteractor* Interactor = nullptr; // the Qt widget's
   vtkNew<vtkShadelabInteractorStyle> Style;
   vtkNew<vtkCamera> Camera;     // every panel's: linked cameras
   vtkNew<vtkRenderer> Backdrop; // the whole window, beneath the panels

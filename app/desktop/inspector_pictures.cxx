@@ -132,7 +132,7 @@ void Inspector::Screenshot()
     this->Writer = std::make_unique<ImageWriterProcess>();
   }
   const std::string error = this->Writer->Write(path, image, PixelType::UInt8,
-    DescribePicture(this->CommandLine, this->Options.Scene, this->Camera));
+    DescribePicture(this->CommandLine, this->State.Scene, this->Camera));
   if (!error.empty())
   {
     ReportError(path, error);

@@ -208,6 +208,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   };
   button("Reset camera", ViewAction::ResetCamera);
   button("Screenshot", ViewAction::Screenshot);
+  button("Copy command", ViewAction::CopyCommand);
   column->addStretch(1);
   this->Show();
 }

@@ -93,8 +93,16 @@ public:
   /** The key table's `action` (`which`: the key's place in its row). */
   void Do(ViewAction action, int which = 0);
 
-  std::function<void()> Changed; // after a key or SetState changed the state
-  std::function<void()> Quit;    // the quit key
+  /** The scene `render` takes to make the picture the view shows now:
+   * the camera as it is, the lights that follow it and the terms turned
+   * off written out (the single panel's: the comparison layout aside). */
+  SceneOptions ShownScene() const;
+  /** ShownScene as a `shadelab render` command line, quoted for a shell. */
+  std::string RenderCommand() const;
+
+  std::function<void()> Changed;                // after a key or SetState changed the state
+  std::function<void()> Quit;                   // the quit key
+  std::function<void(const std::string&)> Copy; // text for the clipboard
 
 private:
   // A panel of the window: its renderer, and per rule and mesh the actor
@@ -138,6 +146,9 @@ private:
   void StepMaterial(int step);
   void NextLights();
   void NextWeighting();
+
+  // inspector_command.cxx: the picture as a command.
+  void CopyCommand();
 
   // inspector_pictures.cxx: the window's pixels read back.
   FloatImage GrabWindow();

@@ -95,6 +95,9 @@ bool Inspector::Act(ViewAction action, int which)
     case ViewAction::Screenshot:
       this->Screenshot();
       return false;
+    case ViewAction::CopyCommand:
+      this->CopyCommand();
+      return false;
     case ViewAction::Help:
       this->State.Help = !this->State.Help;
       return true;

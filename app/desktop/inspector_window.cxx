@@ -9,6 +9,7 @@
 
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QClipboard>
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -39,6 +40,8 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
   inspector.Changed = [this] { this->Panel->Show(); };
   inspector.Quit = [this] { this->close(); };
+  inspector.Copy = [](const std::string& text)
+  { QApplication::clipboard()->setText(QString::fromStdString(text)); };
   qApp->installEventFilter(this);
 }
 

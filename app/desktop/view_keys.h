@@ -32,6 +32,7 @@ enum class ViewAction
   Compare,     // the comparison layout on / off
   ResetCamera, // the command line's camera
   Screenshot,  // into the current folder
+  CopyCommand, // the render command of the picture: clipboard and stdout
   Help,        // the overlay on / off
   Quit
 };
@@ -56,6 +57,8 @@ inline constexpr ViewKey ViewKeys[] = {
   { "c", "comparison layout (as compare's options), linked cameras", ViewAction::Compare },
   { "r", "reset the camera", ViewAction::ResetCamera },
   { "p", "screenshot (its name is printed)", ViewAction::Screenshot },
+  { "y", "copy the render command that makes this picture (and print it)",
+    ViewAction::CopyCommand },
   { "h", "this help", ViewAction::Help },
   { "q Esc", "quit", ViewAction::Quit },
 };

@@ -15,6 +15,7 @@ ColorEdit::ColorEdit(const QString& name, QWidget* parent)
   , Name(name)
   , Swatch(new QPushButton(this))
 {
+  this->setObjectName(name);
   auto* row = new QHBoxLayout(this);
   row->setContentsMargins(0, 0, 0, 0);
   this->Swatch->setFixedWidth(28);
@@ -39,9 +40,12 @@ ColorEdit::ColorEdit(const QString& name, QWidget* parent)
         }
       });
   }
-  this->Numbers[0]->setToolTip(name + " red");
-  this->Numbers[1]->setToolTip(name + " green");
-  this->Numbers[2]->setToolTip(name + " blue");
+  const char* channels[] = { " red", " green", " blue" };
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Numbers[c]->setObjectName(name + channels[c]);
+    this->Numbers[c]->setToolTip(name + channels[c]);
+  }
 }
 
 void ColorEdit::SetColor(const Rgb& color)

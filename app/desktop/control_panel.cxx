@@ -57,6 +57,14 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , NormalsChoice(new QComboBox(this))
   , FeatureAngle(new QDoubleSpinBox(this))
 {
+  // Named for the tests (findChild).
+  this->Rule->setObjectName("rule");
+  this->Model->setObjectName("reflection");
+  this->MaterialRow->setObjectName("material");
+  this->Ns->setObjectName("ns");
+  this->LightChoice->setObjectName("lights");
+  this->NormalsChoice->setObjectName("normals");
+  this->FeatureAngle->setObjectName("feature angle");
   auto* column = new QVBoxLayout(this);
   const auto group = [this, column](const QString& title)
   {

@@ -16,6 +16,8 @@ SceneOptions Inspector::ShownScene() const
   const SceneOptions defaults;
   SceneOptions s = this->State.Scene;
   ShowTerms(s, this->State.Ambient, this->State.Diffuse, this->State.Specular);
+  s.Edges = this->State.Edges;
+  s.NormalGlyphs = this->State.Glyphs;
   // The lecture's default light at the camera is render's default too.
   s.Lights =
     this->State.Lights == LightMode::PointAtCamera ? std::vector<Light>{} : this->CameraLights(s);

@@ -47,6 +47,7 @@ ShininessEdit::ShininessEdit(QWidget* parent)
   this->Number->setDecimals(3);
   this->Number->setKeyboardTracking(false);
   this->Number->setToolTip("ns");
+  this->Number->setObjectName("ns number");
   row->addWidget(this->Slider, 1);
   row->addWidget(this->Number);
   QObject::connect(this->Slider, &QSlider::valueChanged, this,

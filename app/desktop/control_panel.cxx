@@ -7,9 +7,10 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -206,17 +207,29 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   show->addRow(this->Toggle("comparison layout", &ViewState::Compare));
   show->addRow(this->Toggle("key help", &ViewState::Help));
 
-  auto* buttons = new QHBoxLayout();
+  auto* buttons = new QGridLayout();
   column->addLayout(buttons);
   const auto button = [this, buttons](const QString& text, ViewAction action)
   {
     auto* b = new QPushButton(text, this);
-    buttons->addWidget(b);
+    buttons->addWidget(b, buttons->count() / 2, buttons->count() % 2);
     QObject::connect(b, &QPushButton::clicked, this, [this, action] { this->Engine.Do(action); });
   };
   button("Reset camera", ViewAction::ResetCamera);
   button("Screenshot", ViewAction::Screenshot);
   button("Copy command", ViewAction::CopyCommand);
+  auto* save = new QPushButton("Save scene...", this);
+  buttons->addWidget(save, buttons->count() / 2, buttons->count() % 2);
+  QObject::connect(save, &QPushButton::clicked, this,
+    [this]
+    {
+      const QString path =
+        QFileDialog::getSaveFileName(this, "Save scene", "scene.json", "Scene files (*.json)");
+      if (!path.isEmpty())
+      {
+        this->Engine.SaveScene(path.toStdString());
+      }
+    });
   column->addStretch(1);
   this->Show();
 }

@@ -53,6 +53,9 @@ enum class LightMode
 /** The mode as the HUD and the control panel name it. */
 const char* Describe(LightMode mode);
 
+/** shadelab-MESHSTEM-001.EXTENSION, or the first number not taken in the current folder. */
+std::string NumberedName(const std::string& mesh, const std::string& extension);
+
 /** value with `digits` decimals, as the HUD and the drag's timing print it. */
 std::string Fixed(double value, int digits);
 
@@ -99,6 +102,9 @@ public:
   SceneOptions ShownScene() const;
   /** ShownScene as a `shadelab render` command line, quoted for a shell. */
   std::string RenderCommand() const;
+  /** ShownScene as a scene file at path (its output MESHSTEM.png); says
+   * where, or reports why not. */
+  void SaveScene(const std::string& path) const;
 
   std::function<void()> Changed;                // after a key or SetState changed the state
   std::function<void()> Quit;                   // the quit key

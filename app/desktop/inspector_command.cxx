@@ -1,10 +1,14 @@
-// The inspector's picture as the `shadelab render` command that makes it
-// headless, pixel for pixel (Copy command, key y).
+// The inspector's picture as the `shadelab render` command, or the scene
+// file, that makes it headless, pixel for pixel (Copy command, key y; Save
+// scene, key j).
 #include "desktop/inspector.h"
 
+#include "core/errors.h"
+#include "core/output_file.h"
 #include "core/scene_arguments.h"
 #include "image/metadata.h"
 #include "scene/comparison_panels.h"
+#include "scene/scene_file.h"
 
 #include <filesystem>
 #include <iostream>
@@ -45,11 +49,19 @@ SceneOptions Inspector::ShownScene() const
   return s;
 }
 
+namespace
+{
+// Where the command and the scene file render to: MESHSTEM.png.
+std::string PictureName(const SceneOptions& s)
+{
+  return std::filesystem::path(s.Mesh).stem().string() + ".png";
+}
+}
+
 std::string Inspector::RenderCommand() const
 {
   const SceneOptions s = this->ShownScene();
-  std::vector<std::string> words{ "shadelab", "render", s.Mesh, "-o",
-    std::filesystem::path(s.Mesh).stem().string() + ".png" };
+  std::vector<std::string> words{ "shadelab", "render", s.Mesh, "-o", PictureName(s) };
   const std::vector<std::string> options = SceneArguments(s);
   words.insert(words.end(), options.begin(), options.end());
   std::vector<const char*> argv;
@@ -68,5 +80,16 @@ void Inspector::CopyCommand()
   {
     this->Copy(command);
   }
+}
+
+void Inspector::SaveScene(const std::string& path) const
+{
+  const SceneOptions s = this->ShownScene();
+  if (const std::string error = WriteFile(path, WriteSceneText(s, PictureName(s))); !error.empty())
+  {
+    ReportError(path, error);
+    return;
+  }
+  std::cout << "shadelab: scene file " << std::filesystem::absolute(path).string() << std::endl;
 }
 }

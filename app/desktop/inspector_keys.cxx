@@ -98,6 +98,9 @@ bool Inspector::Act(ViewAction action, int which)
     case ViewAction::CopyCommand:
       this->CopyCommand();
       return false;
+    case ViewAction::SaveScene:
+      this->SaveScene(NumberedName(this->Options.Scene.Mesh, ".json"));
+      return false;
     case ViewAction::Help:
       this->State.Help = !this->State.Help;
       return true;

@@ -33,6 +33,7 @@ enum class ViewAction
   ResetCamera, // the command line's camera
   Screenshot,  // into the current folder
   CopyCommand, // the render command of the picture: clipboard and stdout
+  SaveScene,   // the scene file of the picture, into the current folder
   Help,        // the overlay on / off
   Quit
 };
@@ -59,6 +60,8 @@ inline constexpr ViewKey ViewKeys[] = {
   { "p", "screenshot (its name is printed)", ViewAction::Screenshot },
   { "y", "copy the render command that makes this picture (and print it)",
     ViewAction::CopyCommand },
+  { "j", "save the scene file that makes this picture (its name is printed)",
+    ViewAction::SaveScene },
   { "h", "this help", ViewAction::Help },
   { "q Esc", "quit", ViewAction::Quit },
 };

@@ -34,10 +34,11 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
 }
 
-// Copy command (key y): the printed `shadelab render` command, run
-// headless, makes the picture the window shows after the camera turned and
-// the rule, reflection, material, lights, a term and the normals changed.
-TEST(View, CopyCommandMakesThePictureTheViewShows)
+// Copy command (key y) and Save scene (key j): the printed `shadelab
+// render` command, and the scene file, rendered headless make the picture
+// the window shows after the camera turned and the rule, reflection,
+// material, lights, a term and the normals changed.
+TEST(View, CopyCommandAndSaveSceneMakeThePictureTheViewShows)
 {
   Viewer viewer({});
   ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
@@ -61,6 +62,17 @@ TEST(View, CopyCommandMakesThePictureTheViewShows)
   const Change change = Compare(shown, rendered, 1);
   EXPECT_LE(change.Largest, 1) << command;
   EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
+
+  viewer.Keys({ "j" });
+  const std::string scene = viewer.Await("shadelab: scene file ");
+  ASSERT_FALSE(scene.empty()) << viewer.Stderr();
+  TempDir sceneDir;
+  // Its output, spot.png, goes into the current folder.
+  ASSERT_EQ(shadelab_test::Run("cd " + sceneDir.path().string() + " && " + SHADELAB_BINARY +
+              " render --scene " + scene),
+    0)
+    << Slurp(scene);
+  EXPECT_LE(Compare(shown, ReadImage(sceneDir / "spot.png"), 1).Largest, 1) << Slurp(scene);
 }
 
 TEST(View, RuleKeysSwitchTheRule)
@@ -124,7 +136,8 @@ TEST(View, MaterialReflectionLightAndShininessKeysChangeThePicture)
 
 // Every key of the table (desktop/view_keys.h) is answered: from the start
 // each changes the picture. Not here: p and q (their own tests), r (a
-// camera that moved first: RResetsTheCamera), y (CopyCommandMakesThePicture). A term key turns its
+// camera that moved first: RResetsTheCamera), y and j
+// (CopyCommandAndSaveSceneMakeThePictureTheViewShows). A term key turns its
 // term back on after, lest the black mesh hide what the next key does.
 TEST(View, EveryKeyOfTheTableChangesThePicture)
 {
@@ -137,7 +150,8 @@ TEST(View, EveryKeyOfTheTableChangesThePicture)
   for (const shadelab::ViewKey& row : shadelab::ViewKeys)
   {
     if (row.Action == shadelab::ViewAction::Screenshot ||
-      row.Action == shadelab::ViewAction::CopyCommand || row.Action == shadelab::ViewAction::Quit ||
+      row.Action == shadelab::ViewAction::CopyCommand ||
+      row.Action == shadelab::ViewAction::SaveScene || row.Action == shadelab::ViewAction::Quit ||
       row.Action == shadelab::ViewAction::ResetCamera)
     {
       continue;

@@ -1,7 +1,8 @@
 // The inspector's control panel in process (Qt's QTest on an Xvfb of the
 // test's own, viewer.cxx): each control changes its own setting of the
 // picture and nothing else, as the picture's render command (Copy command)
-// says it; a key moves the controls that show what it changed.
+// says it; a key moves the controls that show what it changed; closing the
+// window ends it.
 #include "core/scene_arguments.h"
 #include "desktop/inspector_window.h"
 #include "viewer.h"
@@ -16,6 +17,7 @@
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QTimer>
 
 #include <gtest/gtest.h>
 
@@ -73,7 +75,7 @@ void Type(QAbstractSpinBox* box, const QString& text)
 }
 }
 
-TEST(Controls, EachChangesItsSettingAndNothingElseAndKeysMoveThem)
+TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
 {
   ViewOptions options;
   options.Scene.Mesh = TestMesh("spot.obj").string();
@@ -162,4 +164,10 @@ TEST(Controls, EachChangesItsSettingAndNothingElseAndKeysMoveThem)
   const double shininess = ns->value();
   inspector.OnKey("+");
   EXPECT_NEAR(ns->value(), shininess * 1.5, 1e-3);
+
+  // Closing the window (what a window manager's close button asks for)
+  // ends the event loop with 0.
+  QTimer::singleShot(0, &window, [&window] { window.close(); });
+  QTimer::singleShot(10000, &application, [] { QCoreApplication::exit(1); }); // still open
+  EXPECT_EQ(application.exec(), 0);
 }

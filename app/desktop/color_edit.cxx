@@ -1,19 +1,29 @@
 #include "desktop/color_edit.h"
 
+#include "desktop/triple_edit.h"
+
 #include <QColorDialog>
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QPushButton>
-#include <QSignalBlocker>
 
 #include <algorithm>
 
 namespace shadelab
 {
+namespace
+{
+// The colour shown for c: coefficients above 1 are allowed, as on the command line.
+QColor Shown(const Rgb& c)
+{
+  return QColor::fromRgbF(std::min(c[0], 1.0), std::min(c[1], 1.0), std::min(c[2], 1.0));
+}
+}
+
 ColorEdit::ColorEdit(const QString& name, QWidget* parent)
   : QWidget(parent)
   , Name(name)
   , Swatch(new QPushButton(this))
+  , Numbers(new TripleEdit(name, { "red", "green", "blue" }, 0, 10, this))
 {
   this->setObjectName(name);
   auto* row = new QHBoxLayout(this);
@@ -21,62 +31,32 @@ ColorEdit::ColorEdit(const QString& name, QWidget* parent)
   this->Swatch->setFixedWidth(28);
   this->Swatch->setToolTip("Pick " + name + " with a colour dialog");
   row->addWidget(this->Swatch);
+  row->addWidget(this->Numbers);
   QObject::connect(this->Swatch, &QPushButton::clicked, this, [this] { this->PickColor(); });
-  for (QDoubleSpinBox*& number : this->Numbers)
+  this->Numbers->Edited = [this](const Rgb& color)
   {
-    number = new QDoubleSpinBox(this);
-    number->setDecimals(6);  // as the lecture's table
-    number->setRange(0, 10); // coefficients above 1 are allowed, as on the command line
-    number->setSingleStep(0.05);
-    number->setKeyboardTracking(false); // a value once typed whole, not at each digit
-    row->addWidget(number);
-    QObject::connect(number, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-      [this]
-      {
-        this->PaintSwatch();
-        if (this->Edited)
-        {
-          this->Edited(this->Color());
-        }
-      });
-  }
-  const char* channels[] = { " red", " green", " blue" };
-  for (int c = 0; c < 3; ++c)
-  {
-    this->Numbers[c]->setObjectName(name + channels[c]);
-    this->Numbers[c]->setToolTip(name + channels[c]);
-  }
+    this->PaintSwatch();
+    if (this->Edited)
+    {
+      this->Edited(color);
+    }
+  };
 }
 
 void ColorEdit::SetColor(const Rgb& color)
 {
-  for (int c = 0; c < 3; ++c)
-  {
-    const QSignalBlocker quiet(this->Numbers[c]);
-    this->Numbers[c]->setValue(color[c]);
-  }
+  this->Numbers->SetValue(color);
   this->PaintSwatch();
-}
-
-Rgb ColorEdit::Color() const
-{
-  return { this->Numbers[0]->value(), this->Numbers[1]->value(), this->Numbers[2]->value() };
 }
 
 void ColorEdit::PaintSwatch()
 {
-  const Rgb c = this->Color();
-  const QColor shown =
-    QColor::fromRgbF(std::min(c[0], 1.0), std::min(c[1], 1.0), std::min(c[2], 1.0));
-  this->Swatch->setStyleSheet("background-color: " + shown.name());
+  this->Swatch->setStyleSheet("background-color: " + Shown(this->Numbers->Value()).name());
 }
 
 void ColorEdit::PickColor()
 {
-  const Rgb c = this->Color();
-  const QColor picked = QColorDialog::getColor(
-    QColor::fromRgbF(std::min(c[0], 1.0), std::min(c[1], 1.0), std::min(c[2], 1.0)), this,
-    this->Name);
+  const QColor picked = QColorDialog::getColor(Shown(this->Numbers->Value()), this, this->Name);
   if (!picked.isValid())
   {
     return; // cancelled
@@ -84,7 +64,7 @@ void ColorEdit::PickColor()
   this->SetColor({ picked.redF(), picked.greenF(), picked.blueF() });
   if (this->Edited)
   {
-    this->Edited(this->Color());
+    this->Edited(this->Numbers->Value());
   }
 }
 }

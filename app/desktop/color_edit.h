@@ -1,6 +1,6 @@
-// A colour of the lecture's model (ka, kd, ks, Ia) in the control panel: a
-// swatch that opens Qt's colour dialog, and the three numbers beside it for
-// exact values (the lecture's table has six decimals).
+// A colour of the lecture's model (ka, kd, ks, Ia, a light's) in the
+// control panel: a swatch that opens Qt's colour dialog, and the three
+// numbers beside it for exact values.
 #ifndef shadelab_color_edit_h
 #define shadelab_color_edit_h
 
@@ -8,14 +8,14 @@
 
 #include <QWidget>
 
-#include <array>
 #include <functional>
 
-class QDoubleSpinBox;
 class QPushButton;
 
 namespace shadelab
 {
+class TripleEdit;
+
 class ColorEdit : public QWidget
 {
 public:
@@ -28,12 +28,11 @@ public:
 
 private:
   void PickColor();
-  Rgb Color() const;
   void PaintSwatch();
 
   QString Name;
   QPushButton* Swatch;
-  std::array<QDoubleSpinBox*, 3> Numbers;
+  TripleEdit* Numbers;
 };
 }
 

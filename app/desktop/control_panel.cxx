@@ -1,6 +1,7 @@
 #include "desktop/control_panel.h"
 
 #include "desktop/color_edit.h"
+#include "desktop/light_list_edit.h"
 #include "desktop/shininess_edit.h"
 #include "vtkShadelabMeshNormals.h"
 
@@ -34,12 +35,6 @@ QComboBox* NamesBox(QWidget* parent)
   return box;
 }
 
-// The light modes the panel offers: the given lights only when there are any.
-int FirstLightMode(const Inspector& inspector)
-{
-  return inspector.HasGivenLights() ? 0 : static_cast<int>(LightMode::PointAtCamera);
-}
-
 bool CustomMaterial(const SceneOptions& s)
 {
   return s.Ka || s.Kd || s.Ks || s.Ns;
@@ -57,6 +52,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , LightChoice(new QComboBox(this))
   , NormalsChoice(new QComboBox(this))
   , FeatureAngle(new QDoubleSpinBox(this))
+  , Lights(new LightListEdit(inspector, this))
 {
   // Named for the tests (findChild).
   this->Rule->setObjectName("rule");
@@ -80,12 +76,13 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   this->Model->addItems({ "Blinn-Phong", "Phong" }); // Reflection's order
   shading->addRow("Reflection", this->Model);
   QObject::connect(this->Rule, QOverload<int>::of(&QComboBox::activated), this,
-    [this](int rule)
-    { this->Change([rule](ViewState& s) { s.Scene.ShadingRule = static_cast<Shading>(rule); }); });
+    [this](int rule) {
+      this->Engine.Edit([rule](ViewState& s) { s.Scene.ShadingRule = static_cast<Shading>(rule); });
+    });
   QObject::connect(this->Model, QOverload<int>::of(&QComboBox::activated), this,
     [this](int model)
     {
-      this->Change(
+      this->Engine.Edit(
         [model](ViewState& s) { s.Scene.ReflectionModel = static_cast<Reflection>(model); });
     });
 
@@ -99,7 +96,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   QObject::connect(this->MaterialRow, QOverload<int>::of(&QComboBox::activated), this,
     [this](int row)
     {
-      this->Change(
+      this->Engine.Edit(
         [row](ViewState& state)
         {
           SceneOptions& s = state.Scene;
@@ -128,7 +125,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     material->addRow(names[i], this->Coefficients[i]);
     this->Coefficients[i]->Edited = [this, i](const Rgb& color)
     {
-      this->Change(
+      this->Engine.Edit(
         [i, &color](ViewState& s)
         {
           std::optional<Rgb>* k[] = { &s.Scene.Ka, &s.Scene.Kd, &s.Scene.Ks };
@@ -137,23 +134,22 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     };
   }
   material->addRow("ns", this->Ns);
-  this->Ns->Edited = [this](double ns) { this->Change([ns](ViewState& s) { s.Scene.Ns = ns; }); };
+  this->Ns->Edited = [this](double ns)
+  { this->Engine.Edit([ns](ViewState& s) { s.Scene.Ns = ns; }); };
 
   QFormLayout* light = group("Light");
   light->addRow("Ia", this->AmbientLight);
   this->AmbientLight->Edited = [this](const Rgb& ia)
-  { this->Change([&ia](ViewState& s) { s.Scene.Ambient = ia; }); };
-  for (int mode = FirstLightMode(inspector); mode <= static_cast<int>(LightMode::Spot); ++mode)
+  { this->Engine.Edit([&ia](ViewState& s) { s.Scene.Ambient = ia; }); };
+  for (int mode = 0; mode <= static_cast<int>(LightMode::Spot); ++mode)
   {
     this->LightChoice->addItem(Describe(static_cast<LightMode>(mode)));
   }
   light->addRow("Lights", this->LightChoice);
   QObject::connect(this->LightChoice, QOverload<int>::of(&QComboBox::activated), this,
-    [this](int item)
-    {
-      const int mode = item + FirstLightMode(this->Engine);
-      this->Change([mode](ViewState& s) { s.Lights = static_cast<LightMode>(mode); });
-    });
+    [this](int mode)
+    { this->Engine.Edit([mode](ViewState& s) { s.Lights = static_cast<LightMode>(mode); }); });
+  light->addRow(this->Lights);
 
   QFormLayout* terms = group("Terms");
   terms->addRow(this->Toggle("ambient  ka Ia", &ViewState::Ambient));
@@ -174,7 +170,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     [this](int item)
     {
       const int weighting = item - (this->Engine.HasFileNormals() ? 1 : 0);
-      this->Change(
+      this->Engine.Edit(
         [weighting](ViewState& s)
         {
           if (weighting < 0)
@@ -195,7 +191,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   QObject::connect(this->FeatureAngle, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     [this](double angle)
     {
-      this->Change(
+      this->Engine.Edit(
         [angle](ViewState& s) {
           s.Scene.Computed.FeatureAngle = angle < 0 ? std::nullopt : std::optional<double>(angle);
         });
@@ -239,15 +235,9 @@ QCheckBox* ControlPanel::Toggle(const QString& text, bool ViewState::*setting)
   auto* box = new QCheckBox(text, this);
   this->Toggles.emplace_back(box, setting);
   QObject::connect(box, &QCheckBox::toggled, this,
-    [this, setting](bool on) { this->Change([setting, on](ViewState& s) { s.*setting = on; }); });
+    [this, setting](bool on)
+    { this->Engine.Edit([setting, on](ViewState& s) { s.*setting = on; }); });
   return box;
-}
-
-void ControlPanel::Change(const std::function<void(ViewState&)>& edit)
-{
-  ViewState state = this->Engine.GetState();
-  edit(state);
-  this->Engine.SetState(state);
 }
 
 void ControlPanel::Show()
@@ -271,13 +261,14 @@ void ControlPanel::Show()
   this->Coefficients[2]->SetColor(m.Ks);
   this->Ns->SetShininess(m.Ns);
   this->AmbientLight->SetColor(s.Ambient);
-  this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights) - FirstLightMode(this->Engine));
+  this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights));
   const bool fromFile = s.Normals != NormalsMode::Compute && this->Engine.HasFileNormals();
   const auto weighting = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);
   this->NormalsChoice->setCurrentIndex(fromFile
       ? 0
       : static_cast<int>(weighting - Weightings.begin()) + (this->Engine.HasFileNormals() ? 1 : 0));
   this->FeatureAngle->setValue(s.Computed.FeatureAngle.value_or(-1));
+  this->Lights->Show();
   for (auto& [box, setting] : this->Toggles)
   {
     const QSignalBlocker quietBox(box);

@@ -19,6 +19,7 @@ class QDoubleSpinBox;
 namespace shadelab
 {
 class ColorEdit;
+class LightListEdit;
 class ShininessEdit;
 
 class ControlPanel : public QWidget
@@ -30,7 +31,6 @@ public:
   void Show();
 
 private:
-  void Change(const std::function<void(ViewState&)>& edit);
   QCheckBox* Toggle(const QString& text, bool ViewState::*setting);
 
   Inspector& Engine;
@@ -43,6 +43,7 @@ private:
   QComboBox* LightChoice;
   QComboBox* NormalsChoice;
   QDoubleSpinBox* FeatureAngle;
+  LightListEdit* Lights;
   std::vector<std::pair<QCheckBox*, bool ViewState::*>> Toggles;
 };
 }

@@ -64,6 +64,13 @@ void Inspector::SetState(const ViewState& state)
   this->Show(layout);
 }
 
+void Inspector::Edit(const std::function<void(ViewState&)>& edit)
+{
+  ViewState state = this->State;
+  edit(state);
+  this->SetState(state);
+}
+
 // Draws the state as it is now; `layout`: the panels' grid changed, and
 // with it their aspect.
 void Inspector::Show(bool layout)
@@ -196,24 +203,29 @@ void Inspector::ObserveDrags()
     this);
 }
 
+Light Inspector::LightAtCamera(LightKind kind) const
+{
+  Vec3 eye, focal;
+  this->Camera->GetPosition(eye.data());
+  this->Camera->GetFocalPoint(focal.data());
+  Light light;
+  light.Kind = kind;
+  light.Position = eye;
+  light.Direction = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
+  light.HalfAngleDeg = 8;
+  light.Exponent = 4;
+  return light;
+}
+
 std::vector<Light> Inspector::CameraLights(const SceneOptions& scene) const
 {
   if (this->State.Lights == LightMode::Given)
   {
     return scene.Lights;
   }
-  Vec3 eye, focal;
-  this->Camera->GetPosition(eye.data());
-  this->Camera->GetFocalPoint(focal.data());
-  Light light;
-  light.Position = eye;
-  light.Direction = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
-  light.Kind = this->State.Lights == LightMode::PointAtCamera ? LightKind::Point
-    : this->State.Lights == LightMode::Directional            ? LightKind::Directional
-                                                              : LightKind::Spot;
-  light.HalfAngleDeg = 8;
-  light.Exponent = 4;
-  return { light };
+  return { this->LightAtCamera(this->State.Lights == LightMode::PointAtCamera ? LightKind::Point
+      : this->State.Lights == LightMode::Directional ? LightKind::Directional
+                                                     : LightKind::Spot) };
 }
 
 void Inspector::FollowCamera()

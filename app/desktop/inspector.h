@@ -44,7 +44,7 @@ namespace shadelab
 // as the lecture's light "at the viewpoint" does.
 enum class LightMode
 {
-  Given,         // --light, fixed in the world
+  Given,         // the light list (--light, then the panel's), fixed in the world
   PointAtCamera, // the lecture's default
   Directional,   // shining along the view direction
   Spot           // at the camera, along the view direction
@@ -85,10 +85,12 @@ public:
   const ViewState& GetState() const { return this->State; }
   /** Shows `state`, and tells Changed. */
   void SetState(const ViewState& state);
+  /** SetState of the state as `edit` changes it. */
+  void Edit(const std::function<void(ViewState&)>& edit);
   /** The mesh has normals of its own: the first of the normals' choices. */
   bool HasFileNormals() const { return this->FileNormals; }
-  /** The command line gave lights: LightMode::Given is a choice. */
-  bool HasGivenLights() const { return !this->Options.Scene.Lights.empty(); }
+  /** A light of `kind` where the camera is, shining along the view. */
+  Light LightAtCamera(LightKind kind) const;
 
   /** Acts on `key` (as Qt names it: "1", "Escape", ...) if the key table
    * has it; whether it does. */

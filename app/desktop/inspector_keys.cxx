@@ -130,10 +130,10 @@ void Inspector::StepMaterial(int step)
   s.Ns.reset();
 }
 
-// LightMode's cycle; the given lights only when there are any.
+// LightMode's cycle; the light list only when it has any.
 void Inspector::NextLights()
 {
-  const bool given = this->HasGivenLights();
+  const bool given = !this->State.Scene.Lights.empty();
   const int next = static_cast<int>(this->State.Lights) + 1;
   this->State.Lights = static_cast<LightMode>(next > static_cast<int>(LightMode::Spot)
       ? (given ? 0 : static_cast<int>(LightMode::PointAtCamera))

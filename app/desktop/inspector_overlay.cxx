@@ -17,7 +17,7 @@ const char* Describe(LightMode mode)
   switch (mode)
   {
     case LightMode::Given:
-      return "the given lights";
+      return "the light list";
     case LightMode::PointAtCamera:
       return "point light at camera";
     case LightMode::Directional:

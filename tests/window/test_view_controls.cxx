@@ -14,6 +14,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -129,6 +130,19 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
     { "ns typed", [&] { Type(window.findChild<QDoubleSpinBox*>("ns number"), "7"); }, { "--ns" } },
     { "Ia", [&] { Type(window.findChild<QDoubleSpinBox*>("Ia green"), "0.4"); }, { "--ambient" } },
     { "lights", [&] { QTest::keyClick(find("lights"), Qt::Key_Down); }, { "--light" } },
+    { "add spot", [&] { static_cast<QPushButton*>(find("add spot"))->click(); }, { "--light" } },
+    { "light position", [&] { Type(window.findChild<QDoubleSpinBox*>("light position x"), "1.5"); },
+      { "--light" } },
+    { "light direction",
+      [&] { Type(window.findChild<QDoubleSpinBox*>("light direction y"), "-2"); }, { "--light" } },
+    { "light colour", [&] { Type(window.findChild<QDoubleSpinBox*>("light color red"), "0.5"); },
+      { "--light" } },
+    { "cone angle", [&] { Type(window.findChild<QDoubleSpinBox*>("cone angle"), "20"); },
+      { "--light" } },
+    { "exponent", [&] { Type(window.findChild<QDoubleSpinBox*>("exponent"), "3"); },
+      { "--light" } },
+    { "add point", [&] { static_cast<QPushButton*>(find("add point"))->click(); }, { "--light" } },
+    { "remove", [&] { static_cast<QPushButton*>(find("remove light"))->click(); }, { "--light" } },
     { "specular", [&] { checkBox("specular")->click(); }, { "--ks" } },
     { "normals", [&] { QTest::keyClick(find("normals"), Qt::Key_Down); },
       { "--normals", "--weighting" } },
@@ -148,6 +162,17 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
       EXPECT_TRUE(c.Changes.count(option)) << c.What << " changed " << option;
     }
   }
+
+  // The light list after those edits: one spot light, as edited.
+  const std::vector<Light>& lights = inspector.GetState().Scene.Lights;
+  ASSERT_EQ(lights.size(), 1u);
+  EXPECT_EQ(lights[0].Kind, LightKind::Spot);
+  EXPECT_EQ(lights[0].Position[0], 1.5);
+  EXPECT_EQ(lights[0].Direction[1], -2);
+  EXPECT_EQ(lights[0].Color[0], 0.5);
+  EXPECT_EQ(lights[0].HalfAngleDeg, 20);
+  EXPECT_EQ(lights[0].Exponent, 3);
+  EXPECT_EQ(inspector.GetState().Lights, LightMode::Given);
 
   // Keys: the controls follow.
   auto* rule = static_cast<QComboBox*>(find("rule"));

@@ -10,6 +10,7 @@
 #include <vtkAutoInit.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkLightRepresentation.h>
 #include <vtkMapper.h>
 
 #include <iostream>
@@ -142,6 +143,55 @@ void Inspector::SetUpWindow()
 
   this->Interactor = this->Window->GetInteractor();
   this->Interactor->SetInteractorStyle(this->Style);
+  this->LightHandle->SetInteractor(this->Interactor);
+  this->LightHandle->CreateDefaultRepresentation();
+  // A drag moves the light: its position, a spot's direction kept.
+  Observe(
+    this->LightHandle, vtkCommand::InteractionEvent,
+    [](vtkObject*, unsigned long, void* self, void*)
+    {
+      auto* inspector = static_cast<Inspector*>(self);
+      const int index = inspector->HandleLight;
+      inspector->Edit(
+        [inspector, index](ViewState& s)
+        {
+          if (index >= 0 && index < static_cast<int>(s.Scene.Lights.size()))
+          {
+            inspector->LightHandle->GetLightRepresentation()->GetLightPosition(
+              s.Scene.Lights[index].Position.data());
+          }
+        });
+    },
+    this);
+}
+
+void Inspector::ShowLightHandle(int index)
+{
+  const std::vector<Light>& lights = this->State.Scene.Lights;
+  const bool shown = index >= 0 && index < static_cast<int>(lights.size()) &&
+    this->State.Lights == LightMode::Given && !this->State.Compare &&
+    lights[index].Kind != LightKind::Directional;
+  this->HandleLight = shown ? index : -1;
+  if (!shown)
+  {
+    this->LightHandle->EnabledOff();
+    return;
+  }
+  Light light = lights[index]; // a copy: VTK's setters take double*
+  vtkLightRepresentation* handle = this->LightHandle->GetLightRepresentation();
+  handle->SetRenderer(this->Slots.front().Renderer);
+  this->LightHandle->SetCurrentRenderer(this->Slots.front().Renderer);
+  handle->SetPositional(light.Kind == LightKind::Spot);
+  Vec3 focal;
+  for (int i = 0; i < 3; ++i)
+  {
+    focal[i] = light.Position[i] + light.Direction[i];
+  }
+  handle->SetFocalPoint(focal.data());
+  handle->SetConeAngle(light.HalfAngleDeg);
+  handle->SetLightColor(light.Color.data());
+  handle->SetLightPosition(light.Position.data());
+  this->LightHandle->EnabledOn();
 }
 
 // Each frame's time for the HUD; the lights follow the camera.

@@ -24,6 +24,7 @@
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
+#include <vtkLightWidget.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
@@ -91,6 +92,9 @@ public:
   bool HasFileNormals() const { return this->FileNormals; }
   /** A light of `kind` where the camera is, shining along the view. */
   Light LightAtCamera(LightKind kind) const;
+  /** The handle that drags the light list's light `index` in the 3D view
+   * (a point or spot light, while the list lights the picture); -1: none. */
+  void ShowLightHandle(int index);
 
   /** Acts on `key` (as Qt names it: "1", "Escape", ...) if the key table
    * has it; whether it does. */
@@ -177,6 +181,8 @@ private:
   vtkNew<vtkGenericOpenGLRenderWindow> Window;
   vtkRenderWindowInteractor* Interactor = nullptr; // the Qt widget's
   vtkNew<vtkShadelabInteractorStyle> Style;
+  vtkNew<vtkLightWidget> LightHandle;
+  int HandleLight = -1;         // the light list's light the handle drags
   vtkNew<vtkCamera> Camera;     // every panel's: linked cameras
   vtkNew<vtkRenderer> Backdrop; // the whole window, beneath the panels
   vtkNew<vtkRenderer> Overlay;

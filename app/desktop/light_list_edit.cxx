@@ -156,5 +156,6 @@ void LightListEdit::Show()
   this->Color->setEnabled(any);
   this->Cone->setEnabled(any && light.Kind == LightKind::Spot);
   this->Exponent->setEnabled(any && light.Kind == LightKind::Spot);
+  this->Engine.ShowLightHandle(this->Selected);
 }
 }

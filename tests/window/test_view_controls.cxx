@@ -8,6 +8,9 @@
 #include "viewer.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRendererCollection.h>
 
 #include <QAbstractSpinBox>
 #include <QApplication>
@@ -173,6 +176,36 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
   EXPECT_EQ(lights[0].HalfAngleDeg, 20);
   EXPECT_EQ(lights[0].Exponent, 3);
   EXPECT_EQ(inspector.GetState().Lights, LightMode::Given);
+
+  // The selected spot light's handle in the 3D view: put at the view's
+  // centre, dragged 30 pixels right by the interactor's own events, the
+  // light moves and keeps its direction.
+  Type(window.findChild<QDoubleSpinBox*>("light position x"), "0");
+  Type(window.findChild<QDoubleSpinBox*>("light position y"), "0.2");
+  Type(window.findChild<QDoubleSpinBox*>("light position z"), "0.2");
+  vtkRenderWindow* view = inspector.GetWindow();
+  vtkRenderer* panel = nullptr;
+  view->GetRenderers()->InitTraversal();
+  while (vtkRenderer* r = view->GetRenderers()->GetNextItem())
+  {
+    panel = !panel && r->GetInteractive() && r->GetLayer() == 0 ? r : panel;
+  }
+  ASSERT_NE(panel, nullptr);
+  panel->SetWorldPoint(0, 0.2, 0.2, 1);
+  panel->WorldToDisplay();
+  const double* at = panel->GetDisplayPoint();
+  vtkRenderWindowInteractor* mouse = view->GetInteractor();
+  const Light before = inspector.GetState().Scene.Lights[0];
+  view->Render(); // the handle drawn, where the press picks it
+  mouse->SetEventInformation(static_cast<int>(at[0]), static_cast<int>(at[1]));
+  mouse->InvokeEvent(vtkCommand::MouseMoveEvent); // over the handle first, as a hand would
+  mouse->InvokeEvent(vtkCommand::LeftButtonPressEvent);
+  mouse->SetEventInformation(static_cast<int>(at[0]) + 30, static_cast<int>(at[1]));
+  mouse->InvokeEvent(vtkCommand::MouseMoveEvent);
+  mouse->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+  const Light after = inspector.GetState().Scene.Lights[0];
+  EXPECT_NE(after.Position, before.Position) << "the drag moved the light";
+  EXPECT_EQ(after.Direction, before.Direction);
 
   // Keys: the controls follow.
   auto* rule = static_cast<QComboBox*>(find("rule"));

@@ -8,7 +8,11 @@ extern "C" const char* __lsan_default_suppressions()
     // Mesa 22.3's OSMesa: OSMesaMakeCurrent allocates a framebuffer wrapper
     // for each buffer it is given and keeps it in a table that
     // OSMesaDestroyContext does not empty; OSMesa has no call to free it.
-    "leak:libOSMesa.so\n";
+    "leak:libOSMesa.so\n"
+    // libdbus, which Qt's window (shadelab-view) loads for its desktop
+    // integration: a message buffer it keeps in a connection that lives
+    // until the process ends.
+    "leak:libdbus-1.so\n";
 }
 
 // The list of suppressions used would break the one-line error contract.

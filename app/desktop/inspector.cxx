@@ -3,7 +3,6 @@
 #include "desktop/inspector.h"
 
 #include "core/errors.h"
-#include "desktop/x_display.h"
 #include "scene/camera.h"
 #include "scene/comparison_panels.h"
 #include "vtkShadelabShading.h"
@@ -11,13 +10,13 @@
 #include <vtkAutoInit.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkLightRepresentation.h>
 #include <vtkMapper.h>
 
-#include <filesystem>
 #include <iostream>
 
-// The native window, its interactor, the default styles and text through
-// FreeType come from these modules' object factories.
+// The OpenGL classes, the default styles and text through FreeType come
+// from these modules' object factories.
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
 VTK_MODULE_INIT(vtkRenderingUI);
 VTK_MODULE_INIT(vtkInteractionStyle);
@@ -37,36 +36,62 @@ void Observe(vtkObject* subject, unsigned long event,
 }
 }
 
-int Inspector::Run(void* display)
+Inspector::Inspector(const ViewOptions& options, const std::string& commandLine)
+  : Options(options)
+  , CommandLine(commandLine)
 {
-  if (const int error = this->Load())
-  {
-    return error;
-  }
-  this->SetUpWindow(display);
+  this->State.Scene = options.Scene;
+  this->State.Glyphs = options.Scene.NormalGlyphs;
+  this->State.Edges = options.Scene.Edges;
+  this->State.Compare = options.Compare;
+}
+
+void Inspector::Start()
+{
+  this->SetUpWindow();
   this->SetUpOverlay();
   this->ObserveFrames();
   this->ObserveDrags();
   this->Apply();
   this->ResetCamera(); // the panels' aspect
-  this->Interactor->Initialize();
   this->Window->Render();
   this->RefreshDifference();
-  if (this->Options.MeasureDrag > 0)
-  {
-    return this->MeasureDrag();
-  }
-  std::cout << "shadelab: " << this->Window->GetWindowName() << ": press h for the keys"
-            << std::endl;
-  this->Interactor->Start();
-  return 0;
 }
 
-// The mesh, the comparison's plan and the camera, checked before any window
-// opens; 0, or the exit code of what is wrong.
+void Inspector::SetState(const ViewState& state)
+{
+  const bool layout = state.Compare != this->State.Compare;
+  this->State = state;
+  this->Show(layout);
+}
+
+void Inspector::Edit(const std::function<void(ViewState&)>& edit)
+{
+  ViewState state = this->State;
+  edit(state);
+  this->SetState(state);
+}
+
+// Draws the state as it is now; `layout`: the panels' grid changed, and
+// with it their aspect.
+void Inspector::Show(bool layout)
+{
+  this->Apply();
+  if (layout)
+  {
+    this->ResetCamera();
+  }
+  this->Window->Render();
+  this->RefreshDifference();
+  if (this->Changed)
+  {
+    this->Changed();
+  }
+}
+
 int Inspector::Load()
 {
-  SceneOptions& scene = this->Options.Scene;
+  const SceneOptions& scene = this->Options.Scene;
   const LoadedMesh& loaded = this->Meshes.Get(scene);
   if (!loaded.Mesh)
   {
@@ -86,7 +111,7 @@ int Inspector::Load()
   this->Points = loaded.Mesh->GetPoints();
   this->Triangles = loaded.Mesh->GetNumberOfPolys();
   this->FileNormals = loaded.NormalsFromFile;
-  this->Lights = scene.Lights.empty() ? LightMode::PointAtCamera : LightMode::Given;
+  this->State.Lights = scene.Lights.empty() ? LightMode::PointAtCamera : LightMode::Given;
   if (const std::string error = ApplyCamera(scene, this->Points,
         static_cast<double>(scene.Size.Width) / scene.Size.Height, this->Camera);
       !error.empty())
@@ -96,15 +121,11 @@ int Inspector::Load()
   return 0;
 }
 
-void Inspector::SetUpWindow(void* display)
+void Inspector::SetUpWindow()
 {
   const SceneOptions& scene = this->Options.Scene;
-  this->Window->SetDisplayId(display);
-  this->Window->SetSize(scene.Size.Width, scene.Size.Height);
   // No multisampling: the pixels are the shading rule's alone, as headless.
   this->Window->SetMultiSamples(0);
-  this->Window->SetWindowName(
-    ("shadelab - " + std::filesystem::path(scene.Mesh).filename().string()).c_str());
   this->Window->SetNumberOfLayers(2);
   // Cleared first each frame: a grid's empty cells would keep stale pixels.
   this->Backdrop->SetBackground(scene.Background.data());
@@ -120,9 +141,57 @@ void Inspector::SetUpWindow(void* display)
   this->DifferenceRenderer->InteractiveOff();
   this->DifferenceImage->InterpolateOff(); // its pixels as computed
 
-  this->Interactor->SetRenderWindow(this->Window);
+  this->Interactor = this->Window->GetInteractor();
   this->Interactor->SetInteractorStyle(this->Style);
-  this->Style->SetKeyHandler([this](const std::string& key) { this->OnKey(key); });
+  this->LightHandle->SetInteractor(this->Interactor);
+  this->LightHandle->CreateDefaultRepresentation();
+  // A drag moves the light: its position, a spot's direction kept.
+  Observe(
+    this->LightHandle, vtkCommand::InteractionEvent,
+    [](vtkObject*, unsigned long, void* self, void*)
+    {
+      auto* inspector = static_cast<Inspector*>(self);
+      const int index = inspector->HandleLight;
+      inspector->Edit(
+        [inspector, index](ViewState& s)
+        {
+          if (index >= 0 && index < static_cast<int>(s.Scene.Lights.size()))
+          {
+            inspector->LightHandle->GetLightRepresentation()->GetLightPosition(
+              s.Scene.Lights[index].Position.data());
+          }
+        });
+    },
+    this);
+}
+
+void Inspector::ShowLightHandle(int index)
+{
+  const std::vector<Light>& lights = this->State.Scene.Lights;
+  const bool shown = index >= 0 && index < static_cast<int>(lights.size()) &&
+    this->State.Lights == LightMode::Given && !this->State.Compare &&
+    lights[index].Kind != LightKind::Directional;
+  this->HandleLight = shown ? index : -1;
+  if (!shown)
+  {
+    this->LightHandle->EnabledOff();
+    return;
+  }
+  Light light = lights[index]; // a copy: VTK's setters take double*
+  vtkLightRepresentation* handle = this->LightHandle->GetLightRepresentation();
+  handle->SetRenderer(this->Slots.front().Renderer);
+  this->LightHandle->SetCurrentRenderer(this->Slots.front().Renderer);
+  handle->SetPositional(light.Kind == LightKind::Spot);
+  Vec3 focal;
+  for (int i = 0; i < 3; ++i)
+  {
+    focal[i] = light.Position[i] + light.Direction[i];
+  }
+  handle->SetFocalPoint(focal.data());
+  handle->SetConeAngle(light.HalfAngleDeg);
+  handle->SetLightColor(light.Color.data());
+  handle->SetLightPosition(light.Position.data());
+  this->LightHandle->EnabledOn();
 }
 
 // Each frame's time for the HUD; the lights follow the camera.
@@ -184,33 +253,38 @@ void Inspector::ObserveDrags()
     this);
 }
 
-std::vector<Light> Inspector::CameraLights(const SceneOptions& scene) const
+Light Inspector::LightAtCamera(LightKind kind) const
 {
-  if (this->Lights == LightMode::Given)
-  {
-    return scene.Lights;
-  }
   Vec3 eye, focal;
   this->Camera->GetPosition(eye.data());
   this->Camera->GetFocalPoint(focal.data());
   Light light;
+  light.Kind = kind;
   light.Position = eye;
   light.Direction = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
-  light.Kind = this->Lights == LightMode::PointAtCamera ? LightKind::Point
-    : this->Lights == LightMode::Directional            ? LightKind::Directional
-                                                        : LightKind::Spot;
   light.HalfAngleDeg = 8;
   light.Exponent = 4;
-  return { light };
+  return light;
+}
+
+std::vector<Light> Inspector::CameraLights(const SceneOptions& scene) const
+{
+  if (this->State.Lights == LightMode::Given)
+  {
+    return scene.Lights;
+  }
+  return { this->LightAtCamera(this->State.Lights == LightMode::PointAtCamera ? LightKind::Point
+      : this->State.Lights == LightMode::Directional ? LightKind::Directional
+                                                     : LightKind::Spot) };
 }
 
 void Inspector::FollowCamera()
 {
-  if (this->Lights == LightMode::Given)
+  if (this->State.Lights == LightMode::Given)
   {
     return;
   }
-  const std::vector<Light> lights = CameraLights(this->Options.Scene);
+  const std::vector<Light> lights = CameraLights(this->State.Scene);
   for (Slot& slot : this->Slots)
   {
     if (const BuiltScene* shown = slot.Scenes.GetShown())
@@ -258,7 +332,7 @@ int Inspector::MeasureDrag()
     this->Window->Render();
   }
   const double still = Milliseconds(start) / frames;
-  const SceneOptions& s = this->Options.Scene;
+  const SceneOptions& s = this->State.Scene;
   std::cout << "size " << size[0] << "x" << size[1] << ", " << this->Triangles << " triangles, "
             << ToString(s.ShadingRule) << ": dragging ("
             << ToString(this->Options.InteractiveShading.value_or(s.ShadingRule)) << ") "
@@ -266,22 +340,5 @@ int Inspector::MeasureDrag()
             << " frames/s; still " << Fixed(still, 1) << " ms/frame, " << Fixed(1000 / still, 1)
             << " frames/s" << std::endl;
   return 0;
-}
-
-int RunView(const ViewOptions& options, const std::string& commandLine)
-{
-  std::string error;
-  void* display = OpenXDisplay(error);
-  if (!display)
-  {
-    return ReportError("view", error);
-  }
-  int code = 0;
-  {
-    Inspector inspector(options, commandLine);
-    code = inspector.Run(display);
-  }
-  CloseXDisplay(display);
-  return code;
 }
 }

@@ -1,11 +1,13 @@
-// The desktop inspector: `shadelab view` in a window of VTK's native backend
-// (shadelab-view, without the OSMesa linkage). The mesh is shown under the
-// lecture's shaders and every setting changes live with a key; the
-// comparison layout shows compare's panels with one camera. Its parts:
-// inspector.cxx starts it and follows the camera, inspector_panels.cxx lays
-// out the panels, inspector_overlay.cxx draws the HUD and the help,
-// inspector_keys.cxx acts on the keys, inspector_pictures.cxx reads the
-// window back (screenshots, the difference cell).
+// The desktop inspector's picture: `shadelab view`'s VTK side, drawn into
+// the Qt window's 3D view (desktop/inspector_window.h) by VTK's native
+// backend (shadelab-view, without the OSMesa linkage). The mesh is shown
+// under the lecture's shaders and every setting changes live, by a key or
+// the control panel, both through ViewState; the comparison layout shows
+// compare's panels with one camera. Its parts: inspector.cxx starts it and
+// follows the camera, inspector_panels.cxx lays out the panels,
+// inspector_overlay.cxx draws the HUD and the help, inspector_keys.cxx acts
+// on the keys, inspector_pictures.cxx reads the window back (screenshots,
+// the difference cell).
 #ifndef shadelab_inspector_h
 #define shadelab_inspector_h
 
@@ -20,16 +22,18 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
+#include <vtkLightWidget.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -41,28 +45,76 @@ namespace shadelab
 // as the lecture's light "at the viewpoint" does.
 enum class LightMode
 {
-  Given,         // --light, fixed in the world
+  Given,         // the light list (--light, then the panel's), fixed in the world
   PointAtCamera, // the lecture's default
   Directional,   // shining along the view direction
   Spot           // at the camera, along the view direction
 };
 
+/** The mode as the HUD and the control panel name it. */
+const char* Describe(LightMode mode);
+
+/** shadelab-MESHSTEM-001.EXTENSION, or the first number not taken in the current folder. */
+std::string NumberedName(const std::string& mesh, const std::string& extension);
+
 /** value with `digits` decimals, as the HUD and the drag's timing print it. */
 std::string Fixed(double value, int digits);
+
+// What the picture shows: the keys and the control panel change it.
+struct ViewState
+{
+  SceneOptions Scene; // the command line's, then as changed
+  LightMode Lights = LightMode::PointAtCamera;
+  bool Ambient = true, Diffuse = true, Specular = true;
+  bool Glyphs = false, Edges = false, Compare = false, Help = false;
+};
 
 class Inspector
 {
 public:
-  Inspector(const ViewOptions& options, const std::string& commandLine)
-    : Options(options)
-    , CommandLine(commandLine)
-    , GlyphsOn(options.Scene.NormalGlyphs)
-    , EdgesOn(options.Scene.Edges)
-    , CompareOn(options.Compare)
-  {
-  }
+  Inspector(const ViewOptions& options, const std::string& commandLine);
 
-  int Run(void* display);
+  /** The mesh, the comparison's plan and the camera, checked before any
+   * window opens; 0, or the exit code of what is wrong (reported). */
+  int Load();
+  /** The render window that the Qt widget shows; Start once it does. */
+  vtkGenericOpenGLRenderWindow* GetWindow() { return this->Window; }
+  void Start();
+  /** --measure-drag: times a simulated drag and prints it. */
+  int MeasureDrag();
+
+  const ViewState& GetState() const { return this->State; }
+  /** Shows `state`, and tells Changed. */
+  void SetState(const ViewState& state);
+  /** SetState of the state as `edit` changes it. */
+  void Edit(const std::function<void(ViewState&)>& edit);
+  /** The mesh has normals of its own: the first of the normals' choices. */
+  bool HasFileNormals() const { return this->FileNormals; }
+  /** A light of `kind` where the camera is, shining along the view. */
+  Light LightAtCamera(LightKind kind) const;
+  /** The handle that drags the light list's light `index` in the 3D view
+   * (a point or spot light, while the list lights the picture); -1: none. */
+  void ShowLightHandle(int index);
+
+  /** Acts on `key` (as Qt names it: "1", "Escape", ...) if the key table
+   * has it; whether it does. */
+  bool OnKey(const std::string& key);
+  /** The key table's `action` (`which`: the key's place in its row). */
+  void Do(ViewAction action, int which = 0);
+
+  /** The scene `render` takes to make the picture the view shows now:
+   * the camera as it is, the lights that follow it and the terms turned
+   * off written out (the single panel's: the comparison layout aside). */
+  SceneOptions ShownScene() const;
+  /** ShownScene as a `shadelab render` command line, quoted for a shell. */
+  std::string RenderCommand() const;
+  /** ShownScene as a scene file at path (its output MESHSTEM.png); says
+   * where, or reports why not. */
+  void SaveScene(const std::string& path) const;
+
+  std::function<void()> Changed;                // after a key or SetState changed the state
+  std::function<void()> Quit;                   // the quit key
+  std::function<void(const std::string&)> Copy; // text for the clipboard
 
 private:
   // A panel of the window: its renderer, and per rule and mesh the actor
@@ -82,14 +134,13 @@ private:
 
   // inspector.cxx: start-up, the camera and the lights that follow it, the
   // drag's timing.
-  int Load();
-  void SetUpWindow(void* display);
+  void SetUpWindow();
   void ObserveFrames();
   void ObserveDrags();
   std::vector<Light> CameraLights(const SceneOptions& scene) const;
   void FollowCamera();
   void ResetCamera();
-  int MeasureDrag();
+  void Show(bool layout);
 
   // inspector_panels.cxx: the panels, one or compare's grid.
   void Apply();
@@ -103,22 +154,23 @@ private:
   void UpdateHud();
 
   // inspector_keys.cxx: the key table's actions.
-  void OnKey(const std::string& key);
   bool Act(ViewAction action, int which);
   void StepMaterial(int step);
   void NextLights();
   void NextWeighting();
+
+  // inspector_command.cxx: the picture as a command.
+  void CopyCommand();
 
   // inspector_pictures.cxx: the window's pixels read back.
   FloatImage GrabWindow();
   void RefreshDifference();
   void Screenshot();
 
-  ViewOptions Options; // Options.Scene: the command line's, then as the keys change it
+  const ViewOptions Options; // the command line's
   std::string CommandLine;
-  LightMode Lights = LightMode::PointAtCamera;
-  bool Ambient = true, Diffuse = true, Specular = true;
-  bool GlyphsOn = false, EdgesOn = false, CompareOn = false, HelpOn = false, Dragging = false;
+  ViewState State;
+  bool Dragging = false;
   bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
   std::string Problem;      // the last thing that went wrong, shown in the HUD
   MeshCache Meshes;
@@ -126,9 +178,11 @@ private:
   vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)
   vtkIdType Triangles = 0;
 
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkGenericOpenGLRenderWindow> Window;
+  vtkRenderWindowInteractor* Interactor = nullptr; // the Qt widget's
   vtkNew<vtkShadelabInteractorStyle> Style;
+  vtkNew<vtkLightWidget> LightHandle;
+  int HandleLight = -1;         // the light list's light the handle drags
   vtkNew<vtkCamera> Camera;     // every panel's: linked cameras
   vtkNew<vtkRenderer> Backdrop; // the whole window, beneath the panels
   vtkNew<vtkRenderer> Overlay;

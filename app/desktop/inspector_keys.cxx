@@ -13,8 +13,8 @@ namespace
 {
 const std::vector<std::string> Weightings = Names<vtkShadelabMeshNormals::Weightings>();
 
-// The table's name of a key that arrives under another: X names Esc
-// "Escape", and = is + without shift on a US keyboard.
+// The table's name of a key that arrives under another: the window names
+// Esc "Escape", and = is + without shift on a US keyboard.
 std::string TableName(const std::string& key)
 {
   if (key == "Escape")
@@ -25,23 +25,29 @@ std::string TableName(const std::string& key)
 }
 }
 
-void Inspector::OnKey(const std::string& key)
+bool Inspector::OnKey(const std::string& key)
 {
   const ViewKeyPress press = FindViewKey(TableName(key));
-  if (!press.Row || !this->Act(press.Row->Action, press.Which))
+  if (press.Row)
   {
-    return;
+    this->Do(press.Row->Action, press.Which);
   }
-  this->Apply();
-  this->Window->Render();
-  this->RefreshDifference();
+  return press.Row;
+}
+
+void Inspector::Do(ViewAction action, int which)
+{
+  if (this->Act(action, which))
+  {
+    this->Show(action == ViewAction::Compare); // a new grid: the panels' aspect
+  }
 }
 
 // Does `action`, `which` the key's place in its row; whether the picture is
 // to be drawn again.
 bool Inspector::Act(ViewAction action, int which)
 {
-  SceneOptions& s = this->Options.Scene;
+  SceneOptions& s = this->State.Scene;
   switch (action)
   {
     case ViewAction::Shading:
@@ -65,7 +71,9 @@ bool Inspector::Act(ViewAction action, int which)
     }
     case ViewAction::Term:
     {
-      bool& term = which == 0 ? this->Ambient : which == 1 ? this->Diffuse : this->Specular;
+      bool& term = which == 0 ? this->State.Ambient
+        : which == 1          ? this->State.Diffuse
+                              : this->State.Specular;
       term = !term;
       return true;
     }
@@ -73,15 +81,13 @@ bool Inspector::Act(ViewAction action, int which)
       this->NextWeighting();
       return true;
     case ViewAction::Glyphs:
-      this->GlyphsOn = !this->GlyphsOn;
+      this->State.Glyphs = !this->State.Glyphs;
       return true;
     case ViewAction::Edges:
-      this->EdgesOn = !this->EdgesOn;
+      this->State.Edges = !this->State.Edges;
       return true;
     case ViewAction::Compare:
-      this->CompareOn = !this->CompareOn;
-      this->Apply();
-      this->ResetCamera(); // the panels' aspect
+      this->State.Compare = !this->State.Compare;
       return true;
     case ViewAction::ResetCamera:
       this->ResetCamera();
@@ -89,11 +95,20 @@ bool Inspector::Act(ViewAction action, int which)
     case ViewAction::Screenshot:
       this->Screenshot();
       return false;
+    case ViewAction::CopyCommand:
+      this->CopyCommand();
+      return false;
+    case ViewAction::SaveScene:
+      this->SaveScene(NumberedName(this->Options.Scene.Mesh, ".json"));
+      return false;
     case ViewAction::Help:
-      this->HelpOn = !this->HelpOn;
+      this->State.Help = !this->State.Help;
       return true;
     case ViewAction::Quit:
-      this->Interactor->TerminateApp();
+      if (this->Quit)
+      {
+        this->Quit();
+      }
       return false;
   }
   return false;
@@ -102,7 +117,7 @@ bool Inspector::Act(ViewAction action, int which)
 // The lecture's material `step` places along its table, round.
 void Inspector::StepMaterial(int step)
 {
-  SceneOptions& s = this->Options.Scene;
+  SceneOptions& s = this->State.Scene;
   const auto& materials = LectureMaterials();
   const auto current = std::find_if(materials.begin(), materials.end(),
     [&s](const Material& m) { return m.Name == s.MaterialName; });
@@ -115,12 +130,12 @@ void Inspector::StepMaterial(int step)
   s.Ns.reset();
 }
 
-// LightMode's cycle; the given lights only when there are any.
+// LightMode's cycle; the light list only when it has any.
 void Inspector::NextLights()
 {
-  const bool given = !this->Options.Scene.Lights.empty();
-  const int next = static_cast<int>(this->Lights) + 1;
-  this->Lights = static_cast<LightMode>(next > static_cast<int>(LightMode::Spot)
+  const bool given = !this->State.Scene.Lights.empty();
+  const int next = static_cast<int>(this->State.Lights) + 1;
+  this->State.Lights = static_cast<LightMode>(next > static_cast<int>(LightMode::Spot)
       ? (given ? 0 : static_cast<int>(LightMode::PointAtCamera))
       : next);
 }
@@ -128,7 +143,7 @@ void Inspector::NextLights()
 // The cycle: the file's normals (when it has them), then each weighting.
 void Inspector::NextWeighting()
 {
-  SceneOptions& s = this->Options.Scene;
+  SceneOptions& s = this->State.Scene;
   const bool fromFile = s.Normals != NormalsMode::Compute && this->FileNormals;
   const auto at = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);
   if (fromFile)

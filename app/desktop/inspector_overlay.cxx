@@ -12,14 +12,12 @@
 
 namespace shadelab
 {
-namespace
-{
-const char* ToString(LightMode mode)
+const char* Describe(LightMode mode)
 {
   switch (mode)
   {
     case LightMode::Given:
-      return "the given lights";
+      return "the light list";
     case LightMode::PointAtCamera:
       return "point light at camera";
     case LightMode::Directional:
@@ -30,6 +28,8 @@ const char* ToString(LightMode mode)
   return "?";
 }
 
+namespace
+{
 // The key list with every line padded to the longest: in a monospace font,
 // centring the block then leaves the keys and their meanings in columns. A
 // space each side keeps the text off the background box's edges.
@@ -81,25 +81,26 @@ void Inspector::SetUpOverlay()
 
 void Inspector::UpdateHud()
 {
-  const SceneOptions& s = this->Options.Scene;
+  const SceneOptions& s = this->State.Scene;
   const Material m = s.EffectiveMaterial();
   std::ostringstream hud;
-  hud << (this->CompareOn ? "compare: " + this->Options.Panels.Modes
-                          : std::string(ToString(s.ShadingRule)) + " shading")
+  hud << (this->State.Compare ? "compare: " + this->Options.Panels.Modes
+                              : std::string(ToString(s.ShadingRule)) + " shading")
       << " | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") << " | "
-      << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << ToString(this->Lights) << "\n";
+      << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << Describe(this->State.Lights) << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
                                                                  : s.Computed.Weighting.c_str())
-      << " | terms:" << (this->Ambient ? " ambient" : "") << (this->Diffuse ? " diffuse" : "")
-      << (this->Specular ? " specular" : "") << "\n";
+      << " | terms:" << (this->State.Ambient ? " ambient" : "")
+      << (this->State.Diffuse ? " diffuse" : "") << (this->State.Specular ? " specular" : "")
+      << "\n";
   double mean = 0;
   for (double ms : this->FrameMs)
   {
     mean += ms / this->FrameMs.size();
   }
   hud << Fixed(mean, 1) << " ms/frame";
-  if (this->Options.InteractiveShading && !this->CompareOn)
+  if (this->Options.InteractiveShading && !this->State.Compare)
   {
     hud << " | while dragging: " << ToString(*this->Options.InteractiveShading)
         << (this->Dragging ? " (now)" : "");

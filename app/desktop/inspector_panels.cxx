@@ -14,10 +14,10 @@ namespace shadelab
 // labels, the help and the HUD.
 void Inspector::Apply()
 {
-  SceneOptions base = this->Options.Scene;
-  ShowTerms(base, this->Ambient, this->Diffuse, this->Specular);
+  SceneOptions base = this->State.Scene;
+  ShowTerms(base, this->State.Ambient, this->State.Diffuse, this->State.Specular);
   std::vector<Panel> panels;
-  if (this->CompareOn)
+  if (this->State.Compare)
   {
     this->Plan = PlanComparison(this->Options.Panels, base); // checked at start
     panels = this->Plan.Panels;
@@ -31,8 +31,8 @@ void Inspector::Apply()
     }
     panels.push_back({ base, "", "", Terms::All });
   }
-  this->MakeSlots(panels.size(), this->CompareOn ? this->Plan.Columns : 0,
-    this->CompareOn && this->Plan.DifferenceA >= 0);
+  this->MakeSlots(panels.size(), this->State.Compare ? this->Plan.Columns : 0,
+    this->State.Compare && this->Plan.DifferenceA >= 0);
   this->Problem.clear();
   for (std::size_t i = 0; i < panels.size(); ++i)
   {
@@ -47,9 +47,9 @@ void Inspector::Apply()
     }
     this->ShowExtras(slot, scene, shown.Mesh->Mesh);
     slot.Label->SetInput(panels[i].Label.c_str());
-    slot.Label->SetVisibility(this->CompareOn);
+    slot.Label->SetVisibility(this->State.Compare);
   }
-  this->Help->SetVisibility(this->HelpOn);
+  this->Help->SetVisibility(this->State.Help);
   this->UpdateHud();
 }
 
@@ -63,14 +63,14 @@ void Inspector::ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* s
       actor->VisibilityOff();
     }
   }
-  if (this->GlyphsOn)
+  if (this->State.Glyphs)
   {
     if (vtkPolyData* normals = LitMesh(scene, this->Meshes))
     {
       this->GlyphsOf(slot, normals)->VisibilityOn();
     }
   }
-  if (this->EdgesOn)
+  if (this->State.Edges)
   {
     this->EdgesOf(slot, shown)->VisibilityOn();
   }

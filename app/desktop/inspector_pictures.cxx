@@ -116,24 +116,30 @@ void Inspector::RefreshDifference()
   this->Window->Render();
 }
 
-void Inspector::Screenshot()
+std::string NumberedName(const std::string& mesh, const std::string& extension)
 {
-  const std::string stem = std::filesystem::path(this->Options.Scene.Mesh).stem().string();
+  const std::string stem = std::filesystem::path(mesh).stem().string();
   std::string path;
   for (int n = 1; path.empty() || std::filesystem::exists(path); ++n)
   {
     char number[16];
     std::snprintf(number, sizeof number, "%03d", n);
-    path = "shadelab-" + stem + "-" + number + ".png";
+    path = "shadelab-" + stem + "-" + number + extension;
   }
+  return path;
+}
+
+void Inspector::Screenshot()
+{
+  const std::string path = NumberedName(this->Options.Scene.Mesh, ".png");
   const FloatImage image = this->GrabWindow();
   if (!this->Writer)
   {
     this->Writer = std::make_unique<ImageWriterProcess>();
   }
   const std::string error = this->Writer->Write(path, image, PixelType::UInt8,
-    DescribePicture(this->CommandLine, this->Options.Scene, this->Camera,
-      this->Meshes.Get(this->Options.Scene).Mesh));
+    DescribePicture(this->CommandLine, this->State.Scene, this->Camera,
+      this->Meshes.Get(this->State.Scene).Mesh));
   if (!error.empty())
   {
     ReportError(path, error);

@@ -32,6 +32,8 @@ enum class ViewAction
   Compare,     // the comparison layout on / off
   ResetCamera, // the command line's camera
   Screenshot,  // into the current folder
+  CopyCommand, // the render command of the picture: clipboard and stdout
+  SaveScene,   // the scene file of the picture, into the current folder
   Help,        // the overlay on / off
   Quit
 };
@@ -56,6 +58,10 @@ inline constexpr ViewKey ViewKeys[] = {
   { "c", "comparison layout (as compare's options), linked cameras", ViewAction::Compare },
   { "r", "reset the camera", ViewAction::ResetCamera },
   { "p", "screenshot (its name is printed)", ViewAction::Screenshot },
+  { "y", "copy the render command that makes this picture (and print it)",
+    ViewAction::CopyCommand },
+  { "j", "save the scene file that makes this picture (its name is printed)",
+    ViewAction::SaveScene },
   { "h", "this help", ViewAction::Help },
   { "q Esc", "quit", ViewAction::Quit },
 };

@@ -24,6 +24,13 @@ struct Shot
   bool Animation = false;   // Output holds every frame of Scene.Orbit (.gif, .mp4)
 };
 
+/**
+ * A scene file whose one shot renders s into output: every setting that
+ * decides the picture, numbers to the last bit (the inspector's Save
+ * scene). s.Mesh as given: absolute, or relative to the file's folder.
+ */
+std::string WriteSceneText(const SceneOptions& s, const std::string& output);
+
 /** The JSON Schema of scene files (data/scene.schema.json, compiled in). */
 const char* SceneSchema();
 

@@ -1,5 +1,6 @@
 // The option-value parsers of the command line (app/core/options.h).
 #include "core/options.h"
+#include "core/scene_arguments.h"
 
 #include <gtest/gtest.h>
 
@@ -121,4 +122,61 @@ TEST(Options, OverridesReplaceOnlyWhatTheyName)
   EXPECT_EQ(m.Kd, gold->Kd);
   EXPECT_EQ(m.Ks, (Rgb{ 0, 0, 0 }));
   EXPECT_DOUBLE_EQ(m.Ns, 5);
+}
+
+// The inspector's Copy command: SceneArguments parsed back gives the same
+// scene, to the last bit of every number (0.1 + 0.2 and 1/3 print with 17
+// digits), and the defaults write nothing but the size.
+TEST(Options, SceneArgumentsParseBackToTheSameScene)
+{
+  SceneOptions s;
+  s.ShadingRule = Shading::Gouraud;
+  s.ReflectionModel = Reflection::Phong;
+  s.MaterialName = "brass";
+  s.Ka = Rgb{ 0.1 + 0.2, 1.0 / 3, 0 };
+  s.Kd = Rgb{ 0, 0, 0 };
+  s.Ks = Rgb{ 2, 0.5, 1e-7 };
+  s.Ns = 1.0 / 7;
+  s.Ambient = { 0.3, 0.25, 1.0 / 9 };
+  Light spot;
+  spot.Kind = LightKind::Spot;
+  spot.Position = { 1.0 / 3, -2, 5 };
+  spot.Direction = { 0, -1.0 / 3, -1 };
+  spot.HalfAngleDeg = 12.5;
+  spot.Exponent = 2.0 / 3;
+  spot.Color = { 0.9, 0.8, 0.7 };
+  Light sun;
+  sun.Kind = LightKind::Directional;
+  sun.Direction = { 1, 2, 3 };
+  s.Lights = { spot, sun, Light{} };
+  s.Size = { 321, 123 };
+  s.CameraPosition = Vec3{ 3.9, 1.5, -2.2 + 1e-12 };
+  s.CameraFocalPoint = Vec3{ 0.1, 0.2, 0.3 };
+  s.CameraViewUp = Vec3{ 0, 0, 1 };
+  s.ViewAngle = 100.0 / 3;
+  s.Orthographic = true;
+  s.ParallelScale = 0.7;
+  s.Background = { 0.5, 0.5, 1 };
+  s.Edges = true;
+  s.EdgeColor = { 1, 0, 0 };
+  s.EdgeWidth = 2.5;
+  s.NormalGlyphs = true;
+  s.Normals = NormalsMode::Compute;
+  s.Computed.Weighting = "area";
+  s.Computed.FeatureAngle = 45.5;
+  s.Computed.Orient = true;
+  const std::vector<std::string> words = SceneArguments(s);
+  SceneOptions back;
+  ApplySceneArguments(back, words);
+  EXPECT_EQ(SceneArguments(back), words);
+  EXPECT_EQ(*back.Ka, *s.Ka);
+  EXPECT_EQ(*back.Ns, *s.Ns);
+  EXPECT_EQ(back.Ambient, s.Ambient);
+  EXPECT_EQ(back.Lights.size(), 3u);
+  EXPECT_EQ(back.Lights[0].Direction, spot.Direction);
+  EXPECT_EQ(back.Lights[0].Exponent, spot.Exponent);
+  EXPECT_EQ(*back.CameraPosition, *s.CameraPosition);
+  EXPECT_EQ(back.ViewAngle, s.ViewAngle);
+  EXPECT_EQ(*back.Computed.FeatureAngle, 45.5);
+  EXPECT_EQ(SceneArguments(SceneOptions{}), (std::vector<std::string>{ "--size", "1024x768" }));
 }

@@ -34,6 +34,47 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
 }
 
+// Copy command (key y) and Save scene (key j): the printed `shadelab
+// render` command, and the scene file, rendered headless make the picture
+// the window shows after the camera turned and the rule, reflection,
+// material, lights, a term and the normals changed.
+TEST(View, CopyCommandAndSaveSceneMakeThePictureTheViewShows)
+{
+  Viewer viewer({});
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  viewer.Drag(W / 2, H / 2, 60, false);
+  viewer.Keys({ "2", "b", "m", "l", "s", "w" });
+  const Image shown = viewer.Screenshot();
+  viewer.Keys({ "y" });
+  std::string command = viewer.Await("shadelab: render command: ");
+  ASSERT_EQ(command.rfind("shadelab render ", 0), 0u) << command;
+  for (const char* option : { "--shading gouraud", "--reflection phong", "--material copper",
+         "--ks 0,0,0", "--light directional:", "--weighting max", "--camera-position " })
+  {
+    EXPECT_NE(command.find(option), std::string::npos) << option << " in " << command;
+  }
+  TempDir dir;
+  command.replace(0, std::string("shadelab").size(), SHADELAB_BINARY);
+  ASSERT_EQ(shadelab_test::Run("cd " + dir.path().string() + " && " + command), 0) << command;
+  const Image rendered = ReadImage(dir / "spot.png");
+  // As in TheWindowShowsWhatRenderRenders: the same shaders on the same
+  // Mesa, at most 1 step of rounding apart.
+  const Change change = Compare(shown, rendered, 1);
+  EXPECT_LE(change.Largest, 1) << command;
+  EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
+
+  viewer.Keys({ "j" });
+  const std::string scene = viewer.Await("shadelab: scene file ");
+  ASSERT_FALSE(scene.empty()) << viewer.Stderr();
+  TempDir sceneDir;
+  // Its output, spot.png, goes into the current folder.
+  ASSERT_EQ(shadelab_test::Run("cd " + sceneDir.path().string() + " && " + SHADELAB_BINARY +
+              " render --scene " + scene),
+    0)
+    << Slurp(scene);
+  EXPECT_LE(Compare(shown, ReadImage(sceneDir / "spot.png"), 1).Largest, 1) << Slurp(scene);
+}
+
 TEST(View, RuleKeysSwitchTheRule)
 {
   Viewer viewer({});
@@ -95,8 +136,9 @@ TEST(View, MaterialReflectionLightAndShininessKeysChangeThePicture)
 
 // Every key of the table (desktop/view_keys.h) is answered: from the start
 // each changes the picture. Not here: p and q (their own tests), r (a
-// camera that moved first: RResetsTheCamera). A term key turns its term
-// back on after, lest the black mesh hide what the next key does.
+// camera that moved first: RResetsTheCamera), y and j
+// (CopyCommandAndSaveSceneMakeThePictureTheViewShows). A term key turns its
+// term back on after, lest the black mesh hide what the next key does.
 TEST(View, EveryKeyOfTheTableChangesThePicture)
 {
   const auto xdotoolName = [](std::string_view key) -> std::string {
@@ -108,7 +150,9 @@ TEST(View, EveryKeyOfTheTableChangesThePicture)
   for (const shadelab::ViewKey& row : shadelab::ViewKeys)
   {
     if (row.Action == shadelab::ViewAction::Screenshot ||
-      row.Action == shadelab::ViewAction::Quit || row.Action == shadelab::ViewAction::ResetCamera)
+      row.Action == shadelab::ViewAction::CopyCommand ||
+      row.Action == shadelab::ViewAction::SaveScene || row.Action == shadelab::ViewAction::Quit ||
+      row.Action == shadelab::ViewAction::ResetCamera)
     {
       continue;
     }

@@ -156,29 +156,33 @@ void Viewer::Release()
 
 Image Viewer::Screenshot()
 {
-  const std::size_t before = this->Shots;
   this->Keys({ "p" });
+  const std::string path = this->Await("shadelab: screenshot ");
+  return path.empty() ? Image{} : ReadImage(path);
+}
+
+std::string Viewer::Await(const std::string& tag)
+{
   const auto deadline = std::chrono::steady_clock::now() + 30s;
   while (std::chrono::steady_clock::now() < deadline)
   {
     std::istringstream out(Slurp(this->Dir / "stdout"));
-    std::vector<std::string> paths;
+    std::vector<std::string> found;
     for (std::string line; std::getline(out, line);)
     {
-      const std::string tag = "shadelab: screenshot ";
       if (line.rfind(tag, 0) == 0)
       {
-        paths.push_back(line.substr(tag.size()));
+        found.push_back(line.substr(tag.size()));
       }
     }
-    if (paths.size() > before)
+    if (found.size() > this->Seen[tag])
     {
-      this->Shots = paths.size();
-      return ReadImage(paths.back());
+      this->Seen[tag] = found.size();
+      return found.back();
     }
     std::this_thread::sleep_for(50ms);
   }
-  return {};
+  return "";
 }
 
 int Viewer::Wait()

@@ -11,6 +11,7 @@
 #include <sys/types.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ public:
   /** Presses p and reads the screenshot the viewer names on its stdout. */
   Image Screenshot();
 
+  /** Waits up to 30 s for a new stdout line starting with `tag`; its rest, or "". */
+  std::string Await(const std::string& tag);
+
   /** Waits up to 20 s for the viewer to end; its exit code, or -1 if it did not. */
   int Wait();
 
@@ -66,7 +70,7 @@ private:
   pid_t Pid = -1;
   bool Exited = false;
   std::string Window;
-  std::size_t Shots = 0;
+  std::map<std::string, std::size_t> Seen; // stdout lines read, by tag
 };
 
 // The largest difference of two screenshots above the HUD, and how many

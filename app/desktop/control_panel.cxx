@@ -1,0 +1,278 @@
+#include "desktop/control_panel.h"
+
+#include "desktop/color_edit.h"
+#include "desktop/light_list_edit.h"
+#include "desktop/shininess_edit.h"
+#include "vtkShadelabMeshNormals.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace shadelab
+{
+namespace
+{
+const std::vector<std::string> Weightings = Names<vtkShadelabMeshNormals::Weightings>();
+
+template <typename Enum>
+QComboBox* NamesBox(QWidget* parent)
+{
+  auto* box = new QComboBox(parent);
+  for (const std::string& name : Names<Enum>())
+  {
+    box->addItem(QString::fromStdString(name));
+  }
+  return box;
+}
+
+bool CustomMaterial(const SceneOptions& s)
+{
+  return s.Ka || s.Kd || s.Ks || s.Ns;
+}
+}
+
+ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
+  : QWidget(parent)
+  , Engine(inspector)
+  , Rule(NamesBox<Shading>(this))
+  , Model(new QComboBox(this))
+  , MaterialRow(new QComboBox(this))
+  , Ns(new ShininessEdit(this))
+  , AmbientLight(new ColorEdit("Ia", this))
+  , LightChoice(new QComboBox(this))
+  , NormalsChoice(new QComboBox(this))
+  , FeatureAngle(new QDoubleSpinBox(this))
+  , Lights(new LightListEdit(inspector, this))
+{
+  // Named for the tests (findChild).
+  this->Rule->setObjectName("rule");
+  this->Model->setObjectName("reflection");
+  this->MaterialRow->setObjectName("material");
+  this->Ns->setObjectName("ns");
+  this->LightChoice->setObjectName("lights");
+  this->NormalsChoice->setObjectName("normals");
+  this->FeatureAngle->setObjectName("feature angle");
+  auto* column = new QVBoxLayout(this);
+  const auto group = [this, column](const QString& title)
+  {
+    auto* box = new QGroupBox(title, this);
+    auto* form = new QFormLayout(box);
+    column->addWidget(box);
+    return form;
+  };
+
+  QFormLayout* shading = group("Shading");
+  shading->addRow("Rule", this->Rule);
+  this->Model->addItems({ "Blinn-Phong", "Phong" }); // Reflection's order
+  shading->addRow("Reflection", this->Model);
+  QObject::connect(this->Rule, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int rule) {
+      this->Engine.Edit([rule](ViewState& s) { s.Scene.ShadingRule = static_cast<Shading>(rule); });
+    });
+  QObject::connect(this->Model, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int model)
+    {
+      this->Engine.Edit(
+        [model](ViewState& s) { s.Scene.ReflectionModel = static_cast<Reflection>(model); });
+    });
+
+  QFormLayout* material = group("Material");
+  for (const Material& m : LectureMaterials())
+  {
+    this->MaterialRow->addItem(QString::fromStdString(m.Name));
+  }
+  this->MaterialRow->addItem("custom");
+  material->addRow("Table row", this->MaterialRow);
+  QObject::connect(this->MaterialRow, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int row)
+    {
+      this->Engine.Edit(
+        [row](ViewState& state)
+        {
+          SceneOptions& s = state.Scene;
+          const auto& table = LectureMaterials();
+          if (row < static_cast<int>(table.size()))
+          {
+            s.MaterialName = table[row].Name;
+            s.Ka.reset();
+            s.Kd.reset();
+            s.Ks.reset();
+            s.Ns.reset();
+            return;
+          }
+          // custom: the coefficients as they are, from now on the user's
+          const Material m = s.EffectiveMaterial();
+          s.Ka = m.Ka;
+          s.Kd = m.Kd;
+          s.Ks = m.Ks;
+          s.Ns = m.Ns;
+        });
+    });
+  const char* names[] = { "ka", "kd", "ks" };
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Coefficients[i] = new ColorEdit(names[i], this);
+    material->addRow(names[i], this->Coefficients[i]);
+    this->Coefficients[i]->Edited = [this, i](const Rgb& color)
+    {
+      this->Engine.Edit(
+        [i, &color](ViewState& s)
+        {
+          std::optional<Rgb>* k[] = { &s.Scene.Ka, &s.Scene.Kd, &s.Scene.Ks };
+          *k[i] = color;
+        });
+    };
+  }
+  material->addRow("ns", this->Ns);
+  this->Ns->Edited = [this](double ns)
+  { this->Engine.Edit([ns](ViewState& s) { s.Scene.Ns = ns; }); };
+
+  QFormLayout* light = group("Light");
+  light->addRow("Ia", this->AmbientLight);
+  this->AmbientLight->Edited = [this](const Rgb& ia)
+  { this->Engine.Edit([&ia](ViewState& s) { s.Scene.Ambient = ia; }); };
+  for (int mode = 0; mode <= static_cast<int>(LightMode::Spot); ++mode)
+  {
+    this->LightChoice->addItem(Describe(static_cast<LightMode>(mode)));
+  }
+  light->addRow("Lights", this->LightChoice);
+  QObject::connect(this->LightChoice, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int mode)
+    { this->Engine.Edit([mode](ViewState& s) { s.Lights = static_cast<LightMode>(mode); }); });
+  light->addRow(this->Lights);
+
+  QFormLayout* terms = group("Terms");
+  terms->addRow(this->Toggle("ambient  ka Ia", &ViewState::Ambient));
+  terms->addRow(this->Toggle("diffuse  kd Il (N.L)", &ViewState::Diffuse));
+  terms->addRow(this->Toggle("specular  ks Il (base)^ns", &ViewState::Specular));
+
+  QFormLayout* normals = group("Normals");
+  if (inspector.HasFileNormals())
+  {
+    this->NormalsChoice->addItem("the file's");
+  }
+  for (const std::string& weighting : Weightings)
+  {
+    this->NormalsChoice->addItem(QString::fromStdString(weighting) + " weighting");
+  }
+  normals->addRow("Normals", this->NormalsChoice);
+  QObject::connect(this->NormalsChoice, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int item)
+    {
+      const int weighting = item - (this->Engine.HasFileNormals() ? 1 : 0);
+      this->Engine.Edit(
+        [weighting](ViewState& s)
+        {
+          if (weighting < 0)
+          {
+            s.Scene.Normals = NormalsMode::Auto;
+            return;
+          }
+          s.Scene.Normals = NormalsMode::Compute;
+          s.Scene.Computed.Weighting = Weightings[weighting];
+        });
+    });
+  // Its lowest value is "none": no splitting at sharp edges.
+  this->FeatureAngle->setRange(-1, 180);
+  this->FeatureAngle->setDecimals(1);
+  this->FeatureAngle->setSpecialValueText("none");
+  this->FeatureAngle->setKeyboardTracking(false);
+  normals->addRow("Feature angle", this->FeatureAngle);
+  QObject::connect(this->FeatureAngle, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this](double angle)
+    {
+      this->Engine.Edit(
+        [angle](ViewState& s) {
+          s.Scene.Computed.FeatureAngle = angle < 0 ? std::nullopt : std::optional<double>(angle);
+        });
+    });
+
+  QFormLayout* show = group("Show");
+  show->addRow(this->Toggle("edges", &ViewState::Edges));
+  show->addRow(this->Toggle("normal glyphs", &ViewState::Glyphs));
+  show->addRow(this->Toggle("comparison layout", &ViewState::Compare));
+  show->addRow(this->Toggle("key help", &ViewState::Help));
+
+  auto* buttons = new QGridLayout();
+  column->addLayout(buttons);
+  const auto button = [this, buttons](const QString& text, ViewAction action)
+  {
+    auto* b = new QPushButton(text, this);
+    buttons->addWidget(b, buttons->count() / 2, buttons->count() % 2);
+    QObject::connect(b, &QPushButton::clicked, this, [this, action] { this->Engine.Do(action); });
+  };
+  button("Reset camera", ViewAction::ResetCamera);
+  button("Screenshot", ViewAction::Screenshot);
+  button("Copy command", ViewAction::CopyCommand);
+  auto* save = new QPushButton("Save scene...", this);
+  buttons->addWidget(save, buttons->count() / 2, buttons->count() % 2);
+  QObject::connect(save, &QPushButton::clicked, this,
+    [this]
+    {
+      const QString path =
+        QFileDialog::getSaveFileName(this, "Save scene", "scene.json", "Scene files (*.json)");
+      if (!path.isEmpty())
+      {
+        this->Engine.SaveScene(path.toStdString());
+      }
+    });
+  column->addStretch(1);
+  this->Show();
+}
+
+QCheckBox* ControlPanel::Toggle(const QString& text, bool ViewState::*setting)
+{
+  auto* box = new QCheckBox(text, this);
+  this->Toggles.emplace_back(box, setting);
+  QObject::connect(box, &QCheckBox::toggled, this,
+    [this, setting](bool on)
+    { this->Engine.Edit([setting, on](ViewState& s) { s.*setting = on; }); });
+  return box;
+}
+
+void ControlPanel::Show()
+{
+  const ViewState& state = this->Engine.GetState();
+  const SceneOptions& s = state.Scene;
+  const Material m = s.EffectiveMaterial();
+  const QSignalBlocker quiet[] = { QSignalBlocker(this->Rule), QSignalBlocker(this->Model),
+    QSignalBlocker(this->MaterialRow), QSignalBlocker(this->LightChoice),
+    QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle) };
+  this->Rule->setCurrentIndex(static_cast<int>(s.ShadingRule));
+  this->Model->setCurrentIndex(static_cast<int>(s.ReflectionModel));
+  const auto& table = LectureMaterials();
+  const auto row = std::find_if(
+    table.begin(), table.end(), [&s](const Material& t) { return t.Name == s.MaterialName; });
+  this->MaterialRow->setCurrentIndex(CustomMaterial(s) || row == table.end()
+      ? static_cast<int>(table.size())
+      : static_cast<int>(row - table.begin()));
+  this->Coefficients[0]->SetColor(m.Ka);
+  this->Coefficients[1]->SetColor(m.Kd);
+  this->Coefficients[2]->SetColor(m.Ks);
+  this->Ns->SetShininess(m.Ns);
+  this->AmbientLight->SetColor(s.Ambient);
+  this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights));
+  const bool fromFile = s.Normals != NormalsMode::Compute && this->Engine.HasFileNormals();
+  const auto weighting = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);
+  this->NormalsChoice->setCurrentIndex(fromFile
+      ? 0
+      : static_cast<int>(weighting - Weightings.begin()) + (this->Engine.HasFileNormals() ? 1 : 0));
+  this->FeatureAngle->setValue(s.Computed.FeatureAngle.value_or(-1));
+  this->Lights->Show();
+  for (auto& [box, setting] : this->Toggles)
+  {
+    const QSignalBlocker quietBox(box);
+    box->setChecked(state.*setting);
+  }
+}
+}

@@ -1,0 +1,51 @@
+// The inspector's control panel (the dock beside the 3D view): every
+// setting of ViewState as a widget. A control changes the state through
+// Inspector::SetState; Show puts the state, however it changed (a key, a
+// control), back into the widgets, so that keys and controls agree.
+#ifndef shadelab_control_panel_h
+#define shadelab_control_panel_h
+
+#include "desktop/inspector.h"
+
+#include <QWidget>
+
+#include <array>
+#include <functional>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+
+namespace shadelab
+{
+class ColorEdit;
+class LightListEdit;
+class ShininessEdit;
+
+class ControlPanel : public QWidget
+{
+public:
+  explicit ControlPanel(Inspector& inspector, QWidget* parent = nullptr);
+
+  /** The widgets as the inspector's state is now. */
+  void Show();
+
+private:
+  QCheckBox* Toggle(const QString& text, bool ViewState::*setting);
+
+  Inspector& Engine;
+  QComboBox* Rule;
+  QComboBox* Model;
+  QComboBox* MaterialRow;
+  std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks
+  ShininessEdit* Ns;
+  ColorEdit* AmbientLight;
+  QComboBox* LightChoice;
+  QComboBox* NormalsChoice;
+  QDoubleSpinBox* FeatureAngle;
+  LightListEdit* Lights;
+  std::vector<std::pair<QCheckBox*, bool ViewState::*>> Toggles;
+};
+}
+
+#endif

@@ -1,0 +1,133 @@
+// The inspector's Qt window, and RunView, which opens it (desktop/inspector_window.h).
+#include "desktop/inspector_window.h"
+
+#include "core/errors.h"
+#include "desktop/control_panel.h"
+#include "desktop/x_display.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QClipboard>
+#include <QDockWidget>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QScrollArea>
+#include <QSurfaceFormat>
+
+#include <filesystem>
+#include <iostream>
+
+namespace shadelab
+{
+InspectorWindow::InspectorWindow(Inspector& inspector)
+  : Engine(inspector)
+  , View(new QVTKOpenGLNativeWidget(this))
+  , Panel(new ControlPanel(inspector, this))
+{
+  this->View->setRenderWindow(inspector.GetWindow());
+  this->setCentralWidget(this->View);
+  auto* dock = new QDockWidget("Controls", this);
+  auto* scroll = new QScrollArea(dock);
+  // Scrolled: a window lower than the panel keeps its 3D view's size.
+  scroll->setWidget(this->Panel);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(this->Panel->sizeHint().width() + 24);
+  dock->setWidget(scroll);
+  this->addDockWidget(Qt::RightDockWidgetArea, dock);
+  inspector.Changed = [this] { this->Panel->Show(); };
+  inspector.Quit = [this] { this->close(); };
+  inspector.Copy = [](const std::string& text)
+  { QApplication::clipboard()->setText(QString::fromStdString(text)); };
+  qApp->installEventFilter(this);
+}
+
+bool InspectorWindow::Open(const ImageSize& size)
+{
+  const QSize view(size.Width, size.Height);
+  this->View->resize(view);
+  this->resize(this->sizeHint() + view - this->View->sizeHint());
+  this->show();
+  QApplication::processEvents(); // the layout, and the widget's OpenGL context
+  // The 3D view exactly --size, as the headless picture: the dock takes the rest.
+  this->resize(this->size() + view - this->View->size());
+  QApplication::processEvents();
+  this->View->setFocus();
+  this->Engine.Start();
+  this->Started = true;
+  for (const std::string& key : this->EarlyKeys)
+  {
+    this->Engine.OnKey(key);
+  }
+  return this->isVisible();
+}
+
+bool InspectorWindow::eventFilter(QObject* watched, QEvent* event)
+{
+  auto* widget = qobject_cast<QWidget*>(watched);
+  if (event->type() != QEvent::KeyPress || !widget || widget->window() != this)
+  {
+    return false;
+  }
+  const auto* key = static_cast<QKeyEvent*>(event);
+  const std::string name = key->key() == Qt::Key_Escape ? "Escape" : key->text().toStdString();
+  // A number being typed keeps its keys.
+  if (name.empty() ||
+    (name != "Escape" &&
+      (qobject_cast<QLineEdit*>(widget) || qobject_cast<QAbstractSpinBox*>(widget) ||
+        qobject_cast<QPlainTextEdit*>(widget))))
+  {
+    return false;
+  }
+  // Keys that come while the window opens (xdotool's, or a quick hand)
+  // are kept for when the inspector has started.
+  if (!this->Started)
+  {
+    this->EarlyKeys.push_back(name);
+    return true;
+  }
+  return this->Engine.OnKey(name);
+}
+
+int RunView(const ViewOptions& options, const std::string& commandLine)
+{
+  // Checked first: Qt aborts the process when it finds no display.
+  std::string error;
+  void* display = OpenXDisplay(error);
+  if (!display)
+  {
+    return ReportError("view", error);
+  }
+  CloseXDisplay(display);
+  Inspector inspector(options, commandLine);
+  if (const int code = inspector.Load())
+  {
+    return code;
+  }
+  // Before the application exists (QVTKOpenGLNativeWidget's documentation).
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  int argc = 1;
+  char name[] = "shadelab-view";
+  char* argv[] = { name, nullptr };
+  QApplication application(argc, argv);
+  InspectorWindow window(inspector);
+  if (!window.Open(options.Scene.Size))
+  {
+    return 0;
+  }
+  // Titled once started: what finds the window by its title (the window
+  // tests' xdotool) finds it ready for the mouse.
+  const std::string title =
+    "shadelab - " + std::filesystem::path(options.Scene.Mesh).filename().string();
+  window.setWindowTitle(QString::fromStdString(title));
+  if (options.MeasureDrag > 0)
+  {
+    return inspector.MeasureDrag();
+  }
+  std::cout << "shadelab: " << title << ": press h for the keys" << std::endl;
+  return application.exec();
+}
+}

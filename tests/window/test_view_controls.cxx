@@ -1,0 +1,231 @@
+// The inspector's control panel in process (Qt's QTest on an Xvfb of the
+// test's own, viewer.cxx): each control changes its own setting of the
+// picture and nothing else, as the picture's render command (Copy command)
+// says it; a key moves the controls that show what it changed; closing the
+// window ends it.
+#include "core/scene_arguments.h"
+#include "desktop/inspector_window.h"
+#include "viewer.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCommand.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRendererCollection.h>
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSlider>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QTimer>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+using namespace shadelab;
+using namespace shadelab_test;
+
+namespace
+{
+// The render command's options, each to its value (flags to "", repeated
+// --light values joined).
+std::map<std::string, std::string> Settings(const Inspector& inspector)
+{
+  std::map<std::string, std::string> settings;
+  const std::vector<std::string> words = SceneArguments(inspector.ShownScene());
+  for (std::size_t i = 0; i < words.size(); ++i)
+  {
+    std::string& value = settings[words[i]];
+    if (i + 1 < words.size() && words[i + 1].rfind("--", 0) != 0)
+    {
+      value += words[++i] + ";";
+    }
+  }
+  return settings;
+}
+
+// The options whose values differ between two settings.
+std::set<std::string> Changed(
+  const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b)
+{
+  std::set<std::string> changed;
+  for (const auto* one : { &a, &b })
+  {
+    const auto* other = one == &a ? &b : &a;
+    for (const auto& [option, value] : *one)
+    {
+      const auto it = other->find(option);
+      if (it == other->end() || it->second != value)
+      {
+        changed.insert(option);
+      }
+    }
+  }
+  return changed;
+}
+
+void Type(QAbstractSpinBox* box, const QString& text)
+{
+  box->setFocus();
+  box->selectAll();
+  QTest::keyClicks(box, text);
+  QTest::keyClick(box, Qt::Key_Return);
+}
+}
+
+TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
+{
+  ViewOptions options;
+  options.Scene.Mesh = TestMesh("spot.obj").string();
+  options.Scene.Size = { 240, 180 };
+  options.Scene.CameraPosition = Vec3{ 3.9, 1.5, -2.2 };
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  int argc = 1;
+  char name[] = "test_view_controls";
+  char* argv[] = { name, nullptr };
+  QApplication application(argc, argv);
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+
+  const auto find = [&window](const char* name) -> QWidget*
+  {
+    QWidget* widget = window.findChild<QWidget*>(name);
+    EXPECT_NE(widget, nullptr) << name;
+    return widget;
+  };
+  const auto checkBox = [&window](const QString& text) -> QCheckBox*
+  {
+    for (QCheckBox* box : window.findChildren<QCheckBox*>())
+    {
+      if (box->text().startsWith(text))
+      {
+        return box;
+      }
+    }
+    ADD_FAILURE() << text.toStdString();
+    return nullptr;
+  };
+  // Each control, what it does, and the options it may change.
+  struct Case
+  {
+    const char* What;
+    std::function<void()> Do;
+    std::set<std::string> Changes;
+  };
+  const std::vector<Case> cases{
+    { "rule", [&] { QTest::keyClick(find("rule"), Qt::Key_Up); }, { "--shading" } },
+    { "reflection", [&] { QTest::keyClick(find("reflection"), Qt::Key_Down); },
+      { "--reflection" } },
+    { "material", [&] { QTest::keyClick(find("material"), Qt::Key_Down); }, { "--material" } },
+    { "ka", [&] { Type(window.findChild<QDoubleSpinBox*>("ka red"), "0.5"); }, { "--ka" } },
+    { "kd", [&] { Type(window.findChild<QDoubleSpinBox*>("kd blue"), "0.125"); }, { "--kd" } },
+    { "ks", [&] { Type(window.findChild<QDoubleSpinBox*>("ks green"), "0.75"); }, { "--ks" } },
+    { "ns slider", [&] { QTest::keyClick(window.findChild<QSlider*>(), Qt::Key_PageUp); },
+      { "--ns" } },
+    { "ns typed", [&] { Type(window.findChild<QDoubleSpinBox*>("ns number"), "7"); }, { "--ns" } },
+    { "Ia", [&] { Type(window.findChild<QDoubleSpinBox*>("Ia green"), "0.4"); }, { "--ambient" } },
+    { "lights", [&] { QTest::keyClick(find("lights"), Qt::Key_Down); }, { "--light" } },
+    { "add spot", [&] { static_cast<QPushButton*>(find("add spot"))->click(); }, { "--light" } },
+    { "light position", [&] { Type(window.findChild<QDoubleSpinBox*>("light position x"), "1.5"); },
+      { "--light" } },
+    { "light direction",
+      [&] { Type(window.findChild<QDoubleSpinBox*>("light direction y"), "-2"); }, { "--light" } },
+    { "light colour", [&] { Type(window.findChild<QDoubleSpinBox*>("light color red"), "0.5"); },
+      { "--light" } },
+    { "cone angle", [&] { Type(window.findChild<QDoubleSpinBox*>("cone angle"), "20"); },
+      { "--light" } },
+    { "exponent", [&] { Type(window.findChild<QDoubleSpinBox*>("exponent"), "3"); },
+      { "--light" } },
+    { "add point", [&] { static_cast<QPushButton*>(find("add point"))->click(); }, { "--light" } },
+    { "remove", [&] { static_cast<QPushButton*>(find("remove light"))->click(); }, { "--light" } },
+    { "specular", [&] { checkBox("specular")->click(); }, { "--ks" } },
+    { "normals", [&] { QTest::keyClick(find("normals"), Qt::Key_Down); },
+      { "--normals", "--weighting" } },
+    { "feature angle", [&] { Type(window.findChild<QDoubleSpinBox*>("feature angle"), "30"); },
+      { "--feature-angle" } },
+    { "edges", [&] { checkBox("edges")->click(); }, { "--edges" } },
+    { "glyphs", [&] { checkBox("normal glyphs")->click(); }, { "--normal-glyphs" } },
+  };
+  for (const Case& c : cases)
+  {
+    const auto before = Settings(inspector);
+    c.Do();
+    const std::set<std::string> changed = Changed(before, Settings(inspector));
+    EXPECT_FALSE(changed.empty()) << c.What << " changed nothing";
+    for (const std::string& option : changed)
+    {
+      EXPECT_TRUE(c.Changes.count(option)) << c.What << " changed " << option;
+    }
+  }
+
+  // The light list after those edits: one spot light, as edited.
+  const std::vector<Light>& lights = inspector.GetState().Scene.Lights;
+  ASSERT_EQ(lights.size(), 1u);
+  EXPECT_EQ(lights[0].Kind, LightKind::Spot);
+  EXPECT_EQ(lights[0].Position[0], 1.5);
+  EXPECT_EQ(lights[0].Direction[1], -2);
+  EXPECT_EQ(lights[0].Color[0], 0.5);
+  EXPECT_EQ(lights[0].HalfAngleDeg, 20);
+  EXPECT_EQ(lights[0].Exponent, 3);
+  EXPECT_EQ(inspector.GetState().Lights, LightMode::Given);
+
+  // The selected spot light's handle in the 3D view: put at the view's
+  // centre, dragged 30 pixels right by the interactor's own events, the
+  // light moves and keeps its direction.
+  Type(window.findChild<QDoubleSpinBox*>("light position x"), "0");
+  Type(window.findChild<QDoubleSpinBox*>("light position y"), "0.2");
+  Type(window.findChild<QDoubleSpinBox*>("light position z"), "0.2");
+  vtkRenderWindow* view = inspector.GetWindow();
+  vtkRenderer* panel = nullptr;
+  view->GetRenderers()->InitTraversal();
+  while (vtkRenderer* r = view->GetRenderers()->GetNextItem())
+  {
+    panel = !panel && r->GetInteractive() && r->GetLayer() == 0 ? r : panel;
+  }
+  ASSERT_NE(panel, nullptr);
+  panel->SetWorldPoint(0, 0.2, 0.2, 1);
+  panel->WorldToDisplay();
+  const double* at = panel->GetDisplayPoint();
+  vtkRenderWindowInteractor* mouse = view->GetInteractor();
+  const Light before = inspector.GetState().Scene.Lights[0];
+  view->Render(); // the handle drawn, where the press picks it
+  mouse->SetEventInformation(static_cast<int>(at[0]), static_cast<int>(at[1]));
+  mouse->InvokeEvent(vtkCommand::MouseMoveEvent); // over the handle first, as a hand would
+  mouse->InvokeEvent(vtkCommand::LeftButtonPressEvent);
+  mouse->SetEventInformation(static_cast<int>(at[0]) + 30, static_cast<int>(at[1]));
+  mouse->InvokeEvent(vtkCommand::MouseMoveEvent);
+  mouse->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+  const Light after = inspector.GetState().Scene.Lights[0];
+  EXPECT_NE(after.Position, before.Position) << "the drag moved the light";
+  EXPECT_EQ(after.Direction, before.Direction);
+
+  // Keys: the controls follow.
+  auto* rule = static_cast<QComboBox*>(find("rule"));
+  auto* material = static_cast<QComboBox*>(find("material"));
+  inspector.OnKey("1");
+  EXPECT_EQ(rule->currentText().toStdString(), "flat");
+  inspector.OnKey("m");
+  EXPECT_EQ(material->currentText().toStdString(), inspector.GetState().Scene.MaterialName)
+    << "m: a row of the table again, the custom coefficients gone";
+  const bool specular = checkBox("specular")->isChecked();
+  inspector.OnKey("s");
+  EXPECT_NE(checkBox("specular")->isChecked(), specular);
+  auto* ns = window.findChild<QDoubleSpinBox*>("ns number");
+  const double shininess = ns->value();
+  inspector.OnKey("+");
+  EXPECT_NEAR(ns->value(), shininess * 1.5, 1e-3);
+
+  // Closing the window (what a window manager's close button asks for)
+  // ends the event loop with 0.
+  QTimer::singleShot(0, &window, [&window] { window.close(); });
+  QTimer::singleShot(10000, &application, [] { QCoreApplication::exit(1); }); // still open
+  EXPECT_EQ(application.exec(), 0);
+}

@@ -2,12 +2,6 @@
 
 #include "core/output_file.h"
 
-#include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
-#include <vtkMapper.h>
-#include <vtkShader.h>
-#include <vtkShaderProgram.h>
-
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,29 +11,19 @@
 namespace shadelab
 {
 ShaderDump::ShaderDump(vtkMapper* mapper, const std::string& folder, const std::string& name)
-  : Mapper(mapper)
-  , Base((std::filesystem::path(folder) / name).string())
-  , Observer(vtkSmartPointer<vtkCallbackCommand>::New())
-{
-  this->Observer->SetClientData(this);
-  this->Observer->SetCallback(
-    [](vtkObject*, unsigned long, void* self, void* data)
-    {
-      auto* dump = static_cast<ShaderDump*>(self);
-      auto* program = static_cast<vtkShaderProgram*>(data);
-      if (!dump->Written)
+  : Base((std::filesystem::path(folder) / name).string())
+  , Watch(
+      [this](const ShaderSources& sources)
       {
-        dump->Written = true;
-        dump->Write(".vert", program->GetVertexShader()->GetSource());
-        dump->Write(".frag", program->GetFragmentShader()->GetSource());
-      }
-    });
-  mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
-}
-
-ShaderDump::~ShaderDump()
+        if (!this->Written)
+        {
+          this->Written = true;
+          this->Write(".vert", sources.Vertex);
+          this->Write(".frag", sources.Fragment);
+        }
+      })
 {
-  this->Mapper->RemoveObserver(this->Observer);
+  this->Watch.Watch(mapper);
 }
 
 std::string ShaderDump::PrepareFolder(const std::string& folder)

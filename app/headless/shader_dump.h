@@ -4,11 +4,10 @@
 #ifndef shadelab_shader_dump_h
 #define shadelab_shader_dump_h
 
-#include <vtkSmartPointer.h>
+#include "scene/shader_sources.h"
 
 #include <string>
 
-class vtkCallbackCommand;
 class vtkMapper;
 
 namespace shadelab
@@ -18,7 +17,6 @@ class ShaderDump
 public:
   /** Writes the programs that mapper draws with into folder, named name. */
   ShaderDump(vtkMapper* mapper, const std::string& folder, const std::string& name);
-  ~ShaderDump();
 
   /** Creates folder if needed; an error text or "". */
   static std::string PrepareFolder(const std::string& folder);
@@ -33,12 +31,11 @@ private:
 
   void Write(const std::string& extension, const std::string& source);
 
-  vtkMapper* Mapper;
   std::string Base;
   std::string ErrorFile;
   std::string Error;
   bool Written = false;
-  vtkSmartPointer<vtkCallbackCommand> Observer;
+  ShaderSourceWatch Watch; // last: it calls back into the members above
 };
 }
 

@@ -58,7 +58,7 @@ const char* const SpecularFalloffSource = R"glsl(float shadelabSpecularFalloff(f
 
 const char* const IlluminateHeadSource = R"glsl(vec3 shadelabIlluminate(vec3 P, vec3 N)
 {
-  vec3 I = shadelabKa * shadelabIa;
+  vec3 I = shadelabKa * shadelabIa; // shadelab: ambient
 )glsl";
 
 const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
@@ -133,25 +133,25 @@ const char* const AllFeaturesLightLoopSource = R"glsl(  for (int i = 0; i < shad
     float NdotL = dot(N, L);
     if (lit && NdotL > shadelabGrazingLimit)
     {
-      vec3 term = NdotL * shadelabKd;
+      vec3 term = NdotL * shadelabKd; // shadelab: diffuse
       float d = -1.0;
       if (shadelabReflection == 0)
       {
         vec3 sum = L + V;
         float len = length(sum);
         vec3 H = sum / max(len, shadelabTinyLength);
-        d = len > shadelabTinyLength && dot(N, H) > 0.0 ? 0.5 * dot(N - H, N - H) : -1.0;
+        d = len > shadelabTinyLength && dot(N, H) > 0.0 ? 0.5 * dot(N - H, N - H) : -1.0; // shadelab: specular
       }
       else
       {
         vec3 R = (2.0 * NdotL) * N - L;
-        d = dot(V, R) > 0.0 ? 0.5 * dot(V - R, V - R) : -1.0;
+        d = dot(V, R) > 0.0 ? 0.5 * dot(V - R, V - R) : -1.0; // shadelab: specular
       }
       if (d >= 0.0)
       {
-        term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs;
+        term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs; // shadelab: specular
       }
-      I += Il * term;
+      I += Il * term; // shadelab: diffuse, specular
     }
   }
   return I;
@@ -240,19 +240,19 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular)
   s += FillGlsl(R"glsl(  NdotL = dot(N, L);
   if ($NdotL > shadelabGrazingLimit)
   {
-    vec3 term = NdotL * shadelabKd;
+    vec3 term = NdotL * shadelabKd; // shadelab: diffuse
 )glsl",
     guard);
   if (specular)
   {
-    s += R"glsl(    d = shadelabSpecularD(N, L, V);
+    s += R"glsl(    d = shadelabSpecularD(N, L, V); // shadelab: specular
     if (d >= 0.0)
     {
-      term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs;
+      term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs; // shadelab: specular
     }
 )glsl";
   }
-  return s + R"glsl(    I += Il * term;
+  return s + R"glsl(    I += Il * term; // shadelab: diffuse, specular
   }
 )glsl";
 }

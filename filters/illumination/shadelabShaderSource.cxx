@@ -9,6 +9,7 @@ namespace shadelab
 const char* const FaceNormalArrayName = "shadelabFaceNormal";
 const char* const FaceNormalAttributeName = "shadelabFaceNormalMC";
 const char* const VertexKdAttributeName = "shadelabVertexKd";
+const char* const TermMarker = "// shadelab: ";
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
@@ -32,7 +33,7 @@ const char* const VertexLightingSource = R"glsl(  {
     }
     else
     {
-      shadelabFront = shadelabKa * shadelabIa;
+      shadelabFront = shadelabKa * shadelabIa; // shadelab: ambient
       shadelabBack = shadelabFront;
     }
   }

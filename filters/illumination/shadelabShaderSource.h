@@ -55,6 +55,13 @@ extern const char* const FaceNormalArrayName;
 extern const char* const FaceNormalAttributeName;
 /** The vertex attribute (RGBA, alpha unused) that VertexKd reads. */
 extern const char* const VertexKdAttributeName;
+/**
+ * The comment that ends each generated line computing a term of the
+ * equation, followed by the terms' names, comma-separated ("ambient",
+ * "diffuse", "specular"): `I += Il * term; // shadelab: diffuse, specular`.
+ * The window's shader panel highlights those lines.
+ */
+extern const char* const TermMarker;
 }
 
 #endif

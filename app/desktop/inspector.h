@@ -19,6 +19,7 @@
 #include "image/image_writer_process.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene_cache.h"
+#include "scene/shader_sources.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -88,6 +89,8 @@ public:
   void SetState(const ViewState& state);
   /** SetState of the state as `edit` changes it. */
   void Edit(const std::function<void(ViewState&)>& edit);
+  /** The GLSL that drew the (first) panel's mesh in the last frame. */
+  const ShaderSources& GetShownShaders() const { return this->ShownShaders; }
   /** The mesh has normals of its own: the first of the normals' choices. */
   bool HasFileNormals() const { return this->FileNormals; }
   /** A light of `kind` where the camera is, shining along the view. */
@@ -197,6 +200,8 @@ private:
   Clock::time_point FrameStart;
   std::deque<double> FrameMs; // the last frames' times
   std::unique_ptr<ImageWriterProcess> Writer;
+  ShaderSources ShownShaders;
+  ShaderSourceWatch ShaderWatch{ [this](const ShaderSources& s) { this->ShownShaders = s; } };
 };
 }
 

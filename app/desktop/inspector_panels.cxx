@@ -46,6 +46,10 @@ void Inspector::Apply()
       continue;
     }
     this->ShowExtras(slot, scene, shown.Mesh->Mesh);
+    if (i == 0)
+    {
+      this->ShaderWatch.Watch(shown.Scene->Actor->GetMapper());
+    }
     slot.Label->SetInput(panels[i].Label.c_str());
     slot.Label->SetVisibility(this->State.Compare);
   }

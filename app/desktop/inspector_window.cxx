@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "desktop/control_panel.h"
+#include "desktop/shader_panel.h"
 #include "desktop/x_display.h"
 
 #include <QVTKOpenGLNativeWidget.h>
@@ -26,6 +27,7 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   : Engine(inspector)
   , View(new QVTKOpenGLNativeWidget(this))
   , Panel(new ControlPanel(inspector, this))
+  , Shaders(new ShaderPanel(this))
 {
   this->View->setRenderWindow(inspector.GetWindow());
   this->setCentralWidget(this->View);
@@ -38,7 +40,18 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   scroll->setMinimumWidth(this->Panel->sizeHint().width() + 24);
   dock->setWidget(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
-  inspector.Changed = [this] { this->Panel->Show(); };
+  // Tabbed with the controls: the window keeps its size.
+  auto* shaderDock = new QDockWidget("Shader", this);
+  shaderDock->setObjectName("shader dock");
+  shaderDock->setWidget(this->Shaders);
+  this->addDockWidget(Qt::RightDockWidgetArea, shaderDock);
+  this->tabifyDockWidget(dock, shaderDock);
+  dock->raise();
+  inspector.Changed = [this]
+  {
+    this->Panel->Show();
+    this->Shaders->Show(this->Engine.GetShownShaders());
+  };
   inspector.Quit = [this] { this->close(); };
   inspector.Copy = [](const std::string& text)
   { QApplication::clipboard()->setText(QString::fromStdString(text)); };
@@ -57,6 +70,7 @@ bool InspectorWindow::Open(const ImageSize& size)
   QApplication::processEvents();
   this->View->setFocus();
   this->Engine.Start();
+  this->Shaders->Show(this->Engine.GetShownShaders());
   this->Started = true;
   for (const std::string& key : this->EarlyKeys)
   {

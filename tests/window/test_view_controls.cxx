@@ -2,7 +2,8 @@
 // test's own, viewer.cxx): each control changes its own setting of the
 // picture and nothing else, as the picture's render command (Copy command)
 // says it; a key moves the controls that show what it changed; closing the
-// window ends it.
+// window ends it. The shader panel shows the GLSL that runs, and highlights
+// the lines that the generator marked for each term.
 #include "core/scene_arguments.h"
 #include "desktop/inspector_window.h"
 #include "viewer.h"
@@ -17,16 +18,21 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSlider>
 #include <QSurfaceFormat>
+#include <QTabWidget>
 #include <QTest>
 #include <QTimer>
 
 #include <gtest/gtest.h>
 
 #include <map>
+#include <memory>
+#include <regex>
 #include <set>
+#include <sstream>
 
 using namespace shadelab;
 using namespace shadelab_test;
@@ -70,6 +76,77 @@ std::set<std::string> Changed(
   return changed;
 }
 
+// The inspector's window on spot.obj at 240x180, from the given settings.
+ViewOptions SpotView(Shading rule)
+{
+  ViewOptions options;
+  options.Scene.Mesh = TestMesh("spot.obj").string();
+  options.Scene.Size = { 240, 180 };
+  options.Scene.CameraPosition = Vec3{ 3.9, 1.5, -2.2 };
+  options.Scene.ShadingRule = rule;
+  return options;
+}
+
+// Qt's application, made as RunView makes it (the widget's format first).
+std::unique_ptr<QApplication> MakeApplication()
+{
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  static int argc = 1;
+  static char name[] = "test_view_controls";
+  static char* argv[] = { name, nullptr };
+  return std::make_unique<QApplication>(argc, argv);
+}
+
+// The lines (0-based) of source that end in the generator's marker naming
+// term ("": any term).
+std::set<int> MarkedLines(const std::string& source, const std::string& term)
+{
+  static const std::regex marker(
+    "// shadelab: ((ambient|diffuse|specular)(, (ambient|diffuse|specular))*)$");
+  std::set<int> lines;
+  std::istringstream in(source);
+  std::string line;
+  std::smatch match;
+  for (int n = 0; std::getline(in, line); ++n)
+  {
+    if (std::regex_search(line, match, marker) && match[1].str().find(term) != std::string::npos)
+    {
+      lines.insert(n);
+    }
+  }
+  return lines;
+}
+
+// The lines of source that hold any of codes.
+std::set<int> LinesWith(const std::string& source, const std::vector<std::string>& codes)
+{
+  std::set<int> lines;
+  std::istringstream in(source);
+  std::string line;
+  for (int n = 0; std::getline(in, line); ++n)
+  {
+    for (const std::string& code : codes)
+    {
+      if (line.find(code) != std::string::npos)
+      {
+        lines.insert(n);
+      }
+    }
+  }
+  return lines;
+}
+
+// The lines that edit shows highlighted.
+std::set<int> Highlighted(const QPlainTextEdit* edit)
+{
+  std::set<int> lines;
+  for (const QTextEdit::ExtraSelection& selection : edit->extraSelections())
+  {
+    lines.insert(selection.cursor.blockNumber());
+  }
+  return lines;
+}
+
 void Type(QAbstractSpinBox* box, const QString& text)
 {
   box->setFocus();
@@ -81,17 +158,10 @@ void Type(QAbstractSpinBox* box, const QString& text)
 
 TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
 {
-  ViewOptions options;
-  options.Scene.Mesh = TestMesh("spot.obj").string();
-  options.Scene.Size = { 240, 180 };
-  options.Scene.CameraPosition = Vec3{ 3.9, 1.5, -2.2 };
+  const ViewOptions options = SpotView(Shading::Phong);
   Inspector inspector(options, "shadelab view");
   ASSERT_EQ(inspector.Load(), 0);
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  int argc = 1;
-  char name[] = "test_view_controls";
-  char* argv[] = { name, nullptr };
-  QApplication application(argc, argv);
+  const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open(options.Scene.Size));
 
@@ -226,6 +296,69 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
   // Closing the window (what a window manager's close button asks for)
   // ends the event loop with 0.
   QTimer::singleShot(0, &window, [&window] { window.close(); });
-  QTimer::singleShot(10000, &application, [] { QCoreApplication::exit(1); }); // still open
-  EXPECT_EQ(application.exec(), 0);
+  QTimer::singleShot(10000, application.get(), [] { QCoreApplication::exit(1); }); // still open
+  EXPECT_EQ(application->exec(), 0);
+}
+
+TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
+{
+  Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open({ 240, 180 }));
+  const auto* vertex = window.findChild<QPlainTextEdit*>("vertex source");
+  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
+  const auto* tabs = window.findChild<QTabWidget*>();
+  ASSERT_TRUE(vertex && fragment && tabs);
+  // The code that computes each term: its lines are the marked ones.
+  const std::map<std::string, std::vector<std::string>> computes{
+    { "ambient", { "shadelabKa * shadelabIa" } },
+    { "diffuse", { "NdotL * shadelabKd", "Il * term" } },
+    { "specular", { "d = shadelabSpecularD(", "* shadelabKs", "Il * term" } },
+  };
+  const TempDir dir;
+  for (const Shading rule : { Shading::Gouraud, Shading::Phong })
+  {
+    SCOPED_TRACE(ToString(rule));
+    if (rule == Shading::Phong)
+    {
+      QTest::keyClick(window.findChild<QComboBox*>("rule"), Qt::Key_Down); // gouraud, phong
+    }
+    ASSERT_EQ(inspector.GetState().Scene.ShadingRule, rule);
+    // What `render --dump-shaders` writes for the picture the view shows.
+    std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
+      (dir / "picture.png").string(), "--dump-shaders", dir.path().string() };
+    const std::vector<std::string> scene = SceneArguments(inspector.ShownScene());
+    args.insert(args.end(), scene.begin(), scene.end());
+    const RunResult run = RunShadelab(args);
+    ASSERT_EQ(run.ExitCode, 0) << run.Stderr;
+    const std::string dumped = dir / (std::string(ToString(rule)) + "-blinn");
+    EXPECT_EQ(vertex->toPlainText().toStdString(), Slurp(dumped + ".vert"));
+    EXPECT_EQ(fragment->toPlainText().toStdString(), Slurp(dumped + ".frag"));
+
+    // Gouraud lights in the vertex stage, phong in the fragment stage.
+    const bool perVertex = rule == Shading::Gouraud;
+    const auto* lit = perVertex ? vertex : fragment;
+    const auto* unlit = perVertex ? fragment : vertex;
+    const std::string source = lit->toPlainText().toStdString();
+    EXPECT_NE(source.find("shadelabIlluminate("), std::string::npos);
+    EXPECT_EQ(unlit->toPlainText().toStdString().find("shadelabIlluminate("), std::string::npos);
+    for (const char* term : { "ambient", "diffuse", "specular", "total" })
+    {
+      window.findChild<QPushButton*>(QString("highlight ") + term)->click();
+      const bool all = std::string(term) == "total";
+      const std::set<int> marked = MarkedLines(source, all ? "" : term);
+      ASSERT_FALSE(marked.empty()) << term;
+      if (!all)
+      {
+        EXPECT_EQ(marked, LinesWith(source, computes.at(term)))
+          << term << ": marked where computed";
+        EXPECT_EQ(tabs->currentWidget(), lit) << term;
+        EXPECT_EQ(lit->textCursor().blockNumber(), *marked.begin()) << term << ": shown first";
+      }
+      EXPECT_EQ(Highlighted(lit), marked) << term;
+      EXPECT_TRUE(Highlighted(unlit).empty()) << term;
+    }
+  }
 }

@@ -1,9 +1,9 @@
 #include "desktop/shader_panel.h"
 
+#include "desktop/code_view.h"
 #include "shadelabShaderSource.h"
 
 #include <QButtonGroup>
-#include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -108,14 +108,10 @@ ShaderPanel::ShaderPanel(QWidget* parent)
   : QWidget(parent)
   , Tabs(new QTabWidget(this))
 {
-  const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
   for (std::size_t i = 0; i < this->Stages.size(); ++i)
   {
-    auto* edit = new QPlainTextEdit(this);
+    auto* edit = new CodeView(this);
     edit->setObjectName(i == 0 ? "vertex source" : "fragment source");
-    edit->setReadOnly(true);
-    edit->setFont(mono);
-    edit->setLineWrapMode(QPlainTextEdit::NoWrap);
     this->Stages[i] = edit;
     this->Tabs->addTab(edit, i == 0 ? "Vertex" : "Fragment");
   }

@@ -1,6 +1,6 @@
 // The running shader beside the picture: the complete vertex and fragment
 // GLSL that draws the view now (Inspector::GetShownShaders, the program the
-// mapper bound), in two read-only tabs, with the lines that compute each
+// mapper bound), in two read-only tabs with line numbers, with the lines that compute each
 // term of the equation on a background of the term's colour. The generator
 // marks those lines (TermMarker, shadelabShaderSource.h); nothing here
 // guesses from variable names. The term buttons are the colours' legend

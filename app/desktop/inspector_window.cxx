@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "desktop/control_panel.h"
+#include "desktop/probe_panel.h"
 #include "desktop/x_display.h"
 
 #include <QVTKOpenGLNativeWidget.h>
@@ -26,6 +27,7 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   : Engine(inspector)
   , View(new QVTKOpenGLNativeWidget(this))
   , Panel(new ControlPanel(inspector, this))
+  , Readout(new ProbePanel(inspector, this))
 {
   this->View->setRenderWindow(inspector.GetWindow());
   this->setCentralWidget(this->View);
@@ -38,6 +40,12 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   scroll->setMinimumWidth(this->Panel->sizeHint().width() + 24);
   dock->setWidget(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
+  auto* probe = new QDockWidget("Probe", this);
+  probe->setWidget(this->Readout);
+  // On the other side: under the controls it would make the window taller
+  // than the 3D view's --size.
+  this->addDockWidget(Qt::LeftDockWidgetArea, probe);
+  inspector.ProbeChanged = [this] { this->Readout->Show(); };
   inspector.Changed = [this] { this->Panel->Show(); };
   inspector.Quit = [this] { this->close(); };
   inspector.Copy = [](const std::string& text)

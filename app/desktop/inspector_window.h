@@ -1,6 +1,6 @@
 // shadelab-view's Qt window: the inspector's 3D view (VTK's
 // QVTKOpenGLNativeWidget showing the Inspector's render window) with the
-// control panel in a dock beside it. Every key of the key table
+// control panel in a dock beside it, and the probe's readout in another. Every key of the key table
 // (desktop/view_keys.h) works wherever the focus is, but in a field being
 // typed into.
 #ifndef shadelab_inspector_window_h
@@ -18,6 +18,7 @@ class QVTKOpenGLNativeWidget;
 namespace shadelab
 {
 class ControlPanel;
+class ProbePanel;
 
 class InspectorWindow : public QMainWindow
 {
@@ -36,6 +37,7 @@ private:
   Inspector& Engine;
   QVTKOpenGLNativeWidget* View;
   ControlPanel* Panel;
+  ProbePanel* Readout;
   bool Started = false;
   std::vector<std::string> EarlyKeys; // pressed before the inspector started
 };

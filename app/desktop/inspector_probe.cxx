@@ -37,7 +37,7 @@ namespace
 // that they read the same on any mesh.
 double ArrowLength(const double bounds[6])
 {
-  return 0.15 * std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  return 0.25 * std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
 }
 
 // An arrow from `from` along `direction`, `length` long (VTK's arrow runs

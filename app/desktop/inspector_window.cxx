@@ -42,9 +42,11 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
   auto* probe = new QDockWidget("Probe", this);
   probe->setWidget(this->Readout);
-  // On the other side: under the controls it would make the window taller
-  // than the 3D view's --size.
-  this->addDockWidget(Qt::LeftDockWidgetArea, probe);
+  // Beside the controls, not under them (the window would grow taller than
+  // the 3D view's --size) nor left of the view (which stays at the window's
+  // top left, where the window tests' mouse finds it).
+  this->addDockWidget(Qt::RightDockWidgetArea, probe);
+  this->splitDockWidget(dock, probe, Qt::Horizontal);
   inspector.ProbeChanged = [this] { this->Readout->Show(); };
   inspector.Changed = [this] { this->Panel->Show(); };
   inspector.Quit = [this] { this->close(); };

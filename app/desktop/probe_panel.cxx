@@ -33,10 +33,11 @@ ProbePanel::ProbePanel(Inspector& inspector, QWidget* parent)
   this->Readout->setReadOnly(true);
   this->Readout->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   this->Readout->setLineWrapMode(QPlainTextEdit::NoWrap); // the lines are columns
-  this->Readout->setMinimumWidth(this->Readout->fontMetrics().averageCharWidth() * 60);
+  this->Readout->setMinimumWidth(this->Readout->fontMetrics().averageCharWidth() * 48);
   auto* legend = new QLabel(Swatch('N', "N") + "&nbsp;&nbsp;" + Swatch('L', "L (each light)") +
       "&nbsp;&nbsp;" + Swatch('H', "H (Blinn-Phong) or R (Phong)"),
     this);
+  legend->setWordWrap(true);
   auto* clear = new QPushButton("Clear probe", this);
   clear->setObjectName("clear probe");
   QObject::connect(clear, &QPushButton::clicked, this, [this] { this->Engine.ClearProbe(); });

@@ -145,6 +145,7 @@ bool Inspector::Reprobe()
     {
       probe.Rendered[c] = rgb->GetValue(c) / 255.0;
     }
+    probe.RenderedFrom = "the window's 8-bit pixel, read without the arrows";
     this->Probed = probe;
     std::cout << "shadelab: probe: " << ProbeJson(probe).dump() << std::endl;
   }

@@ -146,7 +146,7 @@ std::string ProbeText(const PixelProbe& p)
       pixel + ": no triangle under its centre, the nearest edge " + ProbeNumber(p.EdgeDistance) +
         " px away");
     out.Add("", "background = " + ProbeTriple(p.Background));
-    out.Add("", rendered, "the float render at the pixel");
+    out.Add("", rendered, p.RenderedFrom);
     out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
     return out.Str();
   }
@@ -206,7 +206,7 @@ std::string ProbeText(const PixelProbe& p)
       break;
   }
   out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
-  out.Add("", rendered, "the float render at the pixel");
+  out.Add("", rendered, p.RenderedFrom);
   out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
   return out.Str();
 }

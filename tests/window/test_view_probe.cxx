@@ -157,6 +157,7 @@ TEST(Probe, CtrlClickExplainsThePixelAsTheCommandLineDoesWithArrowsAlongNLH)
   ExpectNear(window_probe["rendered"], headless["rendered"], 1.5 / 255, "rendered");
   EXPECT_EQ(CheckArrows(inspector, headless), (std::vector<std::string>{ "N", "L1", "H1" }));
   EXPECT_EQ(readout->toPlainText().toStdString(), ProbeText(*inspector.GetProbe()));
+  EXPECT_NE(readout->toPlainText().indexOf("the window's 8-bit pixel"), -1);
 
   // Another reflection model: the same pixel explained again, R for H.
   inspector.Edit([](ViewState& s) { s.Scene.ReflectionModel = Reflection::Phong; });

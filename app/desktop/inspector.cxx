@@ -52,6 +52,7 @@ void Inspector::Start()
   this->SetUpOverlay();
   this->ObserveFrames();
   this->ObserveDrags();
+  this->ObserveClicks();
   this->Apply();
   this->ResetCamera(); // the panels' aspect
   this->Window->Render();
@@ -81,6 +82,7 @@ void Inspector::Show(bool layout)
   {
     this->ResetCamera();
   }
+  this->Reprobe();
   this->Window->Render();
   this->RefreshDifference();
   if (this->Changed)
@@ -246,6 +248,10 @@ void Inspector::ObserveDrags()
       if (inspector->Options.InteractiveShading)
       {
         inspector->Apply();
+      }
+      // The probed pixel shows another point of the surface now.
+      if (inspector->Reprobe() || inspector->Options.InteractiveShading)
+      {
         inspector->Window->Render();
       }
       inspector->RefreshDifference();

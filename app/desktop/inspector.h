@@ -17,6 +17,7 @@
 #include "desktop/vtkShadelabInteractorStyle.h"
 #include "image/comparison_picture.h"
 #include "image/image_writer_process.h"
+#include "probe/pixel_probe.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene_cache.h"
 #include "scene/shader_sources.h"
@@ -37,6 +38,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +62,10 @@ std::string NumberedName(const std::string& mesh, const std::string& extension);
 
 /** value with `digits` decimals, as the HUD and the drag's timing print it. */
 std::string Fixed(double value, int digits);
+
+/** The probe's arrow colours (the probe panel's legend): 'N', 'L', and 'H'
+ * for H or R. */
+Rgb ProbeArrowColor(char vector);
 
 // What the picture shows: the keys and the control panel change it.
 struct ViewState
@@ -115,7 +121,23 @@ public:
    * where, or reports why not. */
   void SaveScene(const std::string& path) const;
 
+  // The probe: one pixel of the single view explained (probe/pixel_probe.h),
+  // its N, L and H or R drawn as arrows at the surface point, explained
+  // again whenever the picture changes, until cleared.
+  /** Explains pixel `at` (X from the left, Y from the top) of the view. */
+  void Probe(Pixel at);
+  void ClearProbe();
+  /** The probed pixel explained as the view shows it now, if any. */
+  const std::optional<PixelProbe>& GetProbe() const { return this->Probed; }
+  struct ProbeArrow
+  {
+    std::string Name; // "N", "L1", "H1" or "R1", ... (the light's number)
+    vtkSmartPointer<vtkActor> Actor;
+  };
+  const std::vector<ProbeArrow>& GetProbeArrows() const { return this->Arrows; }
+
   std::function<void()> Changed;                // after a key or SetState changed the state
+  std::function<void()> ProbeChanged;           // after a probe, its update or its clearing
   std::function<void()> Quit;                   // the quit key
   std::function<void(const std::string&)> Copy; // text for the clipboard
 
@@ -162,6 +184,13 @@ private:
   void NextLights();
   void NextWeighting();
 
+  // inspector_probe.cxx: the probe and its arrows.
+  void ObserveClicks();
+  void OnPress();
+  void OnRelease();
+  bool Reprobe();
+  void DrawArrows();
+
   // inspector_command.cxx: the picture as a command.
   void CopyCommand();
 
@@ -202,6 +231,11 @@ private:
   std::unique_ptr<ImageWriterProcess> Writer;
   ShaderSources ShownShaders;
   ShaderSourceWatch ShaderWatch{ [this](const ShaderSources& s) { this->ShownShaders = s; } };
+  std::optional<Pixel> ProbedPixel; // until cleared
+  std::optional<PixelProbe> Probed;
+  std::vector<ProbeArrow> Arrows;
+  int PressAt[2] = {};
+  bool PressControl = false;
 };
 }
 

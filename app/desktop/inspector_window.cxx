@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "desktop/control_panel.h"
+#include "desktop/probe_panel.h"
 #include "desktop/shader_panel.h"
 #include "desktop/x_display.h"
 
@@ -28,6 +29,7 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   , View(new QVTKOpenGLNativeWidget(this))
   , Panel(new ControlPanel(inspector, this))
   , Shaders(new ShaderPanel(this))
+  , Readout(new ProbePanel(inspector, this))
 {
   this->View->setRenderWindow(inspector.GetWindow());
   this->setCentralWidget(this->View);
@@ -47,6 +49,15 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   this->addDockWidget(Qt::RightDockWidgetArea, shaderDock);
   this->tabifyDockWidget(dock, shaderDock);
   dock->raise();
+  auto* probe = new QDockWidget("Probe", this);
+  probe->setWidget(this->Readout);
+  // Beside the controls, not under them (the window would grow taller than
+  // the 3D view's --size) nor left of the view (which stays at the window's
+  // top left, where the window tests' mouse finds it).
+  this->addDockWidget(Qt::RightDockWidgetArea, probe);
+  this->splitDockWidget(dock, probe, Qt::Horizontal);
+  inspector.ProbeChanged = [this] { this->Readout->Show(); };
+  this->Readout->TermPicked = [this](Terms term) { this->Shaders->HighlightTerm(term); };
   inspector.Changed = [this]
   {
     this->Panel->Show();

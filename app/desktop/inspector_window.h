@@ -1,7 +1,7 @@
 // shadelab-view's Qt window: the inspector's 3D view (VTK's
 // QVTKOpenGLNativeWidget showing the Inspector's render window) with the
-// control panel in a dock beside it, and the running shader's panel in a
-// dock tabbed with it. Every key of the key table
+// control panel in a dock beside it, the running shader's panel in a dock
+// tabbed with it, and the probe's readout in a dock beside them. Every key of the key table
 // (desktop/view_keys.h) works wherever the focus is, but in a field being
 // typed into.
 #ifndef shadelab_inspector_window_h
@@ -20,6 +20,7 @@ namespace shadelab
 {
 class ControlPanel;
 class ShaderPanel;
+class ProbePanel;
 
 class InspectorWindow : public QMainWindow
 {
@@ -39,6 +40,7 @@ private:
   QVTKOpenGLNativeWidget* View;
   ControlPanel* Panel;
   ShaderPanel* Shaders;
+  ProbePanel* Readout;
   bool Started = false;
   std::vector<std::string> EarlyKeys; // pressed before the inspector started
 };

@@ -66,7 +66,9 @@ inline constexpr ViewKey ViewKeys[] = {
   { "q Esc", "quit", ViewAction::Quit },
 };
 
-inline constexpr const char* ViewMouseHelp = "Mouse: left rotate, middle pan, right or wheel zoom.";
+inline constexpr const char* ViewMouseHelp =
+  "Mouse: left rotate, middle pan, right or wheel zoom.\n"
+  "Ctrl+click: explain that pixel (the Probe dock; Clear probe there).";
 
 /** A row's key number `which` (from 0), or "" past its last. */
 constexpr std::string_view NthViewKey(std::string_view keys, int which)

@@ -35,6 +35,8 @@ struct PixelProbe
   bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
   bool VertexKd = false;   // kd from the mesh's vertex colours (Fragment.VertexKd)
   Rgb Rendered{};          // the picture's value at the pixel: the caller's to set
+  // Where Rendered was read, as the text says it: the window reads its own 8-bit pixel.
+  const char* RenderedFrom = "the float render at the pixel";
   // Pixels from its centre to the nearest edge that may cover it (with no
   // hit: of any triangle).
   double EdgeDistance = 0;

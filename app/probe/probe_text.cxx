@@ -21,6 +21,23 @@ std::string ProbeTriple(const std::array<double, 3>& v)
 
 namespace
 {
+// The note that ends a term's line: ProbeTextTerm reads it back.
+const char* TermNote(Terms term)
+{
+  switch (term)
+  {
+    case Terms::Ambient:
+      return "ambient";
+    case Terms::Diffuse:
+      return "diffuse";
+    case Terms::Specular:
+      return "specular";
+    case Terms::All:
+      break;
+  }
+  return "";
+}
+
 // The text's lines: a quantity, then what it is in a column of its own.
 class Lines
 {
@@ -86,7 +103,7 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
       : t.Lit       ? "> 0: lit"
       : t.NdotL > 0 ? "not above 1e-5, taken as 0: no diffuse, no specular"
                     : "<= 0: no diffuse, no specular");
-  out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), "diffuse");
+  out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), TermNote(Terms::Diffuse));
   const std::string base = blinn ? "N.H" : "V.R";
   out.Add(
     in, (blinn ? "H = " : "R = ") + ProbeTriple(t.HR), blinn ? "normalize(L + V)" : "2(N.L)N - L");
@@ -97,7 +114,8 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
       : undefinedH ? "H undefined (L = -V): no specular"
                    : "<= 0: no specular");
   out.Add(in, "(" + base + ")^ns = " + ProbeNumber(t.Power), "ns = " + ProbeNumber(p.Surface.Ns));
-  out.Add(in, "ks*Il*(" + base + ")^ns = " + ProbeTriple(t.SpecularTerm), "specular");
+  out.Add(
+    in, "ks*Il*(" + base + ")^ns = " + ProbeTriple(t.SpecularTerm), TermNote(Terms::Specular));
 }
 
 // The equation at a point: N, V, ka*Ia, the lights.
@@ -107,7 +125,7 @@ void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
   out.Add(indent, "N = " + ProbeTriple(t.N), whatN);
   out.Add(indent, "V = " + ProbeTriple(t.V),
     p.Orthographic ? "towards the viewer: minus the view direction" : "normalize(eye - P)");
-  out.Add(indent, "ka*Ia = " + ProbeTriple(t.Ambient), "ambient");
+  out.Add(indent, "ka*Ia = " + ProbeTriple(t.Ambient), TermNote(Terms::Ambient));
   for (std::size_t l = 0; l < t.Lights.size(); ++l)
   {
     AddLight(out, indent, p, l, t.Lights[l]);
@@ -146,7 +164,7 @@ std::string ProbeText(const PixelProbe& p)
       pixel + ": no triangle under its centre, the nearest edge " + ProbeNumber(p.EdgeDistance) +
         " px away");
     out.Add("", "background = " + ProbeTriple(p.Background));
-    out.Add("", rendered, "the float render at the pixel");
+    out.Add("", rendered, p.RenderedFrom);
     out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
     return out.Str();
   }
@@ -206,8 +224,22 @@ std::string ProbeText(const PixelProbe& p)
       break;
   }
   out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
-  out.Add("", rendered, "the float render at the pixel");
+  out.Add("", rendered, p.RenderedFrom);
   out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
   return out.Str();
+}
+
+std::optional<Terms> ProbeTextTerm(const std::string& line)
+{
+  for (const Terms term : { Terms::Ambient, Terms::Diffuse, Terms::Specular })
+  {
+    const std::string note = std::string("  ") + TermNote(term);
+    if (line.size() >= note.size() &&
+      line.compare(line.size() - note.size(), note.size(), note) == 0)
+    {
+      return term;
+    }
+  }
+  return std::nullopt;
 }
 }

@@ -136,6 +136,48 @@ std::set<int> LinesWith(const std::string& source, const std::vector<std::string
   return lines;
 }
 
+// Where the picture of the scene the view shows is brightest, rendered
+// headless (no light handle in it): the mean position of the pixels within
+// 10% of its brightest value, the specular highlight.
+std::array<double, 2> Highlight(const Inspector& inspector, const TempDir& dir)
+{
+  const std::filesystem::path png = dir / "highlight.png";
+  std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o", png.string() };
+  // Without the edges and glyphs, whose lines are as bright as the light.
+  for (const std::string& option : SceneArguments(inspector.ShownScene()))
+  {
+    if (option != "--edges" && option != "--normal-glyphs")
+    {
+      args.push_back(option);
+    }
+  }
+  const RunResult run = RunShadelab(args);
+  EXPECT_EQ(run.ExitCode, 0) << run.Stderr;
+  const Image image = ReadImage(png);
+  const auto brightness = [&](int i)
+  {
+    const float* p = &image.Pixels[static_cast<std::size_t>(i) * image.Channels];
+    return p[0] + p[1] + p[2];
+  };
+  const int count = image.Width * image.Height;
+  float brightest = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    brightest = std::max(brightest, brightness(i));
+  }
+  double x = 0, y = 0, n = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    if (brightest > 0 && brightness(i) >= 0.9f * brightest)
+    {
+      x += i % image.Width;
+      y += i / image.Width;
+      n += 1;
+    }
+  }
+  return { x / n, y / n };
+}
+
 // The lines that edit shows highlighted.
 std::set<int> Highlighted(const QPlainTextEdit* edit)
 {
@@ -247,12 +289,25 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
   EXPECT_EQ(lights[0].Exponent, 3);
   EXPECT_EQ(inspector.GetState().Lights, LightMode::Given);
 
-  // The selected spot light's handle in the 3D view: put at the view's
-  // centre, dragged 30 pixels right by the interactor's own events, the
-  // light moves and keeps its direction.
-  Type(window.findChild<QDoubleSpinBox*>("light position x"), "0");
-  Type(window.findChild<QDoubleSpinBox*>("light position y"), "0.2");
-  Type(window.findChild<QDoubleSpinBox*>("light position z"), "0.2");
+  // The selected spot light's handle in the 3D view, dragged 30 pixels
+  // right by the interactor's own events: the light moves, keeps its
+  // direction, and its highlight moves.
+  // A wide spot a third of the way to the camera, shining at the mesh: a
+  // highlight the drag moves.
+  const std::array<const char*, 3> axes{ "x", "y", "z" };
+  const std::array<const char*, 3> position{ "1.3", "0.5", "-0.7" };
+  const std::array<const char*, 3> direction{ "-1.3", "-0.5", "0.7" };
+  for (int i = 0; i < 3; ++i)
+  {
+    Type(window.findChild<QDoubleSpinBox*>(QString("light position ") + axes[i]), position[i]);
+    Type(window.findChild<QDoubleSpinBox*>(QString("light direction ") + axes[i]), direction[i]);
+  }
+  Type(window.findChild<QDoubleSpinBox*>("cone angle"), "60");
+  Type(window.findChild<QDoubleSpinBox*>("exponent"), "0");
+  for (const char* channel : { "ks red", "ks green", "ks blue" })
+  {
+    Type(window.findChild<QDoubleSpinBox*>(channel), "1");
+  }
   vtkRenderWindow* view = inspector.GetWindow();
   vtkRenderer* panel = nullptr;
   view->GetRenderers()->InitTraversal();
@@ -261,12 +316,15 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
     panel = !panel && r->GetInteractive() && r->GetLayer() == 0 ? r : panel;
   }
   ASSERT_NE(panel, nullptr);
-  panel->SetWorldPoint(0, 0.2, 0.2, 1);
+  panel->SetWorldPoint(1.3, 0.5, -0.7, 1);
   panel->WorldToDisplay();
   const double* at = panel->GetDisplayPoint();
   vtkRenderWindowInteractor* mouse = view->GetInteractor();
   const Light before = inspector.GetState().Scene.Lights[0];
+  const TempDir pictures;
+  const std::array<double, 2> highlightBefore = Highlight(inspector, pictures);
   view->Render(); // the handle drawn, where the press picks it
+
   mouse->SetEventInformation(static_cast<int>(at[0]), static_cast<int>(at[1]));
   mouse->InvokeEvent(vtkCommand::MouseMoveEvent); // over the handle first, as a hand would
   mouse->InvokeEvent(vtkCommand::LeftButtonPressEvent);
@@ -276,6 +334,11 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
   const Light after = inspector.GetState().Scene.Lights[0];
   EXPECT_NE(after.Position, before.Position) << "the drag moved the light";
   EXPECT_EQ(after.Direction, before.Direction);
+  const std::array<double, 2> highlightAfter = Highlight(inspector, pictures);
+  EXPECT_GT(
+    std::hypot(highlightAfter[0] - highlightBefore[0], highlightAfter[1] - highlightBefore[1]), 1)
+    << "the highlight moved with the light: from (" << highlightBefore[0] << ", "
+    << highlightBefore[1] << ") to (" << highlightAfter[0] << ", " << highlightAfter[1] << ")";
 
   // Keys: the controls follow.
   auto* rule = static_cast<QComboBox*>(find("rule"));

@@ -1,6 +1,7 @@
 #include "image/metadata.h"
 
 #include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "shadelabVersion.h"
 
 #include <vtkCamera.h>
@@ -79,23 +80,7 @@ std::string QuoteCommandLine(int argc, const char* const* argv)
 
 nlohmann::ordered_json DescribeLight(const Light& light)
 {
-  nlohmann::ordered_json j;
-  j["kind"] = ToString(light.Kind);
-  if (light.Kind != LightKind::Directional)
-  {
-    j["position"] = light.Position;
-  }
-  if (light.Kind != LightKind::Point)
-  {
-    j["direction"] = light.Direction;
-  }
-  j["color"] = light.Color;
-  if (light.Kind == LightKind::Spot)
-  {
-    j["half_angle_deg"] = light.HalfAngleDeg;
-    j["exponent"] = light.Exponent;
-  }
-  return j;
+  return LightJson(light, "half_angle_deg");
 }
 
 nlohmann::ordered_json DescribeMaterial(const Material& m)

@@ -21,23 +21,6 @@ std::string ProbeTriple(const std::array<double, 3>& v)
 
 namespace
 {
-// The note that ends a term's line: ProbeTextTerm reads it back.
-const char* TermNote(Terms term)
-{
-  switch (term)
-  {
-    case Terms::Ambient:
-      return "ambient";
-    case Terms::Diffuse:
-      return "diffuse";
-    case Terms::Specular:
-      return "specular";
-    case Terms::All:
-      break;
-  }
-  return "";
-}
-
 // The text's lines: a quantity, then what it is in a column of its own.
 class Lines
 {
@@ -103,7 +86,7 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
       : t.Lit       ? "> 0: lit"
       : t.NdotL > 0 ? "not above 1e-5, taken as 0: no diffuse, no specular"
                     : "<= 0: no diffuse, no specular");
-  out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), TermNote(Terms::Diffuse));
+  out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), ToString(Terms::Diffuse));
   const std::string base = blinn ? "N.H" : "V.R";
   out.Add(
     in, (blinn ? "H = " : "R = ") + ProbeTriple(t.HR), blinn ? "normalize(L + V)" : "2(N.L)N - L");
@@ -115,7 +98,7 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
                    : "<= 0: no specular");
   out.Add(in, "(" + base + ")^ns = " + ProbeNumber(t.Power), "ns = " + ProbeNumber(p.Surface.Ns));
   out.Add(
-    in, "ks*Il*(" + base + ")^ns = " + ProbeTriple(t.SpecularTerm), TermNote(Terms::Specular));
+    in, "ks*Il*(" + base + ")^ns = " + ProbeTriple(t.SpecularTerm), ToString(Terms::Specular));
 }
 
 // The equation at a point: N, V, ka*Ia, the lights.
@@ -125,7 +108,7 @@ void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
   out.Add(indent, "N = " + ProbeTriple(t.N), whatN);
   out.Add(indent, "V = " + ProbeTriple(t.V),
     p.Orthographic ? "towards the viewer: minus the view direction" : "normalize(eye - P)");
-  out.Add(indent, "ka*Ia = " + ProbeTriple(t.Ambient), TermNote(Terms::Ambient));
+  out.Add(indent, "ka*Ia = " + ProbeTriple(t.Ambient), ToString(Terms::Ambient));
   for (std::size_t l = 0; l < t.Lights.size(); ++l)
   {
     AddLight(out, indent, p, l, t.Lights[l]);
@@ -233,7 +216,8 @@ std::optional<Terms> ProbeTextTerm(const std::string& line)
 {
   for (const Terms term : { Terms::Ambient, Terms::Diffuse, Terms::Specular })
   {
-    const std::string note = std::string("  ") + TermNote(term);
+    // A term's line ends with its name (comparison_panels.h's ToString).
+    const std::string note = std::string("  ") + ToString(term);
     if (line.size() >= note.size() &&
       line.compare(line.size() - note.size(), note.size(), note) == 0)
     {

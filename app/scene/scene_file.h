@@ -8,6 +8,8 @@
 
 #include "core/options.h"
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -30,6 +32,14 @@ struct Shot
  * scene). s.Mesh as given: absolute, or relative to the file's folder.
  */
 std::string WriteSceneText(const SceneOptions& s, const std::string& output);
+
+/**
+ * A light as JSON: kind, position (not a directional light's), direction
+ * (not a point light's), color, a spot's half angle under halfAngleKey
+ * ("half_angle" in scene files, "half_angle_deg" in a picture's
+ * description) and exponent.
+ */
+nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey);
 
 /** The JSON Schema of scene files (data/scene.schema.json, compiled in). */
 const char* SceneSchema();

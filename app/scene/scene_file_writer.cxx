@@ -6,6 +6,27 @@
 
 namespace shadelab
 {
+nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey)
+{
+  nlohmann::ordered_json j;
+  j["kind"] = ToString(light.Kind);
+  if (light.Kind != LightKind::Directional)
+  {
+    j["position"] = light.Position;
+  }
+  if (light.Kind != LightKind::Point)
+  {
+    j["direction"] = light.Direction;
+  }
+  j["color"] = light.Color;
+  if (light.Kind == LightKind::Spot)
+  {
+    j[halfAngleKey] = light.HalfAngleDeg;
+    j["exponent"] = light.Exponent;
+  }
+  return j;
+}
+
 std::string WriteSceneText(const SceneOptions& s, const std::string& output)
 {
   const SceneOptions d;
@@ -43,22 +64,7 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
     auto& lights = shot["lights"] = nlohmann::ordered_json::array();
     for (const Light& light : s.Lights)
     {
-      nlohmann::ordered_json j{ { "kind", ToString(light.Kind) } };
-      if (light.Kind != LightKind::Directional)
-      {
-        j["position"] = light.Position;
-      }
-      if (light.Kind != LightKind::Point)
-      {
-        j["direction"] = light.Direction;
-      }
-      j["color"] = light.Color;
-      if (light.Kind == LightKind::Spot)
-      {
-        j["half_angle"] = light.HalfAngleDeg;
-        j["exponent"] = light.Exponent;
-      }
-      lights.push_back(j);
+      lights.push_back(LightJson(light, "half_angle"));
     }
   }
   nlohmann::ordered_json camera;

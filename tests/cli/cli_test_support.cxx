@@ -311,4 +311,13 @@ void WriteText(const std::filesystem::path& path, const std::string& text)
 {
   std::ofstream(path, std::ios::binary) << text;
 }
+
+void WriteRgbTriangle(const std::filesystem::path& path)
+{
+  WriteText(path,
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+}
 }

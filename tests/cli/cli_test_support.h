@@ -120,6 +120,9 @@ std::filesystem::path TestMesh(const std::string& name);
 
 /** Writes text to path. */
 void WriteText(const std::filesystem::path& path, const std::string& text);
+
+/** An ASCII PLY of one triangle in z = 0 whose vertices are red, green and blue (uchar colours). */
+void WriteRgbTriangle(const std::filesystem::path& path);
 }
 
 #endif

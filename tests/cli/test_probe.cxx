@@ -357,11 +357,7 @@ TEST(Probe, VertexColorsAreTheKdThatLit)
 {
   TempDir dir;
   const auto mesh = dir / "rgb.ply";
-  WriteText(mesh,
-    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-    "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  WriteRgbTriangle(mesh);
   const std::array<Rgb, 3> colors{ { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
   for (Shading rule : { Shading::None, Shading::Flat, Shading::Gouraud, Shading::Phong })
   {

@@ -78,18 +78,9 @@ const unsigned char* ViewData(
 {
   const std::uint64_t viewIndex = Unsigned(accessor, "bufferView", where);
   const std::string viewName = "bufferView " + std::to_string(viewIndex);
-  const Json& view = Item(document.Root, "bufferViews", viewIndex, where);
-  const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
-  Item(document.Root, "buffers", bufferIndex, viewName);
-  const std::string_view buffer = document.Buffers[bufferIndex];
-  const std::uint64_t viewOffset = Unsigned(view, "byteOffset", viewName, 0);
-  const std::uint64_t viewLength = Unsigned(view, "byteLength", viewName);
-  if (viewOffset > buffer.size() || viewLength > buffer.size() - viewOffset)
-  {
-    Fail(viewName + " takes bytes " + std::to_string(viewOffset) + " to " +
-      std::to_string(viewOffset + viewLength) + " of buffer " + std::to_string(bufferIndex) +
-      ", which has " + std::to_string(buffer.size()));
-  }
+  const std::string_view bytes = ViewBytes(document, viewIndex, where);
+  const Json& view = document.Root["bufferViews"][viewIndex];
+  const std::uint64_t viewLength = bytes.size();
   const std::uint64_t elementBytes = layout.Components * SizeOf(layout.Component->Type);
   layout.Stride = elementBytes; // tightly packed, unless the view says otherwise
   if (view.contains("byteStride"))
@@ -112,7 +103,7 @@ const unsigned char* ViewData(
       std::to_string(elementBytes) + " bytes from byte " + std::to_string(offset) + " of " +
       viewName + ", which has " + std::to_string(viewLength));
   }
-  return reinterpret_cast<const unsigned char*>(buffer.data()) + viewOffset + offset;
+  return reinterpret_cast<const unsigned char*>(bytes.data()) + offset;
 }
 
 // Throws unless `use` allows the accessor's element and component types.

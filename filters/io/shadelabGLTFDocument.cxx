@@ -289,18 +289,19 @@ void LoadBuffers(Document& document, const std::string& fileName, const GlbChunk
   }
 }
 
-// Textures are for a later step, but a document whose image is missing is
-// as broken as one whose buffer is: it is refused now, not when it is used.
-void CheckImages(const Json& root, const std::string& fileName)
+// Every image, as a file's path or its bytes: a document whose image is
+// missing is as broken as one whose buffer is, and is refused now.
+void LoadImages(Document& document, const std::string& fileName)
 {
-  const Json& images = List(root, "images");
+  const Json& images = List(document.Root, "images");
   for (std::size_t i = 0; i < images.size(); ++i)
   {
     const std::string where = "image " + std::to_string(i);
-    const Json& image = Item(root, "images", i, where);
+    const Json& image = Item(document.Root, "images", i, where);
     if (image.contains("bufferView"))
     {
-      Item(root, "bufferViews", Unsigned(image, "bufferView", where), where);
+      document.Images.push_back(
+        { "", ViewBytes(document, Unsigned(image, "bufferView", where), where) });
       continue;
     }
     const std::string uri = String(image, "uri", where);
@@ -310,15 +311,36 @@ void CheckImages(const Json& root, const std::string& fileName)
     }
     if (uri.compare(0, 5, "data:") == 0)
     {
-      DecodeDataUri(uri, where);
+      document.Storage.push_back(std::make_unique<std::string>(DecodeDataUri(uri, where)));
+      document.Images.push_back({ "", *document.Storage.back() });
     }
     else
     {
       const std::string path = FilePath(fileName, uri, where);
       Referred(where, uri, [&] { vtkShadelabFileReader::CheckReadable(path.c_str()); });
+      document.Images.push_back({ path, {} });
     }
   }
 }
+}
+
+std::string_view ViewBytes(
+  const Document& document, std::uint64_t index, const std::string& referrer)
+{
+  const std::string viewName = "bufferView " + std::to_string(index);
+  const Json& view = Item(document.Root, "bufferViews", index, referrer);
+  const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
+  Item(document.Root, "buffers", bufferIndex, viewName);
+  const std::string_view buffer = document.Buffers[bufferIndex];
+  const std::uint64_t offset = Unsigned(view, "byteOffset", viewName, 0);
+  const std::uint64_t length = Unsigned(view, "byteLength", viewName);
+  if (offset > buffer.size() || length > buffer.size() - offset)
+  {
+    Fail(viewName + " takes bytes " + std::to_string(offset) + " to " +
+      std::to_string(offset + length) + " of buffer " + std::to_string(bufferIndex) +
+      ", which has " + std::to_string(buffer.size()));
+  }
+  return buffer.substr(offset, length);
 }
 
 Document Load(const std::string& fileName, std::string fileBytes)
@@ -335,7 +357,7 @@ Document Load(const std::string& fileName, std::string fileBytes)
   document.Root = ParseJson(isGlb ? glb.Json : bytes);
   CheckAsset(document.Root);
   LoadBuffers(document, fileName, isGlb ? &glb : nullptr);
-  CheckImages(document.Root, fileName);
+  LoadImages(document, fileName);
   return document;
 }
 }

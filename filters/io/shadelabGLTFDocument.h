@@ -9,8 +9,8 @@
  * vtkShadelabGLTFReader): the GLB's header and chunk lengths against the
  * file, asset.version 2.x, required extensions (none is supported), each
  * buffer's byteLength against the bytes there are, and that every image is
- * there to be read (a readable file, valid base64, or a bufferView that
- * exists). Every problem is a MeshReadError, one line.
+ * there to be read (a readable file, valid base64, or a bufferView within
+ * its buffer). Every problem is a MeshReadError, one line.
  *
  * Its JSON is read through the typed getters of shadelabGLTFJson.h.
  */
@@ -27,9 +27,17 @@
 
 namespace shadelab::gltf
 {
+/** An image of the document: a file beside it, or bytes that it holds. */
+struct Image
+{
+  std::string Path;       // the file, resolved against the document's folder; "" when embedded
+  std::string_view Bytes; // the encoded image where embedded (a bufferView, a data URI)
+};
+
 struct Document
 {
   Json Root;
+  std::vector<Image> Images;             // images[i]
   std::vector<std::string_view> Buffers; // each exactly its byteLength long, in Storage
   // The file's bytes (a GLB's BIN chunk is used where it lies) and those of
   // the other buffers; on the heap, so that the views stay valid when the
@@ -39,6 +47,13 @@ struct Document
 
 /** The document in `fileBytes`, read from `fileName` (whose folder holds its files). */
 Document Load(const std::string& fileName, std::string fileBytes);
+
+/**
+ * The bytes of bufferView `index`, which `referrer` uses; throws unless it
+ * exists and lies within its buffer.
+ */
+std::string_view ViewBytes(
+  const Document& document, std::uint64_t index, const std::string& referrer);
 
 }
 

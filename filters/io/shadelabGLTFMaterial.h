@@ -13,7 +13,8 @@
  *     ns = 2 / r^4 - 2            Blinn-Phong's exponent for GGX's alpha = r^2,
  *                                 clamped to [0, 10000]
  *
- * Textures are not part of it (baseColorTexture is not read yet).
+ * baseColorTexture multiplies kd and ka (shadelabGLTFTexture.h), as it
+ * multiplies baseColorFactor in glTF.
  */
 #ifndef shadelabGLTFMaterial_h
 #define shadelabGLTFMaterial_h

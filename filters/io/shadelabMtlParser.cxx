@@ -2,6 +2,8 @@
 
 #include "shadelabTextScanner.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -58,11 +60,86 @@ double ReadNumber(TextScanner& scanner, const char* what)
   ExpectStatementEnd(scanner, what);
   return value;
 }
+
+// The MTL specification's texture map options other than -clamp, with how
+// many values each takes (-o, -s and -t take 1 to 3 numbers).
+struct MapOption
+{
+  std::string_view Name;
+  int Values;
+  bool UpToThreeNumbers;
+};
+constexpr std::array<MapOption, 11> SkippedOptions{ { { "-blendu", 1, false },
+  { "-blendv", 1, false }, { "-cc", 1, false }, { "-mm", 2, false }, { "-o", 1, true },
+  { "-s", 1, true }, { "-t", 1, true }, { "-texres", 1, false }, { "-bm", 1, false },
+  { "-boost", 1, false }, { "-imfchan", 1, false } } };
+
+// map_Kd [options] FILE: the options' values, then the rest of the
+// statement as the file's name.
+MtlMap ReadMap(TextScanner& scanner, std::string_view keyword, std::vector<std::string>& warnings)
+{
+  MtlMap map;
+  const std::string statement(keyword);
+  const auto value = [&](const std::string& option)
+  {
+    const std::string_view v = scanner.NextToken();
+    if (AtStatementEnd(v))
+    {
+      scanner.Fail(statement + " option " + option + " without its value");
+    }
+    return v;
+  };
+  std::string_view token = scanner.NextToken();
+  while (token.size() > 1 && token[0] == '-')
+  {
+    const std::string name(token);
+    if (name == "-clamp")
+    {
+      const std::string_view on = value(name);
+      if (on != "on" && on != "off")
+      {
+        scanner.Fail("malformed " + statement + " -clamp " + Quote(on) + " (on or off)");
+      }
+      map.Clamp = on == "on";
+      token = scanner.NextToken();
+      continue;
+    }
+    const auto option = std::find_if(SkippedOptions.begin(), SkippedOptions.end(),
+      [&](const MapOption& o) { return o.Name == name; });
+    if (option == SkippedOptions.end())
+    {
+      scanner.Fail("unknown " + statement + " option " + Quote(name));
+    }
+    for (int k = 0; k < option->Values; ++k)
+    {
+      value(name);
+    }
+    token = scanner.NextToken();
+    double number;
+    for (int k = 1; option->UpToThreeNumbers && k < 3 && ParseNumber(token, number); ++k)
+    {
+      token = scanner.NextToken();
+    }
+    warnings.push_back("line " + std::to_string(scanner.GetLineNumber()) + ": " + statement +
+      " option " + name + " is not supported, ignored");
+  }
+  for (; !AtStatementEnd(token); token = scanner.NextToken())
+  {
+    map.File += (map.File.empty() ? "" : " ") + std::string(token);
+  }
+  if (map.File.empty())
+  {
+    scanner.Fail(statement + " without a file name");
+  }
+  std::replace(map.File.begin(), map.File.end(), '\\', '/');
+  return map;
+}
 }
 
-std::vector<Material> ParseMtl(std::string_view text)
+MtlLibrary ParseMtl(std::string_view text)
 {
-  std::vector<Material> materials;
+  MtlLibrary library;
+  std::vector<MtlMaterial>& materials = library.Materials;
   TextScanner scanner(text);
   while (scanner.NextLine())
   {
@@ -74,12 +151,13 @@ std::vector<Material> ParseMtl(std::string_view text)
       {
         scanner.Fail("newmtl without a material name");
       }
-      materials.push_back(Material{ std::string(name) });
+      materials.push_back({ Material{ std::string(name) }, {}, {} });
       continue;
     }
+    const bool map = keyword == "map_Kd" || keyword == "map_Ka";
     const bool coefficient = keyword == "Ka" || keyword == "Kd" || keyword == "Ks" ||
       keyword == "Ns" || keyword == "d" || keyword == "Tr";
-    if (!coefficient)
+    if (!coefficient && !map)
     {
       continue;
     }
@@ -87,8 +165,13 @@ std::vector<Material> ParseMtl(std::string_view text)
     {
       scanner.Fail(std::string(keyword) + " before any newmtl");
     }
-    Material& m = materials.back();
-    if (keyword == "Ka")
+    Material& m = materials.back().Coefficients;
+    if (map)
+    {
+      (keyword == "map_Kd" ? materials.back().KdMap : materials.back().KaMap) =
+        ReadMap(scanner, keyword, library.Warnings);
+    }
+    else if (keyword == "Ka")
     {
       m.Ka = ReadColor(scanner, "Ka");
     }
@@ -117,6 +200,6 @@ std::vector<Material> ParseMtl(std::string_view text)
       m.Translucency = 1 - ReadNumber(scanner, "Tr");
     }
   }
-  return materials;
+  return library;
 }
 }

@@ -3,23 +3,53 @@
  *
  * ParseMtl reads `newmtl NAME` and each material's Ka, Kd, Ks (r [g b]: one
  * number is grey), Ns and d (Tr is 1 - d), the coefficients of the lecture's
- * equation; every other statement (illum, Ni, Ke, map_*, ...) and comments
- * are skipped. A coefficient the file does not give is 0 (d 1). It stops at
- * the first malformed or non-finite number, a negative Ns, or a coefficient
- * before any newmtl, with "line N: ..." in the message (MeshReadError).
+ * equation, and its texture maps map_Kd and map_Ka: `map_Kd [options] FILE`.
+ * Of the options, `-clamp on|off` is honoured (on: the image's edge
+ * continues beyond it; off, the default: it repeats); the others that the
+ * MTL specification defines (-blendu, -blendv, -cc, -mm, -o, -s, -t,
+ * -texres, -bm, -boost, -imfchan) are skipped with their values and a
+ * warning, since they would change the picture in ways not drawn here. FILE
+ * is the rest of the statement (it may hold spaces), with '\' read as '/'
+ * (files written on Windows); whether it exists is not checked. Every other
+ * statement (illum, Ni, Ke, map_Ks, bump, ...) and comments are skipped. A
+ * coefficient the file does not give is 0 (d 1). It stops at the first
+ * malformed or non-finite number, a negative Ns, a coefficient or map before
+ * any newmtl, a map without a file name, an unknown option or one without
+ * its value, with "line N: ..." in the message (MeshReadError).
  */
 #ifndef shadelabMtlParser_h
 #define shadelabMtlParser_h
 
 #include "shadelabIllumination.h"
 
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace shadelab
 {
-/** The materials of an MTL file's text, in the file's order (Translucency is d). */
-std::vector<Material> ParseMtl(std::string_view text);
+/** A material's texture map as the MTL gives it. */
+struct MtlMap
+{
+  std::string File;   // as the MTL names it, relative to the MTL's folder; "" for none
+  bool Clamp = false; // -clamp on
+};
+
+struct MtlMaterial
+{
+  Material Coefficients; // Translucency is d
+  MtlMap KdMap;          // map_Kd
+  MtlMap KaMap;          // map_Ka
+};
+
+struct MtlLibrary
+{
+  std::vector<MtlMaterial> Materials; // in the file's order
+  std::vector<std::string> Warnings;  // "line N: ..." for each option skipped
+};
+
+/** The materials of an MTL file's text. */
+MtlLibrary ParseMtl(std::string_view text);
 }
 
 #endif

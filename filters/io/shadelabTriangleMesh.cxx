@@ -16,12 +16,10 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
-#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <initializer_list>
 #include <string>
 
 namespace shadelab
@@ -42,10 +40,11 @@ vtkSmartPointer<vtkCellArray> MakeCells(
   return cells;
 }
 
-vtkSmartPointer<vtkFloatArray> MakeFloatArray(
-  const char* name, int components, const std::vector<float>& values)
+// A parser's values as a VTK array of that type (vtkFloatArray for float...).
+template <typename Array, typename Value>
+vtkSmartPointer<Array> MakeArray(const char* name, int components, const std::vector<Value>& values)
 {
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  auto array = vtkSmartPointer<Array>::New();
   array->SetName(name);
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
@@ -146,6 +145,22 @@ vtkSmartPointer<vtkFloatArray> PointAttribute(vtkPolyData* polygons, const char*
     }
   }
   return array;
+}
+
+// The points' file vertices where they go along: an id array of one value
+// per point, each a point's number; null otherwise.
+vtkSmartPointer<vtkIdTypeArray> FileVertices(vtkPolyData* polygons, vtkIdType pointCount)
+{
+  auto* array =
+    vtkIdTypeArray::SafeDownCast(polygons->GetPointData()->GetArray(FileVertexArrayName));
+  if (!array || array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != pointCount)
+  {
+    return nullptr;
+  }
+  const vtkIdType* values = array->GetPointer(0);
+  const bool inRange = std::all_of(
+    values, values + pointCount, [pointCount](vtkIdType v) { return v >= 0 && v < pointCount; });
+  return inRange ? array : nullptr;
 }
 
 void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
@@ -317,26 +332,27 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh)
   data->SetPoints(points);
   if (!mesh.Normals.empty())
   {
-    data->GetPointData()->SetNormals(MakeFloatArray("Normals", 3, mesh.Normals));
+    data->GetPointData()->SetNormals(MakeArray<vtkFloatArray>("Normals", 3, mesh.Normals));
   }
   if (!mesh.Colors.empty())
   {
-    data->GetPointData()->AddArray(MakeFloatArray(ColorsArrayName, 4, mesh.Colors));
+    data->GetPointData()->AddArray(MakeArray<vtkFloatArray>(ColorsArrayName, 4, mesh.Colors));
   }
   if (!mesh.TextureCoordinates.empty())
   {
     data->GetPointData()->SetTCoords(
-      MakeFloatArray(TextureCoordinatesArrayName, 2, mesh.TextureCoordinates));
+      MakeArray<vtkFloatArray>(TextureCoordinatesArrayName, 2, mesh.TextureCoordinates));
+  }
+  if (!mesh.FileVertices.empty())
+  {
+    data->GetPointData()->AddArray(
+      MakeArray<vtkIdTypeArray>(FileVertexArrayName, 1, mesh.FileVertices));
   }
   data->SetPolys(MakeCells(mesh.FaceOffsets, mesh.FaceIds));
   data->SetStrips(MakeCells(mesh.StripOffsets, mesh.StripIds));
   if (!mesh.Parts.empty())
   {
-    vtkNew<vtkIntArray> parts;
-    parts->SetName(PartArrayName);
-    parts->SetNumberOfValues(static_cast<vtkIdType>(mesh.Parts.size()));
-    std::copy(mesh.Parts.begin(), mesh.Parts.end(), parts->GetPointer(0));
-    data->GetCellData()->AddArray(parts);
+    data->GetCellData()->AddArray(MakeArray<vtkIntArray>(PartArrayName, 1, mesh.Parts));
   }
   return data;
 }
@@ -350,6 +366,7 @@ void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType f
     PointAttribute(polygons, ColorsArrayName, 4, "colour", pointCount, firstNumber);
   vtkSmartPointer<vtkFloatArray> textureCoordinates = PointAttribute(
     polygons, TextureCoordinatesArrayName, 2, "texture coordinate", pointCount, firstNumber);
+  vtkSmartPointer<vtkIdTypeArray> fileVertices = FileVertices(polygons, pointCount);
   CheckCells(polygons->GetPolys(), "face", pointCount, firstNumber);
   CheckCells(polygons->GetStrips(), "triangle strip", pointCount, firstNumber);
 
@@ -376,48 +393,13 @@ void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType f
   {
     triangles->GetPointData()->SetTCoords(textureCoordinates);
   }
+  if (fileVertices)
+  {
+    triangles->GetPointData()->AddArray(fileVertices);
+  }
   if (vtkSmartPointer<vtkIntArray> parts = TriangleParts(polygons, sources))
   {
     triangles->GetCellData()->AddArray(parts);
-  }
-}
-void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* triangles)
-{
-  const auto count = static_cast<vtkIdType>(parts.size());
-  vtkNew<vtkStringArray> names;
-  names->SetName(PartMaterialsArrayName);
-  vtkNew<vtkIntArray> indices;
-  indices->SetName(PartMaterialIndicesArrayName);
-  const auto coefficients = [count](const char* name, int components)
-  {
-    auto array = vtkSmartPointer<vtkFloatArray>::New();
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(count);
-    array->Fill(0);
-    return array;
-  };
-  auto ka = coefficients(PartKaArrayName, 3);
-  auto kd = coefficients(PartKdArrayName, 3);
-  auto ks = coefficients(PartKsArrayName, 3);
-  auto ns = coefficients(PartNsArrayName, 1);
-  for (vtkIdType part = 0; part < count; ++part)
-  {
-    const PartMaterial& p = parts[part];
-    names->InsertNextValue(p.Name);
-    indices->InsertNextValue(p.Index);
-    if (p.Index >= 0)
-    {
-      ka->SetTuple(part, p.Coefficients.Ka.data());
-      kd->SetTuple(part, p.Coefficients.Kd.data());
-      ks->SetTuple(part, p.Coefficients.Ks.data());
-      ns->SetTuple(part, &p.Coefficients.Ns);
-    }
-  }
-  for (vtkAbstractArray* array :
-    std::initializer_list<vtkAbstractArray*>{ names, indices, ka, kd, ks, ns })
-  {
-    triangles->GetFieldData()->AddArray(array);
   }
 }
 }

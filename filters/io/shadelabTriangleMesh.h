@@ -7,18 +7,16 @@
  * readers) and turns it into what every shadelab reader outputs: double
  * points, triangles only, the point normals, if any, as the float array
  * "Normals", and where the file has them the vertex colours, texture
- * coordinates and the part each triangle comes from (the arrays named below),
- * for the materials and textures that go with them.
+ * coordinates, the file's vertex of each point and the part each triangle
+ * comes from (the arrays named below), for the materials and textures that
+ * go with them (shadelabPartMaterials.h).
  */
 #ifndef shadelabTriangleMesh_h
 #define shadelabTriangleMesh_h
 
-#include "shadelabIllumination.h"
-
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
-#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -38,20 +36,15 @@ constexpr const char* ColorsArrayName = "Colors";
 constexpr const char* TextureCoordinatesArrayName = "TextureCoordinates";
 /** Cell data: int, the part of the file that each triangle comes from (glTF: primitive). */
 constexpr const char* PartArrayName = "Part";
-/** Field data, one per part: its material's name (string), "" without one. */
-constexpr const char* PartMaterialsArrayName = "PartMaterials";
-/** Field data, one per part: its material's index in the file (int), -1 without one. */
-constexpr const char* PartMaterialIndicesArrayName = "PartMaterialIndices";
 /**
- * Field data, one tuple per part: its material's float ka, kd, ks (3
- * components) and ns (1) (OBJ: from its MTL; glTF: mapped from
- * metallic-roughness, shadelabGLTFMaterial.h); zeros for a part whose index
- * is -1.
+ * Point data (vtkIdType): the file's vertex that each point is, where a
+ * reader made several points of one vertex (an OBJ vertex used with
+ * different vt or vn); absent where every point is its own vertex. Point
+ * i < the file's vertex count is vertex i itself, so the value is also the
+ * number of the point whose copy this is. vtkShadelabMeshNormals computes
+ * normals on these vertices, so that a texture's seams do not crease them.
  */
-constexpr const char* PartKaArrayName = "PartKa";
-constexpr const char* PartKdArrayName = "PartKd";
-constexpr const char* PartKsArrayName = "PartKs";
-constexpr const char* PartNsArrayName = "PartNs";
+constexpr const char* FileVertexArrayName = "FileVertex";
 
 struct PolygonMesh
 {
@@ -59,6 +52,7 @@ struct PolygonMesh
   std::vector<float> Normals;            // nx ny nz per point, or empty
   std::vector<float> Colors;             // r g b a per point, or empty
   std::vector<float> TextureCoordinates; // s t per point, or empty
+  std::vector<vtkIdType> FileVertices;   // the file's vertex of each point, or empty
   // Face i is FaceIds[FaceOffsets[i]] .. FaceIds[FaceOffsets[i + 1] - 1].
   std::vector<vtkIdType> FaceOffsets{ 0 };
   std::vector<vtkIdType> FaceIds;
@@ -67,21 +61,6 @@ struct PolygonMesh
   // The part of each face, then of each strip (VTK's cell order); or empty.
   std::vector<int> Parts;
 };
-
-/** A part's material as its file names and defines it. */
-struct PartMaterial
-{
-  std::string Name;      // "" without one
-  int Index = -1;        // in the file; -1 without one, or where the file does not define it
-  Material Coefficients; // where Index >= 0
-};
-
-/**
- * Adds the parts' materials to `triangles` as field data: PartMaterials,
- * PartMaterialIndices, and PartKa, PartKd, PartKs, PartNs (zeros where the
- * index is -1).
- */
-void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* triangles);
 
 /** The parser's arrays as vtkPolyData: points, point and cell attributes, polys and strips. */
 vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);
@@ -94,8 +73,9 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);
  * and lines are dropped). Faces of 4+ vertices are triangulated by VTK's ear
  * cutting (right for concave ones), strips with alternating orientation; the
  * zero-area triangles that strips use to join runs are dropped, those of
- * faces kept. The colours, texture coordinates and parts (by the names
- * above, with those types and sizes; other arrays are dropped) go along:
+ * faces kept. The colours, texture coordinates, file vertices (in range)
+ * and parts (by the names above, with those types and sizes; other arrays
+ * are dropped) go along:
  * each triangle has the part of its face or strip. Vertices, faces and
  * strips are numbered from `firstNumber` in messages (1 for OBJ, 0 for the
  * rest).

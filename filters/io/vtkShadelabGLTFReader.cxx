@@ -4,12 +4,15 @@
 #include "shadelabGLTFDocument.h"
 #include "shadelabGLTFMaterial.h"
 #include "shadelabGLTFScene.h"
+#include "shadelabGLTFTexture.h"
 #include "shadelabMeshReadError.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -131,6 +134,8 @@ public:
   }
 
   std::vector<shadelab::PartMaterial> Materials; // per part
+  std::vector<shadelab::Texture> Textures;       // the parts' textures
+  std::vector<std::string> Warnings;             // textures not drawn
   std::size_t Skipped = 0;
   bool SomeLackNormals = false;
   bool SomeHaveNormals = false;
@@ -322,8 +327,17 @@ private:
     }
     const std::uint64_t index = Unsigned(primitive, "material", where);
     const Json& material = Item(this->Doc.Root, "materials", index, where);
-    const shadelab::Material m = LectureMaterial(material, "material " + std::to_string(index));
-    this->Materials.push_back({ m.Name, static_cast<int>(index), m });
+    const std::string name = "material " + std::to_string(index);
+    const shadelab::Material m = LectureMaterial(material, name);
+    std::string warning;
+    // glTF's ka is its kd (shadelabGLTFMaterial.h), so is their texture.
+    const int texture = BaseColorTexture(this->Doc, material, name, this->Textures, warning);
+    if (!warning.empty() &&
+      std::find(this->Warnings.begin(), this->Warnings.end(), warning) == this->Warnings.end())
+    {
+      this->Warnings.push_back(warning);
+    }
+    this->Materials.push_back({ m.Name, static_cast<int>(index), m, texture, texture });
   }
 
   const Document& Doc;
@@ -354,5 +368,10 @@ void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   }
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(builder.Finish()), triangles);
 
+  for (const std::string& warning : builder.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
   shadelab::AddPartMaterials(builder.Materials, triangles);
+  shadelab::AddTextures(builder.Textures, triangles);
 }

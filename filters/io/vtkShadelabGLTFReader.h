@@ -16,9 +16,11 @@
  * triangle's cell-data "Part" is the index of the primitive it comes from
  * (counting every drawn primitive of every node in the scene in order), and
  * the field data holds, per part, its material's name ("PartMaterials", a
- * string array; "" without a material) and index into the document's
- * materials ("PartMaterialIndices", -1 without one), for the materials and
- * textures of a later step.
+ * string array; "" without a material), index into the document's
+ * materials ("PartMaterialIndices", -1 without one), coefficients (the
+ * lecture's, mapped as shadelabGLTFMaterial.h says) and baseColorTexture
+ * as both its kd's and its ka's texture, with the textures' images and
+ * samplers (shadelabGLTFTexture.h; the arrays of shadelabPartMaterials.h).
  *
  * Strict, unlike VTK 9.1's vtkGLTFDocumentLoader, which (tried under
  * AddressSanitizer) crashes on a missing .bin, a buffer shorter than its

@@ -2,6 +2,7 @@
 
 #include "shadelabMeshReadError.h"
 #include "shadelabMtlParser.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 
@@ -9,8 +10,11 @@
 #include <vtkPolyData.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -22,15 +26,19 @@ namespace
 using shadelab::Quote;
 using shadelab::TextScanner;
 
-constexpr vtkIdType NoNormal = -1;
+constexpr vtkIdType NoIndex = -1; // a corner without vt or vn
 
 struct ObjData
 {
-  std::vector<double> Vertices; // x y z per v
-  std::vector<float> Normals;   // x y z per vn
+  std::vector<double> Vertices;          // x y z per v
+  std::vector<float> TextureCoordinates; // s t per vt
+  std::vector<float> Normals;            // x y z per vn
   std::vector<vtkIdType> FaceOffsets{ 0 };
-  std::vector<vtkIdType> VertexIds; // 0-based, per corner
-  std::vector<vtkIdType> NormalIds; // 0-based or NoNormal, per corner
+  std::vector<vtkIdType> VertexIds;  // 0-based, per corner
+  std::vector<vtkIdType> TextureIds; // 0-based or NoIndex, per corner
+  std::vector<vtkIdType> NormalIds;  // 0-based or NoIndex, per corner
+  bool SomeCornersHaveTexture = false;
+  bool SomeCornersLackTexture = false;
   bool SomeCornersHaveNormals = false;
   bool SomeCornersLackNormals = false;
   // usemtl: each face's part, one part per material name in the order of
@@ -59,15 +67,14 @@ vtkIdType Resolve(long long index, std::size_t defined, const char* kind, const 
   return static_cast<vtkIdType>(resolved);
 }
 
-// One corner: v, v/vt, v//vn or v/vt/vn. The vt index must be a number but
-// is otherwise ignored, as texture coordinates are.
+// One corner: v, v/vt, v//vn or v/vt/vn.
 void ReadCorner(std::string_view token, ObjData& obj, const TextScanner& scanner)
 {
   const char* p = token.data();
   const char* end = p + token.size();
   const auto malformed = [&] { scanner.Fail("malformed face vertex " + Quote(token)); };
   long long vertex = 0, texture = 0, normal = 0;
-  bool hasNormal = false;
+  bool hasTexture = false, hasNormal = false;
   auto result = std::from_chars(p, end, vertex);
   if (result.ec != std::errc())
   {
@@ -88,6 +95,7 @@ void ReadCorner(std::string_view token, ObjData& obj, const TextScanner& scanner
         malformed();
       }
       p = result.ptr;
+      hasTexture = true;
     }
     if (p != end)
     {
@@ -104,16 +112,13 @@ void ReadCorner(std::string_view token, ObjData& obj, const TextScanner& scanner
     }
   }
   obj.VertexIds.push_back(Resolve(vertex, obj.Vertices.size() / 3, "vertex", "vertices", scanner));
-  if (hasNormal)
-  {
-    obj.NormalIds.push_back(Resolve(normal, obj.Normals.size() / 3, "normal", "normals", scanner));
-    obj.SomeCornersHaveNormals = true;
-  }
-  else
-  {
-    obj.NormalIds.push_back(NoNormal);
-    obj.SomeCornersLackNormals = true;
-  }
+  obj.TextureIds.push_back(hasTexture ? Resolve(texture, obj.TextureCoordinates.size() / 2,
+                                          "texture coordinate", "texture coordinates", scanner)
+                                      : NoIndex);
+  obj.NormalIds.push_back(
+    hasNormal ? Resolve(normal, obj.Normals.size() / 3, "normal", "normals", scanner) : NoIndex);
+  (hasTexture ? obj.SomeCornersHaveTexture : obj.SomeCornersLackTexture) = true;
+  (hasNormal ? obj.SomeCornersHaveNormals : obj.SomeCornersLackNormals) = true;
 }
 
 // usemtl NAME: the faces that follow are the part of that material.
@@ -141,6 +146,30 @@ bool AtStatementEnd(std::string_view token)
   return token.empty() || token[0] == '#';
 }
 
+// vt u [v [w]]: v is 0 where the file leaves it out, w (depth) is ignored.
+void ReadTextureCoordinate(TextScanner& scanner, ObjData& obj)
+{
+  double values[3] = { scanner.ReadDouble("texture coordinate"), 0, 0 };
+  int count = 1;
+  for (auto token = scanner.NextToken(); !AtStatementEnd(token); token = scanner.NextToken())
+  {
+    if (count == 3)
+    {
+      scanner.Fail("unexpected " + Quote(token) + " after a texture coordinate");
+    }
+    if (!shadelab::ParseNumber(token, values[count++]))
+    {
+      scanner.Fail("malformed texture coordinate " + Quote(token));
+    }
+  }
+  if (!std::isfinite(values[0]) || !std::isfinite(values[1]))
+  {
+    scanner.Fail("non-finite texture coordinate");
+  }
+  obj.TextureCoordinates.insert(
+    obj.TextureCoordinates.end(), { static_cast<float>(values[0]), static_cast<float>(values[1]) });
+}
+
 ObjData Parse(std::string_view text)
 {
   ObjData obj;
@@ -162,6 +191,10 @@ ObjData Parse(std::string_view text)
           scanner.Fail("malformed number " + Quote(token) + " after a vertex");
         }
       }
+    }
+    else if (keyword == "vt")
+    {
+      ReadTextureCoordinate(scanner, obj);
     }
     else if (keyword == "vn")
     {
@@ -214,53 +247,116 @@ ObjData Parse(std::string_view text)
   return obj;
 }
 
-// Every corner has a normal: one point per distinct (v, vn) pair, point i
-// keeping vertex i with the normal of its first use.
-void SplitByNormal(ObjData& obj, shadelab::PolygonMesh& mesh)
+// What a point holds besides its position: a corner's vt and vn (NoIndex
+// where they are not read). Corners of one vertex with different ones need
+// points of their own.
+struct CornerAttributes
+{
+  vtkIdType Texture = NoIndex;
+  vtkIdType Normal = NoIndex;
+
+  bool operator==(const CornerAttributes& other) const
+  {
+    return this->Texture == other.Texture && this->Normal == other.Normal;
+  }
+};
+
+struct SplitKey
+{
+  vtkIdType Vertex;
+  CornerAttributes Attributes;
+
+  bool operator==(const SplitKey& other) const
+  {
+    return this->Vertex == other.Vertex && this->Attributes == other.Attributes;
+  }
+};
+
+struct SplitKeyHash
+{
+  std::size_t operator()(const SplitKey& key) const
+  {
+    const std::hash<vtkIdType> hash;
+    return (hash(key.Vertex) * 1000003 ^ hash(key.Attributes.Texture)) * 1000003 ^
+      hash(key.Attributes.Normal);
+  }
+};
+
+// One point per distinct (v, vt, vn) of the corners, as far as vt and vn are
+// read: point i keeps vertex i with the attributes of its first use, the
+// others are appended in the order of the corners that need them, and all
+// points get their file vertex (FileVertices) where there are such copies.
+void SplitVertices(ObjData& obj, bool texture, bool normals, shadelab::PolygonMesh& mesh)
 {
   const std::size_t vertexCount = obj.Vertices.size() / 3;
-  const std::uint64_t normalCount = obj.Normals.size() / 3;
-  std::vector<vtkIdType> pointNormal(vertexCount, NoNormal);
-  // Key v * normalCount + vn is unique per pair; both counts are bounded by
-  // the file's size, so it cannot overflow.
-  std::unordered_map<std::uint64_t, vtkIdType> splitPoints;
+  std::vector<CornerAttributes> point(vertexCount);
+  std::vector<bool> used(vertexCount, false);
+  std::vector<vtkIdType> copied; // the file vertex of each appended point
+  std::unordered_map<SplitKey, vtkIdType, SplitKeyHash> splitPoints;
   mesh.Points = std::move(obj.Vertices);
   for (std::size_t c = 0; c < obj.VertexIds.size(); ++c)
   {
     const vtkIdType v = obj.VertexIds[c];
-    const vtkIdType n = obj.NormalIds[c];
-    if (pointNormal[v] == NoNormal)
+    const CornerAttributes corner{ texture ? obj.TextureIds[c] : NoIndex,
+      normals ? obj.NormalIds[c] : NoIndex };
+    if (!used[v])
     {
-      pointNormal[v] = n;
+      used[v] = true;
+      point[v] = corner;
     }
-    else if (pointNormal[v] != n)
+    else if (!(point[v] == corner))
     {
-      const auto [it, added] = splitPoints.try_emplace(
-        static_cast<std::uint64_t>(v) * normalCount + static_cast<std::uint64_t>(n),
-        static_cast<vtkIdType>(pointNormal.size()));
+      const auto [it, added] =
+        splitPoints.try_emplace(SplitKey{ v, corner }, static_cast<vtkIdType>(point.size()));
       if (added)
       {
         mesh.Points.insert(mesh.Points.end(),
           { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
-        pointNormal.push_back(n);
+        point.push_back(corner);
+        copied.push_back(v);
       }
       obj.VertexIds[c] = it->second;
     }
   }
-  mesh.Normals.reserve(3 * pointNormal.size());
-  for (const vtkIdType n : pointNormal)
+  for (const CornerAttributes& p : point)
   {
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; texture && k < 2; ++k)
     {
-      mesh.Normals.push_back(n == NoNormal ? 0.0f : obj.Normals[3 * n + k]);
+      mesh.TextureCoordinates.push_back(
+        p.Texture == NoIndex ? 0.0f : obj.TextureCoordinates[2 * p.Texture + k]);
     }
+    for (int k = 0; normals && k < 3; ++k)
+    {
+      mesh.Normals.push_back(p.Normal == NoIndex ? 0.0f : obj.Normals[3 * p.Normal + k]);
+    }
+  }
+  if (!copied.empty())
+  {
+    mesh.FileVertices.resize(vertexCount);
+    std::iota(mesh.FileVertices.begin(), mesh.FileVertices.end(), vtkIdType{ 0 });
+    mesh.FileVertices.insert(mesh.FileVertices.end(), copied.begin(), copied.end());
   }
 }
 
+// A map of an MTL material as a texture of the mesh: its file resolved
+// against the MTL's folder, repeated (or clamped) and bilinear, as OBJ's
+// images are drawn; -1 without a map.
+int MapTexture(const shadelab::MtlMap& map, std::vector<shadelab::Texture>& textures)
+{
+  if (map.File.empty())
+  {
+    return -1;
+  }
+  shadelab::Texture texture;
+  texture.Source = map.File;
+  texture.WrapS = texture.WrapT = map.Clamp ? shadelab::ClampToEdge : shadelab::Repeat;
+  return shadelab::AddTexture(textures, std::move(texture));
+}
+
 // Each part's material: its name's first definition in the libraries'
-// materials (in their order), or none.
-std::vector<shadelab::PartMaterial> PartMaterials(
-  const std::vector<std::string>& names, const std::vector<shadelab::Material>& library)
+// materials (in their order), or none; with the textures of its maps.
+std::vector<shadelab::PartMaterial> PartMaterials(const std::vector<std::string>& names,
+  const std::vector<shadelab::MtlMaterial>& library, std::vector<shadelab::Texture>& textures)
 {
   std::vector<shadelab::PartMaterial> parts;
   for (const std::string& name : names)
@@ -269,10 +365,12 @@ std::vector<shadelab::PartMaterial> PartMaterials(
     part.Name = name;
     for (std::size_t m = 0; m < library.size() && !name.empty(); ++m)
     {
-      if (library[m].Name == name)
+      if (library[m].Coefficients.Name == name)
       {
         part.Index = static_cast<int>(m);
-        part.Coefficients = library[m];
+        part.Coefficients = library[m].Coefficients;
+        part.KdTexture = MapTexture(library[m].KdMap, textures);
+        part.KaTexture = MapTexture(library[m].KaMap, textures);
         break;
       }
     }
@@ -285,45 +383,45 @@ std::vector<shadelab::PartMaterial> PartMaterials(
 void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
   ObjData obj = Parse(ReadFileBytes(fileName));
+  const bool texture = obj.SomeCornersHaveTexture;
+  if (texture && obj.SomeCornersLackTexture)
+  {
+    vtkWarningMacro(<< "some faces have no vt texture coordinates; their vertices get 0 0");
+  }
+  const bool normals =
+    this->ReadNormals && obj.SomeCornersHaveNormals && !obj.SomeCornersLackNormals;
+  if (this->ReadNormals && obj.SomeCornersHaveNormals && obj.SomeCornersLackNormals)
+  {
+    vtkWarningMacro(<< "some faces have no vn normals, so the file's normals are ignored");
+  }
   shadelab::PolygonMesh mesh;
-  if (!this->ReadNormals)
-  {
-    mesh.Points = std::move(obj.Vertices);
-  }
-  else if (obj.SomeCornersHaveNormals && !obj.SomeCornersLackNormals)
-  {
-    SplitByNormal(obj, mesh);
-  }
-  else
-  {
-    if (obj.SomeCornersHaveNormals)
-    {
-      vtkWarningMacro(<< "some faces have no vn normals, so the file's normals are ignored");
-    }
-    mesh.Points = std::move(obj.Vertices);
-  }
+  SplitVertices(obj, texture, normals, mesh);
   mesh.FaceOffsets = std::move(obj.FaceOffsets);
   mesh.FaceIds = std::move(obj.VertexIds);
   mesh.Parts = std::move(obj.FaceParts);
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles, 1);
   if (!obj.MaterialNames.empty())
   {
+    std::vector<shadelab::Texture> textures;
     shadelab::AddPartMaterials(
-      PartMaterials(obj.MaterialNames, this->ReadLibraries(fileName, obj.Libraries)), triangles);
+      PartMaterials(obj.MaterialNames, this->ReadLibraries(fileName, obj.Libraries), textures),
+      triangles);
+    shadelab::AddTextures(textures, triangles);
   }
 }
 
-std::vector<shadelab::Material> vtkShadelabOBJReader::ReadLibraries(
+std::vector<shadelab::MtlMaterial> vtkShadelabOBJReader::ReadLibraries(
   const char* fileName, const std::vector<std::string>& libraries)
 {
-  std::vector<shadelab::Material> materials;
+  std::vector<shadelab::MtlMaterial> materials;
   const std::filesystem::path folder = std::filesystem::path(fileName).parent_path();
   for (const std::string& library : libraries)
   {
+    const std::filesystem::path path = folder / library;
     std::string text;
     try
     {
-      text = ReadFileBytes((folder / library).c_str());
+      text = ReadFileBytes(path.c_str());
     }
     catch (const shadelab::MeshReadError& e)
     {
@@ -332,17 +430,31 @@ std::vector<shadelab::Material> vtkShadelabOBJReader::ReadLibraries(
                       << "; its materials are the default");
       continue;
     }
+    shadelab::MtlLibrary parsed;
     try
     {
-      for (shadelab::Material& m : shadelab::ParseMtl(text))
-      {
-        materials.push_back(std::move(m));
-      }
+      parsed = shadelab::ParseMtl(text);
     }
     catch (const shadelab::MeshReadError& e)
     {
       throw shadelab::MeshReadError(
         "material library " + shadelab::Quote(library) + " " + e.what());
+    }
+    for (const std::string& warning : parsed.Warnings)
+    {
+      vtkWarningMacro(<< "material library " << shadelab::Quote(library) << " " << warning);
+    }
+    for (shadelab::MtlMaterial& m : parsed.Materials)
+    {
+      // Map files are named relative to the MTL's folder.
+      for (shadelab::MtlMap* map : { &m.KdMap, &m.KaMap })
+      {
+        if (!map->File.empty())
+        {
+          map->File = (path.parent_path() / map->File).lexically_normal().string();
+        }
+      }
+      materials.push_back(std::move(m));
     }
   }
   return materials;

@@ -8,6 +8,7 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkLogger.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -108,7 +109,8 @@ void ExpectTriangleMesh(vtkPolyData* mesh)
   vtkPointData* pointData = mesh->GetPointData();
   vtkDataArray* normals = pointData->GetNormals();
   const int named = (normals ? 1 : 0) + (pointData->GetArray(ColorsArrayName) ? 1 : 0) +
-    (pointData->GetArray(TextureCoordinatesArrayName) ? 1 : 0);
+    (pointData->GetArray(TextureCoordinatesArrayName) ? 1 : 0) +
+    (pointData->GetArray(FileVertexArrayName) ? 1 : 0);
   EXPECT_EQ(pointData->GetNumberOfArrays(), named);
   if (normals)
   {
@@ -117,6 +119,25 @@ void ExpectTriangleMesh(vtkPolyData* mesh)
   ExpectPointArray(mesh, "Normals", 3);
   ExpectPointArray(mesh, ColorsArrayName, 4);
   ExpectPointArray(mesh, TextureCoordinatesArrayName, 2);
+  if (auto* fileVertices = vtkIdTypeArray::SafeDownCast(pointData->GetArray(FileVertexArrayName)))
+  {
+    const vtkIdType points = mesh->GetNumberOfPoints();
+    ASSERT_EQ(fileVertices->GetNumberOfTuples(), points);
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      // A copy of a file vertex, at its position.
+      const vtkIdType vertex = fileVertices->GetValue(i);
+      ASSERT_TRUE(vertex >= 0 && vertex < points) << i;
+      double a[3], b[3];
+      mesh->GetPoint(i, a);
+      mesh->GetPoint(vertex, b);
+      EXPECT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+    }
+  }
+  else
+  {
+    EXPECT_EQ(pointData->GetArray(FileVertexArrayName), nullptr) << "not vtkIdType";
+  }
 }
 
 void MeshReaders::SetUp()

@@ -50,7 +50,7 @@ std::array<double, 3> AreaNormal(vtkPolyData* mesh, const std::array<vtkIdType, 
  * What every successful read must give: triangles only, double points, all
  * finite, no verts/lines/strips, and no point data but the normals and the
  * readers' named attributes (shadelabTriangleMesh.h), each one tuple per
- * point.
+ * point, file vertices at their copies' positions.
  */
 void ExpectTriangleMesh(vtkPolyData* mesh);
 

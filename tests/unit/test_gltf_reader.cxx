@@ -3,6 +3,7 @@
 // fans, attributes, parts and materials, the three ways of storing
 // buffers), and bad input of every kind.
 #include "mesh_reader_fixture.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabGLTFReader.h"
 

@@ -3,6 +3,7 @@
 #include "mesh_reader_fixture.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabMtlParser.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
@@ -18,6 +19,7 @@
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkLogger.h>
 #include <vtkMath.h>
@@ -82,7 +84,8 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
     { "fandisk.obj", 12946 }, { "spot.obj", 5856 }, { "stanford-bunny.obj", 69451 },
     { "stanford-bunny.ply", 69451 }, { "suzanne.obj", 2 * 468 + 32 }, { "teapot.obj", 6320 },
     { "teapot.stl", 6320 }, { "bunny-libigl.off", 6966 }, { "box.gltf", 12 },
-    { "box-assimp.gltf", 12 }, { "box-assimp.glb", 12 }, { "simple-meshes.gltf", 2 } };
+    { "box-assimp.gltf", 12 }, { "box-assimp.glb", 12 }, { "simple-meshes.gltf", 2 },
+    { "spot-textured.obj", 5856 }, { "box-textured.gltf", 12 }, { "box-textured.glb", 12 } };
   std::set<std::string> covered;
   for (const auto& [name, triangles] : expected)
   {
@@ -95,9 +98,11 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
   }
   for (const auto& entry : fs::directory_iterator(TestMeshes))
   {
-    if (entry.path().filename() == "README.md" || entry.path().extension() == ".bin")
+    const fs::path extension = entry.path().extension();
+    if (entry.path().filename() == "README.md" || extension == ".bin" || extension == ".mtl" ||
+      extension == ".png")
     {
-      continue; // the meshes' sources and terms; a glTF's buffer
+      continue; // the meshes' sources and terms; a glTF's buffer, materials, textures
     }
     EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
       << entry.path() << " is not in this test's table";
@@ -439,7 +444,7 @@ TEST_F(MeshReaders, ObjVertexUsedWithTwoNormalsIsSplit)
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
     "vn 0 0 1\nvn 0 -1 0\n"
     "f 1//1 2//1 3//1\n"
-    "f 1/7/2 4/7/2 2/7/2\n")); // the vt index is ignored
+    "f 1//2 4//2 2//2\n"));
   ASSERT_TRUE(result.Ok) << result.Error;
   ExpectTriangleMesh(result.Mesh);
   // Vertices 1 and 2 each get a second point for normal 2.
@@ -463,6 +468,13 @@ TEST_F(MeshReaders, ObjVertexUsedWithTwoNormalsIsSplit)
   EXPECT_EQ(p[0] + p[1] + p[2], 0.0); // the copy of vertex 1
   result.Mesh->GetPoint(5, p);
   EXPECT_EQ(p[0], 1.0); // the copy of vertex 2
+  auto* fileVertices = vtkIdTypeArray::SafeDownCast(
+    result.Mesh->GetPointData()->GetArray(shadelab::FileVertexArrayName));
+  ASSERT_NE(fileVertices, nullptr);
+  for (vtkIdType point = 0; point < 6; ++point)
+  {
+    EXPECT_EQ(fileVertices->GetValue(point), (std::array<vtkIdType, 6>{ 0, 1, 2, 3, 0, 1 })[point]);
+  }
 }
 
 // usemtl: a part per material name in the order of first use, the faces
@@ -540,14 +552,15 @@ TEST_F(MeshReaders, ObjMaterialLibrariesGiveThePartsTheirMaterials)
 
 TEST_F(MeshReaders, MtlCoefficientsDefaultsAndMistakes)
 {
-  const auto materials = shadelab::ParseMtl("newmtl a\nKd 0.5\nTr 0.25\nnewmtl b\nd 0.5\n");
-  ASSERT_EQ(materials.size(), 2u);
-  EXPECT_EQ(materials[0].Name, "a");
-  EXPECT_EQ(materials[0].Kd, (shadelab::Rgb{ 0.5, 0.5, 0.5 }));
-  EXPECT_EQ(materials[0].Ka, (shadelab::Rgb{ 0, 0, 0 }));
-  EXPECT_EQ(materials[0].Ns, 0);
-  EXPECT_EQ(materials[0].Translucency, 0.75);
-  EXPECT_EQ(materials[1].Translucency, 0.5);
+  const auto library = shadelab::ParseMtl("newmtl a\nKd 0.5\nTr 0.25\nnewmtl b\nd 0.5\n");
+  ASSERT_EQ(library.Materials.size(), 2u);
+  const shadelab::Material& a = library.Materials[0].Coefficients;
+  EXPECT_EQ(a.Name, "a");
+  EXPECT_EQ(a.Kd, (shadelab::Rgb{ 0.5, 0.5, 0.5 }));
+  EXPECT_EQ(a.Ka, (shadelab::Rgb{ 0, 0, 0 }));
+  EXPECT_EQ(a.Ns, 0);
+  EXPECT_EQ(a.Translucency, 0.75);
+  EXPECT_EQ(library.Materials[1].Coefficients.Translucency, 0.5);
   const std::vector<std::pair<std::string, std::string>> mistakes{
     { "Kd 1 1 1\n", "line 1: Kd before any newmtl" },
     { "newmtl\n", "line 1: newmtl without a material name" },

@@ -1,0 +1,81 @@
+#include "shadelabGLTFTexture.h"
+
+#include <initializer_list>
+
+namespace shadelab::gltf
+{
+namespace
+{
+// object[key], one of `allowed`; `fallback` where absent.
+int Enum(const Json& object, const char* key, const std::string& where,
+  std::initializer_list<int> allowed, int fallback)
+{
+  const std::uint64_t value = Unsigned(object, key, where, fallback);
+  for (const int v : allowed)
+  {
+    if (static_cast<std::uint64_t>(v) == value)
+    {
+      return v;
+    }
+  }
+  Fail(where + "." + key + " is " + std::to_string(value) + ", which glTF does not define");
+}
+
+void ReadSampler(const Json& root, const Json& texture, const std::string& where, Texture& out)
+{
+  if (!texture.contains("sampler"))
+  {
+    return;
+  }
+  const std::uint64_t index = Unsigned(texture, "sampler", where);
+  const Json& sampler = Item(root, "samplers", index, where);
+  const std::string name = "sampler " + std::to_string(index);
+  const std::initializer_list<int> wraps = { ClampToEdge, MirroredRepeat, Repeat };
+  out.WrapS = Enum(sampler, "wrapS", name, wraps, Repeat);
+  out.WrapT = Enum(sampler, "wrapT", name, wraps, Repeat);
+  out.MagFilter = Enum(sampler, "magFilter", name, { Nearest, Linear }, Linear);
+  // NEAREST, LINEAR and the four mipmap filters, 9984 .. 9987.
+  out.MinFilter =
+    Enum(sampler, "minFilter", name, { Nearest, Linear, 9984, 9985, 9986, 9987 }, Linear);
+}
+}
+
+int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
+  std::vector<Texture>& textures, std::string& warning)
+{
+  if (!material.contains("pbrMetallicRoughness") ||
+    !material["pbrMetallicRoughness"].contains("baseColorTexture"))
+  {
+    return -1;
+  }
+  const std::string at = where + " baseColorTexture";
+  const Json& info = material["pbrMetallicRoughness"]["baseColorTexture"];
+  if (!info.is_object())
+  {
+    Fail(at + " is not an object");
+  }
+  const std::uint64_t index = Unsigned(info, "index", at);
+  const Json& texture = Item(document.Root, "textures", index, at);
+  const std::string name = "texture " + std::to_string(index);
+  const std::uint64_t set = Unsigned(info, "texCoord", at, 0);
+  if (set != 0)
+  {
+    warning = at + " uses TEXCOORD_" + std::to_string(set) +
+      ", but only TEXCOORD_0 is read: it is not drawn";
+    return -1;
+  }
+  if (!texture.contains("source"))
+  {
+    warning = name + " has no source (its image comes from an extension): it is not drawn";
+    return -1;
+  }
+  const std::uint64_t source = Unsigned(texture, "source", name);
+  Item(document.Root, "images", source, name);
+  const Image& image = document.Images[source];
+  Texture result;
+  result.Source = image.Path;
+  result.Bytes.assign(image.Bytes.begin(), image.Bytes.end());
+  ReadSampler(document.Root, texture, name, result);
+  return AddTexture(textures, std::move(result));
+}
+}

@@ -64,8 +64,9 @@ LoadedMesh LoadMesh(const SceneOptions& options)
   LoadedMesh result;
   auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
   reader->SetFileName(options.Mesh.c_str());
-  // Computed normals are smooth across an OBJ's vn seams only if the
-  // vertices are not split by the file's normals in the first place.
+  // Normals to be computed need not split an OBJ's vertices by its vn:
+  // computed on the file's vertices (FileVertex), the split points would
+  // only get their vertex's normal again.
   reader->SetReadNormals(options.Normals != NormalsMode::Compute);
   {
     const MessageScope messages;

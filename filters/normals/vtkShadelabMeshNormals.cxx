@@ -1,6 +1,7 @@
 #include "vtkShadelabMeshNormals.h"
 
 #include "shadelabCornerWeights.h"
+#include "shadelabFileVertices.h"
 #include "shadelabMeshConnectivity.h"
 #include "shadelabVertexSplitting.h"
 
@@ -28,6 +29,7 @@
 
 vtkStandardNewMacro(vtkShadelabMeshNormals);
 
+using shadelab::normals::FileVertices;
 using shadelab::normals::Id;
 using shadelab::normals::MeshConnectivity;
 using shadelab::normals::TriMesh;
@@ -39,6 +41,7 @@ struct vtkShadelabMeshNormals::Cache
   vtkPolyData* Input = nullptr; // identity only, never dereferenced
   vtkMTimeType InputTime = 0;
   bool Consistency = false;
+  FileVertices Files; // the input's points of each file vertex, welded in Mesh
   MeshConnectivity Mesh;
 };
 
@@ -225,6 +228,34 @@ vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
   return normals;
 }
 
+// With file vertices, the output's points and triangles from the welded
+// mesh's `welded` (FileVertices::Unweld), and their normals from the welded
+// points' `normals`.
+OutputTopology Unweld(const FileVertices& files, const MeshConnectivity& c,
+  const OutputTopology& welded, vtkSmartPointer<vtkFloatArray>& normals)
+{
+  const Id* cornerPoint =
+    welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.Triangles.data();
+  std::vector<Id> corners;
+  std::vector<vtkIdType> normalOf;
+  OutputTopology topology;
+  files.Unweld(cornerPoint, c.Points, corners, topology.Source, normalOf);
+  topology.Points = static_cast<vtkIdType>(topology.Source.size());
+  topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
+  topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
+  std::copy(corners.begin(), corners.end(), topology.Connectivity->GetPointer(0));
+  auto unwelded = vtkSmartPointer<vtkFloatArray>::New();
+  unwelded->SetName(normals->GetName());
+  unwelded->SetNumberOfComponents(3);
+  unwelded->SetNumberOfTuples(topology.Points);
+  for (vtkIdType i = 0; i < topology.Points; ++i)
+  {
+    unwelded->SetTypedTuple(i, normals->GetPointer(3 * normalOf[i]));
+  }
+  normals = unwelded;
+  return topology;
+}
+
 // The output's triangles: the input's unless points were split or faces
 // reversed; only the triangles are kept (verts, lines and strips dropped).
 void SetTriangles(vtkPolyData* input, const OutputTopology& topology, vtkPolyData* output)
@@ -328,18 +359,32 @@ int vtkShadelabMeshNormals::RequestData(
       return 0;
     }
     auto cache = std::make_unique<Cache>();
+    const std::string fileError = cache->Files.Read(input);
+    if (!fileError.empty())
+    {
+      vtkErrorMacro(<< fileError);
+      return 0;
+    }
+    if (cache->Files.Active())
+    {
+      cache->Files.Welded(triangles);
+    }
     cache->Input = input;
     cache->InputTime = input->GetMTime();
     cache->Consistency = this->Consistency;
     cache->Mesh.Build(input, this->Consistency, std::move(triangles),
       shadelab::normals::SummedWeighting(this->Weighting));
+    if (cache->Files.Active() && cache->Mesh.Reversed)
+    {
+      cache->Files.FollowOrientation(cache->Mesh.Triangles);
+    }
     this->Cached = std::move(cache);
     ++this->NumberOfConnectivityBuilds;
   }
   MeshConnectivity& mesh = this->Cached->Mesh;
   this->NumberOfDuplicatedFaces = mesh.DuplicatedFaces;
 
-  const OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
+  OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
   std::vector<Sum> sum =
     SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting));
   if (this->Weighting == Loop)
@@ -347,12 +392,18 @@ int vtkShadelabMeshNormals::RequestData(
     SetLoopNormals(mesh, topology, sum);
   }
 
+  vtkSmartPointer<vtkFloatArray> normals = UnitNormals(sum);
+  if (this->Cached->Files.Active())
+  {
+    topology = Unweld(this->Cached->Files, mesh, topology, normals);
+  }
+
   output->GetPointData()->CopyNormalsOff();
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
   SetTriangles(input, topology, output);
   SetPoints(input, topology, output);
-  output->GetPointData()->SetNormals(UnitNormals(sum));
+  output->GetPointData()->SetNormals(normals);
   output->GetCellData()->SetNormals(mesh.CellNormals);
   return 1;
 }

@@ -31,6 +31,16 @@
  * the points they split) with its own normal, and the triangles refer to it:
  * a cube's corner becomes three points.
  *
+ * Points that a reader split from one vertex of its file (an OBJ vertex at
+ * a texture's seam: the point data "FileVertex", shadelabTriangleMesh.h)
+ * are one vertex here: the normals are computed on the file's vertices,
+ * each welded onto the lowest-numbered of its points, exactly as for the
+ * file without the seams, and every point gets its vertex's normal; the
+ * points and their data stay as they are (shadelabFileVertices.h). With
+ * splitting, a point whose corners lie in different runs gets a copy for
+ * each further run. A FileVertex that is not one point number per point is
+ * an error.
+ *
  * OpenMesh's connectivity is built once per input (by its modification time)
  * and kept with the face normals and the last corner weights, so that
  * changing the weighting or the feature angle recomputes normals without

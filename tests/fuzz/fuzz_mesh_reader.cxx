@@ -3,8 +3,9 @@
 // the normals filter. Built once per format with SHADELAB_FUZZ_EXTENSION
 // (".obj", ".ply", ".stl", ".vtk", ".off", ".gltf", ".glb"). A finding is a
 // crash, a sanitizer report, or a mesh that reads but holds out-of-range
-// point ids, non-finite points, or attributes (colours, texture coordinates,
-// parts) that are not one per point or per triangle.
+// point ids, non-finite points, attributes (colours, texture coordinates,
+// parts) that are not one per point or per triangle, or file vertices that
+// are not points.
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
@@ -89,6 +90,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (pointData->GetArray(a)->GetNumberOfTuples() != points)
     {
       std::abort(); // a point attribute is one tuple per point
+    }
+  }
+  if (vtkDataArray* fileVertices = pointData->GetArray(shadelab::FileVertexArrayName))
+  {
+    for (vtkIdType p = 0; p < points; ++p)
+    {
+      const double vertex = fileVertices->GetComponent(p, 0);
+      if (vertex < 0 || vertex >= points)
+      {
+        std::abort(); // a file vertex is one of the points
+      }
     }
   }
   vtkDataArray* parts = mesh->GetCellData()->GetArray(shadelab::PartArrayName);

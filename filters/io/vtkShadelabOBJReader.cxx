@@ -288,6 +288,11 @@ struct SplitKeyHash
 // points get their file vertex (FileVertices) where there are such copies.
 void SplitVertices(ObjData& obj, bool texture, bool normals, shadelab::PolygonMesh& mesh)
 {
+  if (!texture && !normals)
+  {
+    mesh.Points = std::move(obj.Vertices); // nothing to split by
+    return;
+  }
   const std::size_t vertexCount = obj.Vertices.size() / 3;
   std::vector<CornerAttributes> point(vertexCount);
   std::vector<bool> used(vertexCount, false);

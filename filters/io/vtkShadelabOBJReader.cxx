@@ -2,6 +2,7 @@
 
 #include "shadelabMeshReadError.h"
 #include "shadelabMtlParser.h"
+#include "shadelabObjVertices.h"
 #include "shadelabPartMaterials.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
@@ -11,12 +12,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
-#include <functional>
-#include <numeric>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabOBJReader);
@@ -26,17 +23,12 @@ namespace
 using shadelab::Quote;
 using shadelab::TextScanner;
 
-constexpr vtkIdType NoIndex = -1; // a corner without vt or vn
+using shadelab::ObjNoIndex;
 
 struct ObjData
 {
-  std::vector<double> Vertices;          // x y z per v
-  std::vector<float> TextureCoordinates; // s t per vt
-  std::vector<float> Normals;            // x y z per vn
+  shadelab::ObjCorners Corners; // v, vt, vn and the faces' corners
   std::vector<vtkIdType> FaceOffsets{ 0 };
-  std::vector<vtkIdType> VertexIds;  // 0-based, per corner
-  std::vector<vtkIdType> TextureIds; // 0-based or NoIndex, per corner
-  std::vector<vtkIdType> NormalIds;  // 0-based or NoIndex, per corner
   bool SomeCornersHaveTexture = false;
   bool SomeCornersLackTexture = false;
   bool SomeCornersHaveNormals = false;
@@ -111,12 +103,15 @@ void ReadCorner(std::string_view token, ObjData& obj, const TextScanner& scanner
       hasNormal = true;
     }
   }
-  obj.VertexIds.push_back(Resolve(vertex, obj.Vertices.size() / 3, "vertex", "vertices", scanner));
-  obj.TextureIds.push_back(hasTexture ? Resolve(texture, obj.TextureCoordinates.size() / 2,
-                                          "texture coordinate", "texture coordinates", scanner)
-                                      : NoIndex);
-  obj.NormalIds.push_back(
-    hasNormal ? Resolve(normal, obj.Normals.size() / 3, "normal", "normals", scanner) : NoIndex);
+  obj.Corners.VertexIds.push_back(
+    Resolve(vertex, obj.Corners.Vertices.size() / 3, "vertex", "vertices", scanner));
+  obj.Corners.TextureIds.push_back(hasTexture
+      ? Resolve(texture, obj.Corners.TextureCoordinates.size() / 2, "texture coordinate",
+          "texture coordinates", scanner)
+      : ObjNoIndex);
+  obj.Corners.NormalIds.push_back(hasNormal
+      ? Resolve(normal, obj.Corners.Normals.size() / 3, "normal", "normals", scanner)
+      : ObjNoIndex);
   (hasTexture ? obj.SomeCornersHaveTexture : obj.SomeCornersLackTexture) = true;
   (hasNormal ? obj.SomeCornersHaveNormals : obj.SomeCornersLackNormals) = true;
 }
@@ -166,8 +161,8 @@ void ReadTextureCoordinate(TextScanner& scanner, ObjData& obj)
   {
     scanner.Fail("non-finite texture coordinate");
   }
-  obj.TextureCoordinates.insert(
-    obj.TextureCoordinates.end(), { static_cast<float>(values[0]), static_cast<float>(values[1]) });
+  obj.Corners.TextureCoordinates.insert(obj.Corners.TextureCoordinates.end(),
+    { static_cast<float>(values[0]), static_cast<float>(values[1]) });
 }
 
 ObjData Parse(std::string_view text)
@@ -181,7 +176,7 @@ ObjData Parse(std::string_view text)
     {
       for (int c = 0; c < 3; ++c)
       {
-        obj.Vertices.push_back(scanner.ReadDouble("vertex coordinate"));
+        obj.Corners.Vertices.push_back(scanner.ReadDouble("vertex coordinate"));
       }
       double extra;
       for (auto token = scanner.NextToken(); !AtStatementEnd(token); token = scanner.NextToken())
@@ -200,7 +195,7 @@ ObjData Parse(std::string_view text)
     {
       for (int c = 0; c < 3; ++c)
       {
-        obj.Normals.push_back(static_cast<float>(scanner.ReadDouble("normal component")));
+        obj.Corners.Normals.push_back(static_cast<float>(scanner.ReadDouble("normal component")));
       }
       const auto token = scanner.NextToken();
       if (!AtStatementEnd(token))
@@ -226,17 +221,17 @@ ObjData Parse(std::string_view text)
     }
     else if (keyword == "f")
     {
-      const std::size_t first = obj.VertexIds.size();
+      const std::size_t first = obj.Corners.VertexIds.size();
       for (auto token = scanner.NextToken(); !AtStatementEnd(token); token = scanner.NextToken())
       {
         ReadCorner(token, obj, scanner);
       }
-      const std::size_t corners = obj.VertexIds.size() - first;
+      const std::size_t corners = obj.Corners.VertexIds.size() - first;
       if (corners < 3)
       {
         scanner.Fail("face has " + std::to_string(corners) + " vertices, at least 3 are needed");
       }
-      obj.FaceOffsets.push_back(static_cast<vtkIdType>(obj.VertexIds.size()));
+      obj.FaceOffsets.push_back(static_cast<vtkIdType>(obj.Corners.VertexIds.size()));
       obj.FaceParts.push_back(obj.Part);
     }
   }
@@ -245,102 +240,6 @@ ObjData Parse(std::string_view text)
     obj.FaceParts.clear();
   }
   return obj;
-}
-
-// What a point holds besides its position: a corner's vt and vn (NoIndex
-// where they are not read). Corners of one vertex with different ones need
-// points of their own.
-struct CornerAttributes
-{
-  vtkIdType Texture = NoIndex;
-  vtkIdType Normal = NoIndex;
-
-  bool operator==(const CornerAttributes& other) const
-  {
-    return this->Texture == other.Texture && this->Normal == other.Normal;
-  }
-};
-
-struct SplitKey
-{
-  vtkIdType Vertex;
-  CornerAttributes Attributes;
-
-  bool operator==(const SplitKey& other) const
-  {
-    return this->Vertex == other.Vertex && this->Attributes == other.Attributes;
-  }
-};
-
-struct SplitKeyHash
-{
-  std::size_t operator()(const SplitKey& key) const
-  {
-    const std::hash<vtkIdType> hash;
-    return (hash(key.Vertex) * 1000003 ^ hash(key.Attributes.Texture)) * 1000003 ^
-      hash(key.Attributes.Normal);
-  }
-};
-
-// One point per distinct (v, vt, vn) of the corners, as far as vt and vn are
-// read: point i keeps vertex i with the attributes of its first use, the
-// others are appended in the order of the corners that need them, and all
-// points get their file vertex (FileVertices) where there are such copies.
-void SplitVertices(ObjData& obj, bool texture, bool normals, shadelab::PolygonMesh& mesh)
-{
-  if (!texture && !normals)
-  {
-    mesh.Points = std::move(obj.Vertices); // nothing to split by
-    return;
-  }
-  const std::size_t vertexCount = obj.Vertices.size() / 3;
-  std::vector<CornerAttributes> point(vertexCount);
-  std::vector<bool> used(vertexCount, false);
-  std::vector<vtkIdType> copied; // the file vertex of each appended point
-  std::unordered_map<SplitKey, vtkIdType, SplitKeyHash> splitPoints;
-  mesh.Points = std::move(obj.Vertices);
-  for (std::size_t c = 0; c < obj.VertexIds.size(); ++c)
-  {
-    const vtkIdType v = obj.VertexIds[c];
-    const CornerAttributes corner{ texture ? obj.TextureIds[c] : NoIndex,
-      normals ? obj.NormalIds[c] : NoIndex };
-    if (!used[v])
-    {
-      used[v] = true;
-      point[v] = corner;
-    }
-    else if (!(point[v] == corner))
-    {
-      const auto [it, added] =
-        splitPoints.try_emplace(SplitKey{ v, corner }, static_cast<vtkIdType>(point.size()));
-      if (added)
-      {
-        mesh.Points.insert(mesh.Points.end(),
-          { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
-        point.push_back(corner);
-        copied.push_back(v);
-      }
-      obj.VertexIds[c] = it->second;
-    }
-  }
-  for (const CornerAttributes& p : point)
-  {
-    for (int k = 0; texture && k < 2; ++k)
-    {
-      mesh.TextureCoordinates.push_back(
-        p.Texture == NoIndex ? 0.0f : obj.TextureCoordinates[2 * p.Texture + k]);
-    }
-    for (int k = 0; normals && k < 3; ++k)
-    {
-      mesh.Normals.push_back(p.Normal == NoIndex ? 0.0f : obj.Normals[3 * p.Normal + k]);
-    }
-  }
-  if (!copied.empty())
-  {
-    mesh.FileVertices.resize(vertexCount);
-    std::iota(mesh.FileVertices.begin(), mesh.FileVertices.end(), vtkIdType{ 0 });
-    mesh.FileVertices.insert(mesh.FileVertices.end(), copied.begin(), copied.end());
-  }
 }
 
 // A map of an MTL material as a texture of the mesh: its file resolved
@@ -400,9 +299,9 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
     vtkWarningMacro(<< "some faces have no vn normals, so the file's normals are ignored");
   }
   shadelab::PolygonMesh mesh;
-  SplitVertices(obj, texture, normals, mesh);
+  shadelab::SplitVertices(obj.Corners, texture, normals, mesh);
   mesh.FaceOffsets = std::move(obj.FaceOffsets);
-  mesh.FaceIds = std::move(obj.VertexIds);
+  mesh.FaceIds = std::move(obj.Corners.VertexIds);
   mesh.Parts = std::move(obj.FaceParts);
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles, 1);
   if (!obj.MaterialNames.empty())

@@ -23,7 +23,7 @@
  * there are such copies, the point data "FileVertex" gives each point's
  * vertex (0-based: point i < the vertex count is i itself), so that normals
  * computed later (vtkShadelabMeshNormals) are the file vertices' and do not
- * crease at a texture's seams.
+ * crease at a texture's seams (shadelabObjVertices.h).
  *
  * With `usemtl`, each triangle's part (cell data "Part") is its material
  * name's, parts numbered in the order of the names' first use, with part 0

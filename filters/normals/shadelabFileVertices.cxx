@@ -68,10 +68,12 @@ void FileVertices::FollowOrientation(const std::vector<Id>& oriented)
   }
 }
 
-void FileVertices::Unweld(const Id* cornerPoint, vtkIdType points, std::vector<Id>& corners,
-  std::vector<vtkIdType>& source, std::vector<vtkIdType>& normalOf) const
+void FileVertices::Unweld(const Id* cornerPoint, vtkIdType points,
+  vtkSmartPointer<vtkFloatArray>& normals, std::vector<Id>& corners,
+  std::vector<vtkIdType>& source) const
 {
-  normalOf.assign(this->Weld.begin(), this->Weld.end());
+  // The welded point whose normal each output point takes.
+  std::vector<vtkIdType> normalOf(this->Weld.begin(), this->Weld.end());
   source.resize(points);
   std::iota(source.begin(), source.end(), 0);
   corners.resize(this->Corners.size());
@@ -102,5 +104,14 @@ void FileVertices::Unweld(const Id* cornerPoint, vtkIdType points, std::vector<I
     }
     corners[k] = copy->second;
   }
+  auto unwelded = vtkSmartPointer<vtkFloatArray>::New();
+  unwelded->SetName(normals->GetName());
+  unwelded->SetNumberOfComponents(3);
+  unwelded->SetNumberOfTuples(static_cast<vtkIdType>(normalOf.size()));
+  for (std::size_t i = 0; i < normalOf.size(); ++i)
+  {
+    unwelded->SetTypedTuple(static_cast<vtkIdType>(i), normals->GetPointer(3 * normalOf[i]));
+  }
+  normals = unwelded;
 }
 }

@@ -18,6 +18,9 @@
 
 #include "shadelabNormalsMesh.h"
 
+#include <vtkFloatArray.h>
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
@@ -50,16 +53,17 @@ public:
 
   /**
    * The output from the welded one's: `cornerPoint` (3 a face) the welded
-   * output point of each corner, `points` the input's point count. Gives
-   * each corner's output point (`corners`), each output point's input point
-   * (`source`: the input's points, then copies) and the welded output point
-   * whose normal it takes (`normalOf`). An input point keeps its number for
-   * the welded point of its first corner; a corner of it at another welded
-   * point (feature-angle splitting split its file vertex) gets a copy, one
-   * per such pair. Points that no face uses take their file vertex's normal.
+   * output point of each corner, `points` the input's point count,
+   * `normals` the welded output points' normals. Gives each corner's output
+   * point (`corners`), each output point's input point (`source`: the
+   * input's points, then copies) and, in `normals`, the output points'
+   * normals. An input point keeps its number for the welded point of its
+   * first corner; a corner of it at another welded point (feature-angle
+   * splitting split its file vertex) gets a copy, one per such pair. Points
+   * that no face uses take their file vertex's normal.
    */
-  void Unweld(const Id* cornerPoint, vtkIdType points, std::vector<Id>& corners,
-    std::vector<vtkIdType>& source, std::vector<vtkIdType>& normalOf) const;
+  void Unweld(const Id* cornerPoint, vtkIdType points, vtkSmartPointer<vtkFloatArray>& normals,
+    std::vector<Id>& corners, std::vector<vtkIdType>& source) const;
 
 private:
   std::vector<Id> Weld;    // per input point: the lowest-numbered point of its file vertex

@@ -229,30 +229,20 @@ vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
 }
 
 // With file vertices, the output's points and triangles from the welded
-// mesh's `welded` (FileVertices::Unweld), and their normals from the welded
-// points' `normals`.
+// mesh's `welded`, and their normals from the welded points' `normals`
+// (FileVertices::Unweld).
 OutputTopology Unweld(const FileVertices& files, const MeshConnectivity& c,
   const OutputTopology& welded, vtkSmartPointer<vtkFloatArray>& normals)
 {
   const Id* cornerPoint =
     welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.Triangles.data();
   std::vector<Id> corners;
-  std::vector<vtkIdType> normalOf;
   OutputTopology topology;
-  files.Unweld(cornerPoint, c.Points, corners, topology.Source, normalOf);
+  files.Unweld(cornerPoint, c.Points, normals, corners, topology.Source);
   topology.Points = static_cast<vtkIdType>(topology.Source.size());
   topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
   topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
   std::copy(corners.begin(), corners.end(), topology.Connectivity->GetPointer(0));
-  auto unwelded = vtkSmartPointer<vtkFloatArray>::New();
-  unwelded->SetName(normals->GetName());
-  unwelded->SetNumberOfComponents(3);
-  unwelded->SetNumberOfTuples(topology.Points);
-  for (vtkIdType i = 0; i < topology.Points; ++i)
-  {
-    unwelded->SetTypedTuple(i, normals->GetPointer(3 * normalOf[i]));
-  }
-  normals = unwelded;
   return topology;
 }
 

@@ -74,6 +74,17 @@ const BadCase Cases[] = {
       return WithMesh(d, "lib.obj", "mtllib bad.mtl\nusemtl a\n" + Tetrahedron);
     },
     1, { "lib.obj", "material library 'bad.mtl' line 2: malformed Kd 'nope'" } },
+  { "ObjMalformedTextureMap",
+    [](const TempDir& d)
+    {
+      WriteText(d / "maps.mtl", "newmtl a\nmap_Kd -clamp sometimes wood.png\n");
+      return WithMesh(d, "maps.obj", "mtllib maps.mtl\nusemtl a\n" + Tetrahedron);
+    },
+    1, { "maps.obj", "material library 'maps.mtl' line 2: malformed map_Kd -clamp 'sometimes'" } },
+  { "ObjTextureCoordinateOutOfRange",
+    [](const TempDir& d)
+    { return WithMesh(d, "vt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n"); },
+    1, { "vt.obj", "line 5", "texture coordinate 2" } },
   { "ObjZeroIndex",
     [](const TempDir& d)
     { return WithMesh(d, "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); },
@@ -140,6 +151,20 @@ const BadCase Cases[] = {
         "{\"POSITION\": 0}}]}]}");
     },
     1, { "tri.gltf", "accessor 0 needs 30 elements" } },
+  { "GltfTextureImageOutOfRange",
+    [](const TempDir& d)
+    {
+      const float xyz[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+      WriteText(d / "tri.bin", Binary(xyz, sizeof xyz));
+      return WithMesh(d, "textured.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"tri.bin\", "
+        "\"byteLength\": 36}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}], "
+        "\"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, "
+        "\"type\": \"VEC3\"}], \"meshes\": [{\"primitives\": [{\"attributes\": "
+        "{\"POSITION\": 0}, \"material\": 0}]}], \"materials\": [{\"pbrMetallicRoughness\": "
+        "{\"baseColorTexture\": {\"index\": 0}}}], \"textures\": [{\"source\": 2}]}");
+    },
+    1, { "textured.gltf", "texture 0 refers to images[2]" } },
   { "GlbTruncated",
     [](const TempDir& d)
     {

@@ -30,13 +30,13 @@ void ReadSampler(const Json& root, const Json& texture, const std::string& where
   const std::uint64_t index = Unsigned(texture, "sampler", where);
   const Json& sampler = Item(root, "samplers", index, where);
   const std::string name = "sampler " + std::to_string(index);
-  const std::initializer_list<int> wraps = { ClampToEdge, MirroredRepeat, Repeat };
-  out.WrapS = Enum(sampler, "wrapS", name, wraps, Repeat);
-  out.WrapT = Enum(sampler, "wrapT", name, wraps, Repeat);
-  out.MagFilter = Enum(sampler, "magFilter", name, { Nearest, Linear }, Linear);
+  const std::initializer_list<int> wraps = { gl::ClampToEdge, gl::MirroredRepeat, gl::Repeat };
+  out.WrapS = Enum(sampler, "wrapS", name, wraps, gl::Repeat);
+  out.WrapT = Enum(sampler, "wrapT", name, wraps, gl::Repeat);
+  out.MagFilter = Enum(sampler, "magFilter", name, { gl::Nearest, gl::Linear }, gl::Linear);
   // NEAREST, LINEAR and the four mipmap filters, 9984 .. 9987.
-  out.MinFilter =
-    Enum(sampler, "minFilter", name, { Nearest, Linear, 9984, 9985, 9986, 9987 }, Linear);
+  out.MinFilter = Enum(
+    sampler, "minFilter", name, { gl::Nearest, gl::Linear, 9984, 9985, 9986, 9987 }, gl::Linear);
 }
 }
 

@@ -64,14 +64,14 @@ constexpr const char* TextureMagFilterArrayName = "TextureMagFilter";
 constexpr const char* TextureMinFilterArrayName = "TextureMinFilter";
 
 /** OpenGL's (and glTF's) values for wrap and filter. */
-enum TextureSampling : int
+namespace gl
 {
-  Nearest = 9728,
-  Linear = 9729,
-  Repeat = 10497,
-  ClampToEdge = 33071,
-  MirroredRepeat = 33648
-};
+constexpr int Nearest = 9728;
+constexpr int Linear = 9729;
+constexpr int Repeat = 10497;
+constexpr int ClampToEdge = 33071;
+constexpr int MirroredRepeat = 33648;
+}
 
 /** A part's material as its file names and defines it. */
 struct PartMaterial
@@ -88,10 +88,10 @@ struct Texture
 {
   std::string Source;               // the image file's path; "" when embedded
   std::vector<unsigned char> Bytes; // the encoded image, where embedded
-  int WrapS = Repeat;
-  int WrapT = Repeat;
-  int MagFilter = Linear;
-  int MinFilter = Linear;
+  int WrapS = gl::Repeat;
+  int WrapT = gl::Repeat;
+  int MagFilter = gl::Linear;
+  int MinFilter = gl::Linear;
 };
 
 /**

@@ -253,7 +253,7 @@ int MapTexture(const shadelab::MtlMap& map, std::vector<shadelab::Texture>& text
   }
   shadelab::Texture texture;
   texture.Source = map.File;
-  texture.WrapS = texture.WrapT = map.Clamp ? shadelab::ClampToEdge : shadelab::Repeat;
+  texture.WrapS = texture.WrapT = map.Clamp ? shadelab::gl::ClampToEdge : shadelab::gl::Repeat;
   return shadelab::AddTexture(textures, std::move(texture));
 }
 

@@ -242,7 +242,7 @@ TEST_F(MeshReaders, ObjMaterialMapsBecomeThePartsTextures)
     Ints(result.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ -1, 0, 1, -1, -1 }));
   EXPECT_EQ(
     Ints(result.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ -1, 0, -1, 0, -1 }));
-  using shadelab::ClampToEdge, shadelab::Linear, shadelab::Repeat;
+  using shadelab::gl::ClampToEdge, shadelab::gl::Linear, shadelab::gl::Repeat;
   EXPECT_EQ(
     Ints(result.Mesh, shadelab::TextureWrapSArrayName), (std::vector<int>{ Repeat, ClampToEdge }));
   EXPECT_EQ(
@@ -303,8 +303,8 @@ TEST_F(MeshReaders, SpotsTextureCoordinatesAndTexture)
     (std::vector<std::string>{ (TestMeshes / "spot_texture.png").lexically_normal().string() }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0 }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ 0 }));
-  EXPECT_EQ(
-    Ints(textured.Mesh, shadelab::TextureWrapSArrayName), (std::vector<int>{ shadelab::Repeat }));
+  EXPECT_EQ(Ints(textured.Mesh, shadelab::TextureWrapSArrayName),
+    (std::vector<int>{ shadelab::gl::Repeat }));
 }
 
 // Khronos' BoxTextured: one material whose baseColorTexture is

@@ -161,7 +161,8 @@ int main(int argc, char** argv)
     {
       return ReportError("render", error);
     }
-    BuiltScene built = BuildScene(scene, mesh, renderer.GetRenderer());
+    // The benchmark's meshes have one part: one actor.
+    const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer()).Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

@@ -54,10 +54,11 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
     }
     shot["material"] = material;
   }
-  else
+  else if (s.MaterialGiven || s.MaterialName != d.MaterialName)
   {
     shot["material"] = s.MaterialName;
   }
+  // else none: the mesh's parts keep their own materials, the rest the default
   shot["ambient"] = s.Ambient;
   if (!s.Lights.empty())
   {

@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,27 +37,37 @@ const Rgb RedKa{ 0.25, 0, 0 }, RedKd{ 0.75, 0.125, 0.0625 }, RedKs{ 0.5, 0.5, 0.
 
 // The same square as glTF, one primitive per triangle, with the materials
 // "left" (part 0) and "right" (part 1): base colours B, metallic 0 and
-// roughness 1, which the reader maps to kd = ka = B (README, "Materials from
-// glTF"). The buffer is the six corners as float x y z.
-constexpr const char* Gltf = R"({
+// roughness 1, which the reader maps to kd = ka = B, ks = 0.04, ns = 0
+// (README, "Materials from glTF"). The buffer holds the six corners as
+// float x y z, then a colour for each; with `vertexColors` they are COLOR_0.
+std::string GltfText(bool vertexColors)
+{
+  const std::string colors0 = vertexColors ? R"(, "COLOR_0": 2)" : "";
+  const std::string colors1 = vertexColors ? R"(, "COLOR_0": 3)" : "";
+  return R"({
   "asset": { "version": "2.0" },
   "scene": 0, "scenes": [ { "nodes": [ 0 ] } ], "nodes": [ { "mesh": 0 } ],
   "meshes": [ { "primitives": [
-    { "attributes": { "POSITION": 0 }, "material": 0 },
-    { "attributes": { "POSITION": 1 }, "material": 1 } ] } ],
+    { "attributes": { "POSITION": 0)" +
+    colors0 + R"( }, "material": 0 },
+    { "attributes": { "POSITION": 1)" +
+    colors1 + R"( }, "material": 1 } ] } ],
   "materials": [
     { "name": "left", "pbrMetallicRoughness": { "baseColorFactor": [0.5, 0.25, 0.125, 1],
       "metallicFactor": 0, "roughnessFactor": 1 } },
     { "name": "right", "pbrMetallicRoughness": { "baseColorFactor": [0.125, 0.5, 0.75, 1],
       "metallicFactor": 0, "roughnessFactor": 1 } } ],
-  "buffers": [ { "byteLength": 72, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAACAvwAAgD8AAAAAAACAPwAAgL8AAAAAAACAPwAAgD8AAAAAAACAvwAAgD8AAAAA" } ],
-  "bufferViews": [ { "buffer": 0, "byteLength": 72 } ],
+  "buffers": [ { "byteLength": 144, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAACAvwAAgD8AAAAAAACAPwAAgL8AAAAAAACAPwAAgD8AAAAAAACAvwAAgD8AAAAAAACAPwAAgD4AAAAAAAAAAAAAgD8AAAA/AACAPgAAAAAAAIA/AACAPwAAgD8AAAAAAAAAAAAAAD8AAIA/AACAPwAAAAAAAAA/" } ],
+  "bufferViews": [ { "buffer": 0, "byteLength": 144 } ],
   "accessors": [
     { "bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 3, "type": "VEC3",
       "min": [-1, -1, 0], "max": [1, 1, 0] },
     { "bufferView": 0, "byteOffset": 36, "componentType": 5126, "count": 3, "type": "VEC3",
-      "min": [-1, -1, 0], "max": [1, 1, 0] } ]
+      "min": [-1, -1, 0], "max": [1, 1, 0] },
+    { "bufferView": 0, "byteOffset": 72, "componentType": 5126, "count": 3, "type": "VEC3" },
+    { "bufferView": 0, "byteOffset": 108, "componentType": 5126, "count": 3, "type": "VEC3" } ]
 })";
+}
 const Rgb LeftKd{ 0.5, 0.25, 0.125 }, RightKd{ 0.125, 0.5, 0.75 };
 
 // An orthographic view of the square: 100x100 pixels, 1.1 units either side
@@ -77,11 +89,13 @@ struct Files
   TempDir Dir;
   std::string ObjPath = (Dir / "parts.obj").string();
   std::string GltfPath = (Dir / "parts.gltf").string();
+  std::string ColoredGltfPath = (Dir / "colored.gltf").string();
   Files()
   {
     WriteText(Dir / "parts.obj", Obj);
     WriteText(Dir / "parts.mtl", Mtl);
-    WriteText(Dir / "parts.gltf", Gltf);
+    WriteText(GltfPath, GltfText(false));
+    WriteText(ColoredGltfPath, GltfText(true));
   }
 };
 
@@ -239,6 +253,42 @@ TEST(Parts, ProbeReportsThePartUnderThePixel)
   ASSERT_EQ(gold.ExitCode, 0) << gold.Stderr;
   EXPECT_NE(gold.Stdout.find("\"material_from\":\"option\""), std::string::npos) << gold.Stdout;
   EXPECT_EQ(gold.Stdout.find("\"material_from\":\"file\""), std::string::npos) << gold.Stdout;
+}
+
+// Vertex colours stay each part's kd under every rule, the rest of each
+// part's material its own (flat: each part's triangles exploded apart): the
+// rendered pixel in each part against the oracle's value that probe gives,
+// within the oracle tests' standard bound (1e-4 relative, floor 0.01;
+// test_shading_oracle's Tolerance Standard says why).
+TEST(Parts, VertexColorsAreEveryPartsKdUnderEveryRule)
+{
+  const Files files;
+  for (const char* rule : { "flat", "gouraud", "phong" })
+  {
+    std::vector<std::string> args{ "probe", files.ColoredGltfPath, "--json", "--shading", rule,
+      "--light", "point:0.3,0.2,2", "--pixel",
+      std::to_string(InPart0[0]) + "," + std::to_string(InPart0[1]), "--pixel",
+      std::to_string(InPart1[0]) + "," + std::to_string(InPart1[1]) };
+    args.insert(args.end(), View.begin(), View.end());
+    const RunResult r = RunShadelab(args);
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    std::istringstream lines(r.Stdout);
+    int part = 0;
+    for (std::string line; std::getline(lines, line); ++part)
+    {
+      const json p = json::parse(line);
+      EXPECT_EQ(p.at("part"), part) << rule;
+      EXPECT_EQ(p.at("kd_from"), "vertex colors") << rule;
+      EXPECT_EQ(p.at("material").at("name"), part == 0 ? "left" : "right") << rule;
+      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01))
+          << rule << ", part " << part << ", channel " << c;
+      }
+    }
+    EXPECT_EQ(part, 2) << r.Stdout;
+  }
 }
 
 // The real Khronos box through assimp: one part, its named material as the

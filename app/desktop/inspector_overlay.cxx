@@ -95,7 +95,7 @@ void Inspector::UpdateHud()
       [](const ScenePart& p) { return p.Source == MaterialSource::File; });
     if (own > 0)
     {
-      material << ", " << own << " of " << parts.size() << " parts with their file's";
+      material << ", file's on " << own << "/" << parts.size() << " parts";
     }
   }
   std::ostringstream hud;

@@ -220,6 +220,34 @@ TEST(Parts, GltfPrimitivesAreDrawnWithTheirMaterials)
   EXPECT_EQ(parts[1].at("source"), "file");
 }
 
+// A scene file's shots of one mesh share its actors where they can: one
+// that draws every part with one material, then one that draws them with
+// their own again; neither leaves the other's actors in the picture.
+TEST(Parts, ShotsOfOneMeshSwitchBetweenTheFilesMaterialsAndAnOverride)
+{
+  const Files files;
+  const std::string scene = R"({ "mesh": "parts.obj", "shading": "none", "size": [100, 100],
+    "pixel_type": "float", "camera": { "position": [0, 0, 5], "focal_point": [0, 0, 0],
+    "view_up": [0, 1, 0], "orthographic": true, "parallel_scale": 1.1 },
+    "shots": [ { "output": ")" +
+    (files.Dir / "a.exr").string() + R"(" }, { "output": ")" + (files.Dir / "b.exr").string() +
+    R"(", "material": "gold" }, { "output": ")" + (files.Dir / "c.exr").string() + R"(" } ] })";
+  WriteText(files.Dir / "scene.json", scene);
+  const RunResult r = RunShadelab({ "render", "--scene", (files.Dir / "scene.json").string() });
+  ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  const Rgb chrome = Lecture("chrome", &shadelab::Material::Kd);
+  const Rgb gold = Lecture("gold", &shadelab::Material::Kd);
+  for (const char* own : { "a.exr", "c.exr" })
+  {
+    const Image image = ReadImage(files.Dir / own);
+    ExpectFloats(At(image, InPart0), RedKd);
+    ExpectFloats(At(image, InPart1), chrome);
+  }
+  const Image overridden = ReadImage(files.Dir / "b.exr");
+  ExpectFloats(At(overridden, InPart0), gold);
+  ExpectFloats(At(overridden, InPart1), gold);
+}
+
 // probe names the part under each pixel and where its material came from,
 // and lights the pixel with that material.
 TEST(Parts, ProbeReportsThePartUnderThePixel)

@@ -17,7 +17,7 @@ namespace shadelab
 {
 namespace
 {
-// Part p's coefficients from the field array `name`, ncomponents each.
+// Part p's coefficients from the field array `name`, of N components (zeros where it has none).
 template <std::size_t N>
 std::array<double, N> FieldTuple(vtkFieldData* field, const char* name, vtkIdType p)
 {

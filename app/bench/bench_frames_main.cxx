@@ -4,11 +4,14 @@
 // program that per-scene generation is measured against.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
-//                         [--vertex-colors]
+//                         [--vertex-colors] [--parts N]
 //
 // --vertex-colors gives every point a colour (from its position in the
 // bounding box), which our variants light as per-vertex kd: the cost of
-// vertex colours against the same run without them.
+// vertex colours against the same run without them. --parts N deals the
+// triangles into N parts, each with a material of its own (an actor each):
+// the cost of many parts against the same run with one; VTK's variants and
+// the all-features program are left out then (they draw one actor).
 // Each variant gets a fresh OpenGL context, so its first frame includes
 // compiling its programs; run with MESA_SHADER_CACHE_DISABLE=true to measure
 // compilation (scripts/bench-shading does).
@@ -24,7 +27,9 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellData.h>
 #include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkLogger.h>
 #include <vtkPointData.h>
@@ -102,6 +107,32 @@ void AddPositionColors(vtkPolyData* mesh)
   }
   mesh->GetPointData()->AddArray(colors);
 }
+
+// n parts in bands of cell indices (as an OBJ's usemtl runs are), each with
+// a material of its own: the lecture's table in turn, each ns different, so
+// that no two parts share an actor.
+void AddParts(vtkPolyData* mesh, int n)
+{
+  auto part = vtkSmartPointer<vtkIntArray>::New();
+  part->SetName(PartArrayName);
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    part->InsertNextValue(static_cast<int>(c * n / cells));
+  }
+  mesh->GetCellData()->AddArray(part);
+  std::vector<PartMaterial> materials;
+  for (int p = 0; p < n; ++p)
+  {
+    PartMaterial m;
+    m.Name = "part" + std::to_string(p);
+    m.Index = p;
+    m.Coefficients = LectureMaterials()[p % LectureMaterials().size()];
+    m.Coefficients.Ns += p;
+    materials.push_back(m);
+  }
+  AddPartMaterials(materials, mesh);
+}
 }
 
 int main(int argc, char** argv)
@@ -115,12 +146,15 @@ int main(int argc, char** argv)
   int frames = 10;
   int subdivide = 0;
   bool vertexColors = false;
+  int parts = 1;
   app.add_option("MESH", o.Mesh)->required();
   app.add_option("--size", size);
   app.add_option("--frames", frames)->check(CLI::Range(1, 1000));
   app.add_option("--subdivide", subdivide, "Loop subdivision levels first")
     ->check(CLI::Range(0, 4));
   app.add_flag("--vertex-colors", vertexColors, "Colour the points, lit as per-vertex kd");
+  app.add_option("--parts", parts, "Deal the triangles into N parts of their own materials")
+    ->check(CLI::Range(1, 1000));
   CLI11_PARSE(app, argc, argv);
   o.Size = ParseSize(size);
 
@@ -135,12 +169,19 @@ int main(int argc, char** argv)
   {
     mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
   }
-  if (vertexColors)
+  if (vertexColors || parts > 1)
   {
-    auto colored = vtkSmartPointer<vtkPolyData>::New();
-    colored->ShallowCopy(mesh); // its own point data, sharing the arrays
-    AddPositionColors(colored);
-    mesh = colored;
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(mesh); // its own attributes, sharing the arrays
+    if (vertexColors)
+    {
+      AddPositionColors(copy);
+    }
+    if (parts > 1)
+    {
+      AddParts(copy, parts);
+    }
+    mesh = copy;
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
@@ -154,6 +195,10 @@ int main(int argc, char** argv)
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
   for (const Variant& v : variants)
   {
+    if (parts > 1 && (v.VtkOwn || v.AllFeatures))
+    {
+      continue;
+    }
     SceneOptions scene = o;
     scene.ShadingRule = v.Rule;
     HeadlessRenderer renderer;
@@ -161,7 +206,8 @@ int main(int argc, char** argv)
     {
       return ReportError("render", error);
     }
-    BuiltScene built = BuildScene(scene, mesh, renderer.GetRenderer());
+    // One actor but with --parts, where only ours run.
+    const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer()).Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

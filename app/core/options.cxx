@@ -200,7 +200,11 @@ void AddViewOptions(CLI::App& command, SceneOptions& o)
 Material SceneOptions::EffectiveMaterial() const
 {
   const Material* base = FindLectureMaterial(this->MaterialName);
-  Material m = base ? *base : Material{ this->MaterialName };
+  return this->Overridden(base ? *base : Material{ this->MaterialName });
+}
+
+Material SceneOptions::Overridden(Material m) const
+{
   m.Ka = this->Ka.value_or(m.Ka);
   m.Kd = this->Kd.value_or(m.Kd);
   m.Ks = this->Ks.value_or(m.Ks);

@@ -168,6 +168,9 @@ struct SceneOptions
   /** The material after the --ka/--kd/--ks/--ns overrides. */
   Material EffectiveMaterial() const;
 
+  /** m with the coefficients that --ka/--kd/--ks/--ns give replaced. */
+  Material Overridden(Material m) const;
+
   /** --material or --kd: the mesh's vertex colours are not its kd. */
   bool OverridesKd() const { return this->MaterialGiven || this->Kd.has_value(); }
 };

@@ -66,7 +66,7 @@ std::vector<std::string> SceneArguments(const SceneOptions& s)
   {
     add("--reflection", ToString(s.ReflectionModel));
   }
-  if (s.MaterialName != d.MaterialName)
+  if (s.MaterialGiven || s.MaterialName != d.MaterialName) // given: it replaces the file's
   {
     add("--material", s.MaterialName);
   }

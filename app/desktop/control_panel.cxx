@@ -104,6 +104,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
           if (row < static_cast<int>(table.size()))
           {
             s.MaterialName = table[row].Name;
+            s.MaterialGiven = true; // every part's material, as --material replaces it
             s.Ka.reset();
             s.Kd.reset();
             s.Ks.reset();

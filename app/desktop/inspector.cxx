@@ -297,7 +297,10 @@ void Inspector::FollowCamera()
   {
     if (const BuiltScene* shown = slot.Scenes.GetShown())
     {
-      shown->Shading->SetLightPlacement(lights);
+      for (const DrawnParts& drawn : shown->Drawn)
+      {
+        drawn.Shading->SetLightPlacement(lights);
+      }
     }
   }
 }

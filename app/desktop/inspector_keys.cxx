@@ -124,7 +124,8 @@ void Inspector::StepMaterial(int step)
   const int n = static_cast<int>(materials.size());
   const int index = current == materials.end() ? -1 : static_cast<int>(current - materials.begin());
   s.MaterialName = materials[(index + step + n) % n].Name;
-  s.Ka.reset(); // the command line's coefficients were for its material
+  s.MaterialGiven = true; // every part's material, as --material replaces it
+  s.Ka.reset();           // the command line's coefficients were for its material
   s.Kd.reset();
   s.Ks.reset();
   s.Ns.reset();

@@ -1,6 +1,7 @@
 // The texts over the inspector's panels: the HUD at the bottom left and the
 // key list (key h) in the middle.
 #include "desktop/inspector.h"
+#include "scene/scene_parts.h"
 
 #include <vtkTextProperty.h>
 
@@ -83,11 +84,25 @@ void Inspector::UpdateHud()
 {
   const SceneOptions& s = this->State.Scene;
   const Material m = s.EffectiveMaterial();
+  std::ostringstream material;
+  material << m.Name << " (ns " << Fixed(m.Ns, 1) << ")";
+  // Parts that keep the file's materials: the default above is not all there is.
+  const BuiltScene* shown = this->Slots.empty() ? nullptr : this->Slots.front().Scenes.GetShown();
+  if (shown)
+  {
+    const std::vector<ScenePart> parts = SceneParts(s, shown->Mesh);
+    const auto own = std::count_if(parts.begin(), parts.end(),
+      [](const ScenePart& p) { return p.Source == MaterialSource::File; });
+    if (own > 0)
+    {
+      material << ", file's on " << own << "/" << parts.size() << " parts";
+    }
+  }
   std::ostringstream hud;
   hud << (this->State.Compare ? "compare: " + this->Options.Panels.Modes
                               : std::string(ToString(s.ShadingRule)) + " shading")
       << " | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") << " | "
-      << m.Name << " (ns " << Fixed(m.Ns, 1) << ") | " << Describe(this->State.Lights) << "\n";
+      << material.str() << " | " << Describe(this->State.Lights) << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
                                                                  : s.Computed.Weighting.c_str())

@@ -48,7 +48,8 @@ void Inspector::Apply()
     this->ShowExtras(slot, scene, shown.Mesh->Mesh);
     if (i == 0)
     {
-      this->ShaderWatch.Watch(shown.Scene->Actor->GetMapper());
+      // The first material's program: the others differ at most in their specular code.
+      this->ShaderWatch.Watch(shown.Scene->Drawn.front().Actor->GetMapper());
     }
     slot.Label->SetInput(panels[i].Label.c_str());
     slot.Label->SetVisibility(this->State.Compare);

@@ -241,7 +241,9 @@ private:
     std::unique_ptr<ShaderDump> dump;
     if (!this->Options.DumpShaders.empty())
     {
-      dump = std::make_unique<ShaderDump>(scene.Actor->GetMapper(), this->Options.DumpShaders,
+      // The first material's program: the others differ at most in their specular code.
+      dump = std::make_unique<ShaderDump>(scene.Drawn.front().Actor->GetMapper(),
+        this->Options.DumpShaders,
         std::string(ToString(options.ShadingRule)) + "-" + ToString(options.ReflectionModel));
     }
     const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());

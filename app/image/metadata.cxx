@@ -2,6 +2,7 @@
 
 #include "scene/scene.h"
 #include "scene/scene_file.h"
+#include "scene/scene_parts.h"
 #include "shadelabVersion.h"
 
 #include <vtkCamera.h>
@@ -113,6 +114,14 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["reflection"] = ToString(o.ReflectionModel);
   j["material"] = DescribeMaterial(o.EffectiveMaterial());
   j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors" : "material";
+  auto parts = nlohmann::ordered_json::array();
+  for (const ScenePart& part : SceneParts(o, mesh))
+  {
+    parts.push_back({ { "index", part.Index }, { "name", part.Name },
+      { "triangles", part.Triangles }, { "material", DescribeMaterial(part.Surface) },
+      { "source", ToString(part.Source) }, { "overridden", part.Overridden } });
+  }
+  j["parts"] = parts;
   j["ambient"] = o.Ambient;
   auto lights = nlohmann::ordered_json::array();
   for (const Light& light : EffectiveLights(o, position))

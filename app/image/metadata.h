@@ -27,9 +27,9 @@ std::string QuoteCommandLine(int argc, const char* const* argv);
 /**
  * The image attributes: "Software" and "ImageDescription" (JSON of every
  * parameter, the camera as rendered, where kd came from in `mesh`, the mesh
- * as read; `shot`, when given, names the scene file and shot it comes from;
- * `panels`, a comparison's panel labels). No time stamps: the same scene
- * gives the same bytes.
+ * as read, its parts with the materials they were drawn with; `shot`, when given, names the scene
+ * file and shot it comes from; `panels`, a comparison's panel labels). No time stamps: the same
+ * scene gives the same bytes.
  */
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
   const SceneOptions& options, vtkCamera* camera, vtkPolyData* mesh, const std::string& shot = "",

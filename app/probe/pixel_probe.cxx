@@ -52,6 +52,8 @@ PixelProber::PixelProber(
   s.Rule = options.ShadingRule;
   s.Model = options.ReflectionModel;
   s.Surface = options.EffectiveMaterial();
+  this->Parts = SceneParts(options, mesh);
+  this->CellParts = PartOfCells(mesh);
   s.Ia = options.Ambient;
   s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
   s.Background = options.Background;
@@ -112,7 +114,14 @@ PixelProbe PixelProber::Probe(Pixel at) const
   }
   p.Fragment.Weights = hit.Weights;
   p.Fragment.Front = hit.Front;
-  p.Shaded = ShadeTriangleFragment(this->In, p.Rule, p.Fragment);
+  const ScenePart& part = this->Parts[this->CellParts[hit.Triangle]];
+  p.Part = part.Index;
+  p.PartName = part.Name;
+  p.Source = part.Source;
+  p.Surface = part.Surface;
+  IlluminationInputs in = this->In;
+  in.Surface = part.Surface;
+  p.Shaded = ShadeTriangleFragment(in, p.Rule, p.Fragment);
   return p;
 }
 }

@@ -7,6 +7,7 @@
 #define shadelab_pixel_probe_h
 
 #include "core/options.h"
+#include "scene/scene_parts.h"
 #include "shadelabPixelRays.h"
 #include "shadelabTriangleFragment.h"
 
@@ -27,7 +28,7 @@ struct PixelProbe
   ImageSize Size;
   Shading Rule = Shading::Phong;
   Reflection Model = Reflection::BlinnPhong;
-  Material Surface; // after the overrides
+  Material Surface; // the hit triangle's part's, after the overrides
   Rgb Ia{};
   std::vector<Light> Lights; // as lit, in world coordinates
   Rgb Background{};
@@ -45,8 +46,11 @@ struct PixelProbe
   bool Hit = false;
   vtkIdType Triangle = -1;            // its cell index
   std::array<vtkIdType, 3> Corners{}; // its point indices in draw order: the last provokes
-  TriangleFragment Fragment;          // positions, normals, weights, facing (world)
-  ShadedFragment Shaded;              // the rule's value and terms: the oracle
+  int Part = 0;                       // the mesh's part it is of (0 without parts)
+  std::string PartName;               // that part's material's name in the file, or ""
+  MaterialSource Source = MaterialSource::Default; // where Surface came from
+  TriangleFragment Fragment;                       // positions, normals, weights, facing (world)
+  ShadedFragment Shaded;                           // the rule's value and terms: the oracle
 };
 
 /** A scene's picture, ready to explain pixel after pixel. */
@@ -67,8 +71,10 @@ private:
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
   PictureTriangles Triangles;
-  std::vector<Vec3> Normals; // per point, when the mesh has them
-  std::vector<Rgb> Kd;       // per point, when its colours are kd
+  std::vector<ScenePart> Parts; // as drawn
+  std::vector<int> CellParts;   // the part of each cell
+  std::vector<Vec3> Normals;    // per point, when the mesh has them
+  std::vector<Rgb> Kd;          // per point, when its colours are kd
 };
 }
 

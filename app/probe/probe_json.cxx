@@ -90,7 +90,10 @@ ordered_json ProbeJson(const PixelProbe& p)
   j["oracle"] = p.Shaded.Color;
   j["triangle"] = p.Triangle;
   j["front_facing"] = p.Fragment.Front;
+  j["part"] = p.Part;
+  j["part_name"] = p.PartName;
   j["material"] = DescribeMaterial(p.Surface);
+  j["material_from"] = ToString(p.Source);
   // The kd that lit the pixel and where it came from (material or vertex colours).
   j["kd"] = p.Shaded.Kd;
   j["kd_from"] = p.VertexKd ? "vertex colors" : "material";

@@ -162,6 +162,11 @@ std::string ProbeText(const PixelProbe& p)
       (p.Model == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") + "; material " + m.Name +
       ": ka " + ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) +
       ", ns " + ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
+  out.Add("", "part " + std::to_string(p.Part) + " \"" + p.PartName + "\"",
+    p.Source == MaterialSource::File ? "the material is the mesh file's"
+      : p.Source == MaterialSource::Option
+      ? "the material is the options' (--material, or all of --ka --kd --ks --ns)"
+      : "no material of its own: the default, the options'");
   if (p.VertexKd)
   {
     out.Add("", "kd = " + ProbeTriple(p.Shaded.Kd),

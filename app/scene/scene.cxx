@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "scene/camera.h"
+#include "scene/scene_parts.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
 
@@ -12,6 +13,8 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+
+#include <algorithm>
 
 namespace shadelab
 {
@@ -66,33 +69,88 @@ BuiltScene BuildScene(
   return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse);
 }
 
+namespace
+{
+bool SameCoefficients(const Material& a, const Material& b)
+{
+  return a.Ka == b.Ka && a.Kd == b.Kd && a.Ks == b.Ks && a.Ns == b.Ns;
+}
+
+// The parts with triangles, grouped by the material they are drawn with:
+// one actor per material, so that parts without their own share the default.
+std::vector<std::vector<int>> PartsByMaterial(const std::vector<ScenePart>& parts)
+{
+  std::vector<std::vector<int>> groups;
+  std::vector<const Material*> materials;
+  for (const ScenePart& part : parts)
+  {
+    if (part.Triangles == 0)
+    {
+      continue;
+    }
+    const auto same = std::find_if(materials.begin(), materials.end(),
+      [&part](const Material* m) { return SameCoefficients(*m, part.Surface); });
+    if (same == materials.end())
+    {
+      materials.push_back(&part.Surface);
+      groups.push_back({ part.Index });
+    }
+    else
+    {
+      groups[same - materials.begin()].push_back(part.Index);
+    }
+  }
+  if (groups.empty())
+  {
+    groups.push_back({ 0 }); // no triangles: still one actor, as a mesh without parts has
+  }
+  return groups;
+}
+}
+
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
   vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
-  scene.Shading = vtkSmartPointer<vtkShadelabShading>::New();
-  scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
-    options.EffectiveMaterial(), options.Ambient, lights);
-  scene.Shading->SetVertexKd(UsesVertexKd(options, mesh));
-  const vtkShadelabShading* previous = nullptr;
-  if (reuse && reuse->Actor && reuse->Mesh == mesh &&
-    reuse->Shading->GetFeatures().Rule == options.ShadingRule)
+  const std::vector<ScenePart> parts = SceneParts(options, mesh);
+  const std::vector<std::vector<int>> groups = PartsByMaterial(parts);
+  // The same mesh, rule and grouping: every actor keeps its buffers and program.
+  const bool takeOver = reuse && reuse->Mesh == mesh && !reuse->Drawn.empty() &&
+    reuse->Drawn.front().Shading->GetFeatures().Rule == options.ShadingRule &&
+    std::equal(groups.begin(), groups.end(), reuse->Drawn.begin(), reuse->Drawn.end(),
+      [](const std::vector<int>& group, const DrawnParts& drawn) { return group == drawn.Parts; });
+  for (std::size_t g = 0; g < groups.size(); ++g)
   {
-    scene.Actor = reuse->Actor;
-    scene.Actor->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
-    previous = reuse->Shading;
+    DrawnParts drawn;
+    drawn.Parts = groups[g];
+    drawn.Shading = vtkSmartPointer<vtkShadelabShading>::New();
+    drawn.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
+      parts[drawn.Parts.front()].Surface, options.Ambient, lights);
+    drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
+    const vtkShadelabShading* previous = nullptr;
+    if (takeOver)
+    {
+      drawn.Actor = reuse->Drawn[g].Actor;
+      drawn.Actor->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
+      previous = reuse->Drawn[g].Shading;
+    }
+    else
+    {
+      // A part's triangles share the whole mesh's points and normals, so
+      // that the parts meet as the one mesh would.
+      auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+      mapper->SetInputData(
+        drawn.Shading->PrepareMesh(groups.size() == 1 ? vtkSmartPointer<vtkPolyData>(mesh)
+                                                      : TrianglesOfParts(mesh, drawn.Parts)));
+      mapper->ScalarVisibilityOff();
+      drawn.Actor = vtkSmartPointer<vtkActor>::New();
+      drawn.Actor->SetMapper(mapper);
+    }
+    renderer->AddActor(drawn.Actor);
+    drawn.Shading->Attach(drawn.Actor, renderer, previous);
+    scene.Drawn.push_back(drawn);
   }
-  else
-  {
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(scene.Shading->PrepareMesh(mesh));
-    mapper->ScalarVisibilityOff();
-    scene.Actor = vtkSmartPointer<vtkActor>::New();
-    scene.Actor->SetMapper(mapper);
-  }
-  renderer->AddActor(scene.Actor);
-  scene.Shading->Attach(scene.Actor, renderer, previous);
   return scene;
 }
 }

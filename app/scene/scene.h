@@ -1,5 +1,5 @@
-// The VTK scene of one picture: the mesh's actor with its material, the
-// lights and the camera, in a renderer.
+// The VTK scene of one picture: the mesh's actors, a part or several parts
+// each with its material, the lights and the camera, in a renderer.
 #ifndef shadelab_scene_h
 #define shadelab_scene_h
 
@@ -9,6 +9,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkPolyData;
@@ -17,20 +18,34 @@ class vtkShadelabShading;
 
 namespace shadelab
 {
-/** What a built scene is made of; the shading must live as long as the actor draws. */
-struct BuiltScene
+/**
+ * An actor of a scene: the mesh's parts that one material draws (all of them
+ * when they share it), with the shading, which must live as long as the
+ * actor draws.
+ */
+struct DrawnParts
 {
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkShadelabShading> Shading;
+  std::vector<int> Parts; // ScenePart indices, ascending
+};
+
+/** What a built scene is made of. */
+struct BuiltScene
+{
+  // One per material the parts are drawn with, in the order of their first
+  // part: a mesh with one part or none, or one material for all, has one.
+  std::vector<DrawnParts> Drawn;
   std::string Error;           // an impossible scene (camera), else empty
-  vtkPolyData* Mesh = nullptr; // what the actor draws, before the rule prepared it
+  vtkPolyData* Mesh = nullptr; // what the actors draw, before the rule prepared it
 };
 
 /**
  * Fills renderer with mesh as options describe, lit by the lecture's
- * shaders. With `reuse`, a scene built before that drew the same mesh with
- * the same rule, its actor is taken over (its mapper keeps the uploaded
- * buffers; only the lighting changes).
+ * shaders, each part with its material (scene/scene_parts.h). With `reuse`,
+ * a scene built before that drew the same mesh with the same rule and the
+ * same parts together, its actors are taken over (their mappers keep the
+ * uploaded buffers; only the lighting changes).
  */
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
   const BuiltScene* reuse = nullptr);
@@ -53,7 +68,8 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
 
 /**
  * The oracle's inputs for options' scene lit by `lights`, in world
- * coordinates: material, Ia, reflection model; the view is the caller's.
+ * coordinates: Ia, reflection model and the options' material (a part's
+ * own is the caller's to set); the view is the caller's.
  */
 IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights);
 }

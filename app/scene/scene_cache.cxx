@@ -7,6 +7,8 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
+
 namespace shadelab
 {
 SceneCache::Shown SceneCache::Show(
@@ -32,11 +34,28 @@ SceneCache::Shown SceneCache::Show(
     shown.Error = scene.Error;
     return shown;
   }
+  if (reuse)
+  {
+    // The actors of the scene before that this one did not take over (its
+    // parts grouped otherwise by their materials) are drawn no more.
+    for (const DrawnParts& old : reuse->Drawn)
+    {
+      if (std::none_of(scene.Drawn.begin(), scene.Drawn.end(),
+            [&old](const DrawnParts& drawn) { return drawn.Actor == old.Actor; }))
+      {
+        renderer->RemoveActor(old.Actor);
+        old.Actor->ReleaseGraphicsResources(renderer->GetRenderWindow());
+      }
+    }
+  }
   BuiltScene& kept = this->Scenes[key] = scene;
   this->Current = key;
   for (auto& [other, built] : this->Scenes)
   {
-    built.Actor->SetVisibility(other == key);
+    for (DrawnParts& drawn : built.Drawn)
+    {
+      drawn.Actor->SetVisibility(other == key);
+    }
   }
   shown.Scene = &kept;
   return shown;
@@ -54,8 +73,11 @@ void SceneCache::ForgetOtherMeshes(const vtkPolyData* keep, vtkRenderer* rendere
   {
     if (it->first.second != keep)
     {
-      renderer->RemoveActor(it->second.Actor);
-      it->second.Actor->ReleaseGraphicsResources(renderer->GetRenderWindow());
+      for (DrawnParts& drawn : it->second.Drawn)
+      {
+        renderer->RemoveActor(drawn.Actor);
+        drawn.Actor->ReleaseGraphicsResources(renderer->GetRenderWindow());
+      }
       it = this->Scenes.erase(it);
     }
     else

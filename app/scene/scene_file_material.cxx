@@ -1,5 +1,8 @@
 // "material": a name from the lecture's table, or an object that starts from
-// one ("base") or gives every coefficient, and may name the result.
+// one ("base") or gives every coefficient, and may name the result; either
+// replaces every part's material, as --material does. An object with some
+// coefficients and no base replaces those of every part's, as --ka, --kd,
+// --ks, --ns do.
 #include "scene/scene_file_settings.h"
 
 namespace shadelab
@@ -41,16 +44,18 @@ void ConvertMaterial(const json& v, const std::string& path, SceneOptions& o)
       { "--material", Choice(v["base"], path + ".base", "material", LectureMaterialNames()) },
       path + ".base");
   }
+  else if (!(v.contains("ka") && v.contains("kd") && v.contains("ks") && v.contains("ns")))
+  {
+    if (v.contains("name"))
+    {
+      throw SceneError{ path + ".name",
+        "names a whole material: \"base\", or all of ka, kd, ks, ns, with it" };
+    }
+    ApplyCoefficients(v, path, o);
+    return;
+  }
   else
   {
-    for (const char* needed : { "ka", "kd", "ks", "ns" })
-    {
-      if (!v.contains(needed))
-      {
-        throw SceneError{ path + "." + needed,
-          "missing (a material without \"base\" gives all of ka, kd, ks, ns)" };
-      }
-    }
     o.MaterialName = "custom";
   }
   ApplyCoefficients(v, path, o);

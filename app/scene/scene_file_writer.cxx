@@ -36,9 +36,17 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
   shot["size"] = { s.Size.Width, s.Size.Height };
   shot["shading"] = ToString(s.ShadingRule);
   shot["reflection"] = ToString(s.ReflectionModel);
+  // A material named (--material, a row of the window's table) replaces
+  // every part's; coefficients alone replace those of every part, the rest
+  // staying the file's or the default's.
+  const bool named = s.MaterialGiven || s.MaterialName != d.MaterialName;
   if (s.Ka || s.Kd || s.Ks || s.Ns)
   {
-    nlohmann::ordered_json material{ { "base", s.MaterialName } };
+    auto material = nlohmann::ordered_json::object();
+    if (named)
+    {
+      material["base"] = s.MaterialName;
+    }
     const std::pair<const char*, const std::optional<Rgb>*> colours[] = { { "ka", &s.Ka },
       { "kd", &s.Kd }, { "ks", &s.Ks } };
     for (const auto& [key, value] : colours)
@@ -54,7 +62,7 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
     }
     shot["material"] = material;
   }
-  else
+  else if (named)
   {
     shot["material"] = s.MaterialName;
   }

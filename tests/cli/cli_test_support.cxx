@@ -215,7 +215,9 @@ size_t CountCovered(const Image& image)
   size_t covered = 0;
   for (size_t i = 0; i < image.Pixels.size(); i += image.Channels)
   {
-    covered += image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
+    covered += image.Channels == 4
+      ? image.Pixels[i + 3] > 0
+      : image.Pixels[i] + image.Pixels[i + 1] + image.Pixels[i + 2] > 0;
   }
   return covered;
 }

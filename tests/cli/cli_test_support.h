@@ -68,7 +68,11 @@ Image ReadImage(const std::filesystem::path& path);
 /** Every subimage of a file (an animated GIF's frames); empty when it cannot be read. */
 std::vector<Image> ReadSubimages(const std::filesystem::path& path);
 
-/** Pixels that are not black: the mesh's coverage on the default background. */
+/**
+ * The mesh's coverage: pixels with alpha above 0 where the picture has alpha
+ * (--background transparent), else pixels that are not black (the default
+ * background).
+ */
 size_t CountCovered(const Image& image);
 
 /** The bounding box of the pixels that are not black, in pixels from the top left. */

@@ -7,7 +7,8 @@
 // on the plane z = SlopeX*x + SlopeY*y, seen by an orthographic camera on +Z
 // (parallel scale 1.1, +Y up), written as OBJ with one `vn` per vertex so the
 // normals and the triangles' vertex order are exactly the test's (as PLY
-// with normals and uchar colours where the scene has vertex colours). A whole
+// with normals and uchar colours where the scene has vertex colours; with an
+// MTL file and `usemtl` where its cells are parts of their own materials). A whole
 // scene can be scaled and translated (mesh, lights, camera, parallel scale).
 // The expected image follows DESIGN.md's shading rules through the oracle's
 // functions, in world coordinates: the ray through each pixel centre meets
@@ -291,14 +292,47 @@ struct Scene
   // still expects to be the grid's.
   std::string Normals = "file";
   std::string Weighting = "angle";
-  // With Geometry.VertexColors: --kd given, so the material's kd wins over them.
+  // With Geometry.VertexColors: --kd given, so the material's kd wins over
+  // them; with Parts: --kd given, Surface's kd replaces every part's.
   bool OverrideKd = false;
+  // The grid's cells dealt into parts, each with its material from the MTL
+  // file: cell (i, j) is part (i + 2j) % Parts.size(), so that every part
+  // borders the others; the materials' numbers are exact in float (the
+  // reader keeps float). Empty: one material, Surface, given as options.
+  // Plain grids only (no slivers or degenerate triangles).
+  std::vector<Material> Parts;
 
   /** kd comes from the mesh's vertex colours. */
   bool VertexKd() const { return this->Geometry.VertexColors && !this->OverrideKd; }
 
   Vec3 World(const Vec3& p) const { return this->Offset + this->Scale * p; }
 };
+
+// The part of triangle t of the scene's grid, 0 without parts.
+inline int PartOf(const Scene& s, int t)
+{
+  if (s.Parts.empty())
+  {
+    return 0;
+  }
+  const int cell = t / 2, i = cell % s.Geometry.Cells, j = cell / s.Geometry.Cells;
+  return (i + 2 * j) % static_cast<int>(s.Parts.size());
+}
+
+// The material triangle t is lit with.
+inline Material SurfaceOf(const Scene& s, int t)
+{
+  if (s.Parts.empty())
+  {
+    return s.Surface;
+  }
+  Material m = s.Parts[PartOf(s, t)];
+  if (s.OverrideKd)
+  {
+    m.Kd = s.Surface.Kd;
+  }
+  return m;
+}
 
 inline std::vector<Light> WorldLights(const Scene& s)
 {
@@ -325,9 +359,28 @@ inline std::string LightOption(const Light& l)
   return "";
 }
 
+// The parts' materials, part k named "partK".
+inline std::string MtlText(const Scene& s)
+{
+  std::ostringstream mtl;
+  for (std::size_t k = 0; k < s.Parts.size(); ++k)
+  {
+    const Material& m = s.Parts[k];
+    mtl << "newmtl part" << k << "\nKa " << Num(m.Ka[0]) << " " << Num(m.Ka[1]) << " "
+        << Num(m.Ka[2]) << "\nKd " << Num(m.Kd[0]) << " " << Num(m.Kd[1]) << " " << Num(m.Kd[2])
+        << "\nKs " << Num(m.Ks[0]) << " " << Num(m.Ks[1]) << " " << Num(m.Ks[2]) << "\nNs "
+        << Num(m.Ns) << "\n";
+  }
+  return mtl.str();
+}
+
 inline std::string ObjText(const Scene& s, const Mesh& m)
 {
   std::ostringstream obj;
+  if (!s.Parts.empty())
+  {
+    obj << "mtllib mesh.mtl\n";
+  }
   for (const Vec3& p : m.Positions)
   {
     const Vec3 w = s.World(p);
@@ -337,10 +390,16 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
   {
     obj << "vn " << Num(n[0]) << " " << Num(n[1]) << " " << Num(n[2]) << "\n";
   }
-  for (const auto& t : m.Triangles)
+  int part = -1;
+  for (std::size_t t = 0; t < m.Triangles.size(); ++t)
   {
+    if (!s.Parts.empty() && PartOf(s, static_cast<int>(t)) != part)
+    {
+      part = PartOf(s, static_cast<int>(t));
+      obj << "usemtl part" << part << "\n";
+    }
     obj << "f";
-    for (const auto v : t)
+    for (const auto v : m.Triangles[t])
     {
       obj << " " << v + 1 << "//" << v + 1;
     }
@@ -383,15 +442,23 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
   const Mesh m = Grid(s.Geometry);
   WriteText(mesh, ply ? PlyText(s, m) : ObjText(s, m));
+  if (!s.Parts.empty())
+  {
+    WriteText(dir / "mesh.mtl", MtlText(s));
+  }
   const std::string size = std::to_string(s.Size) + "x" + std::to_string(s.Size);
   std::vector<std::string> args{ "render", mesh.string(), "-o", out.string(), "--size", size,
     "--orthographic", "--camera-position", Triple(s.World({ 0, 0, s.CameraDistance })),
     "--camera-focal-point", Triple(s.World({ 0, 0, 0 })), "--camera-view-up", "0,1,0",
     "--parallel-scale", Num(s.Scale * ParallelScale), "--shading", ToString(s.Rule), "--reflection",
-    ToString(s.Model), "--ka", Triple(s.Surface.Ka), "--ks", Triple(s.Surface.Ks), "--ns",
-    Num(s.Surface.Ns), "--ambient", Triple(s.Ambient), "--background", "0,0,0", "--normals",
+    ToString(s.Model), "--ambient", Triple(s.Ambient), "--background", "0,0,0", "--normals",
     s.Normals, "--weighting", s.Weighting };
-  if (!s.VertexKd())
+  if (s.Parts.empty()) // the parts' materials come from the MTL file
+  {
+    args.insert(args.end(),
+      { "--ka", Triple(s.Surface.Ka), "--ks", Triple(s.Surface.Ks), "--ns", Num(s.Surface.Ns) });
+  }
+  if (s.Parts.empty() ? !s.VertexKd() : s.OverrideKd)
   {
     args.insert(args.end(), { "--kd", Triple(s.Surface.Kd) });
   }
@@ -444,7 +511,6 @@ public:
     , M(Grid(s.Geometry))
     , Triangles(Camera(s), s.Size, s.Size, WorldPositions(s, this->M), this->M.Triangles)
   {
-    this->In.Surface = s.Surface;
     this->In.Ambient = s.Ambient;
     this->In.Model = s.Model;
     this->In.Orthographic = true;
@@ -595,8 +661,9 @@ private:
         }
       }
     }
-    const shadelab::ShadedFragment shaded =
-      shadelab::ShadeTriangleFragment(this->In, this->S.Rule, f);
+    IlluminationInputs in = this->In;
+    in.Surface = SurfaceOf(this->S, t);
+    const shadelab::ShadedFragment shaded = shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
     e.Terms = shaded.Terms;
   }

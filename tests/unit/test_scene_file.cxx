@@ -145,8 +145,8 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     { head + R"({ "shading": "toon" } ] })",
       "shots[3].shading: unknown shading \"toon\" (known: none, flat, gouraud, phong)" },
     { head + R"({ "material": "silver" } ] })", "shots[3].material: unknown material \"silver\"" },
-    { head + R"({ "material": { "ka": [0, 0, 0], "kd": [1, 1, 1], "ks": [0, 0, 0] } } ] })",
-      "shots[3].material.ns: missing (a material without \"base\"" },
+    { head + R"({ "material": { "name": "red", "kd": [1, 1, 1] } } ] })",
+      "shots[3].material.name: names a whole material: \"base\", or all of ka, kd, ks, ns" },
     { head + R"({ "material": { "base": "gold", "kd": [1, -1, 1] } } ] })",
       "shots[3].material.kd: '1,-1,1' is negative" },
     { head + R"({ "ambient": [1, 2] } ] })", "shots[3].ambient: expected three numbers [x, y, z]" },
@@ -330,4 +330,31 @@ TEST_F(SceneFile, AWrittenSceneReadsBackTheSame)
   expected.Ns = m.Ns;
   EXPECT_EQ(SceneArguments(this->Shots[0].Scene), SceneArguments(expected));
   EXPECT_EQ(this->Shots[0].Scene.Mesh, s.Mesh);
+}
+
+// The material as written says whether it replaces the mesh's parts' own:
+// none given keeps them, a named one (a table row chosen in the window, even
+// the default's) replaces every part's whole, coefficients alone replace
+// only themselves.
+TEST_F(SceneFile, AWrittenMaterialOverridesTheMeshsMaterialsAsTheOptionsDid)
+{
+  SceneOptions s;
+  s.Mesh = (this->Folder / "meshes" / "spot.obj").string();
+  ASSERT_EQ(Read(WriteSceneText(s, "none.png")), "");
+  ASSERT_EQ(this->Shots.size(), 1u);
+  EXPECT_FALSE(this->Shots[0].Scene.MaterialGiven);
+
+  s.MaterialGiven = true;
+  ASSERT_EQ(Read(WriteSceneText(s, "named.png")), "");
+  EXPECT_TRUE(this->Shots[0].Scene.MaterialGiven);
+  EXPECT_EQ(this->Shots[0].Scene.MaterialName, "chrome");
+
+  s.MaterialGiven = false;
+  s.Kd = Rgb{ 0.25, 0.5, 1 };
+  ASSERT_EQ(Read(WriteSceneText(s, "kd.png")), "");
+  const SceneOptions& kd = this->Shots[0].Scene;
+  EXPECT_FALSE(kd.MaterialGiven);
+  EXPECT_EQ(kd.Kd, s.Kd);
+  EXPECT_FALSE(kd.Ka || kd.Ks || kd.Ns);
+  EXPECT_EQ(SceneArguments(kd), SceneArguments(s));
 }

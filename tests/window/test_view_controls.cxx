@@ -363,6 +363,26 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
   EXPECT_EQ(application->exec(), 0);
 }
 
+// The material controls are the overrides of a mesh's own materials:
+// choosing a row of the table, even the default's, replaces every part's
+// material as --material does, and the render command says so.
+TEST(Controls, ChoosingTheDefaultsRowStillReplacesEveryPartsMaterial)
+{
+  const ViewOptions options = SpotView(Shading::Phong);
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+  EXPECT_EQ(Settings(inspector).count("--material"), 0u) << "the file's materials, untouched";
+  auto* material = window.findChild<QComboBox*>("material");
+  ASSERT_NE(material, nullptr);
+  ASSERT_EQ(material->currentText().toStdString(), "chrome");
+  emit material->activated(material->currentIndex());
+  EXPECT_TRUE(inspector.GetState().Scene.MaterialGiven);
+  EXPECT_EQ(Settings(inspector)["--material"], "chrome;");
+}
+
 TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
 {
   Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");

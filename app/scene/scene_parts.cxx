@@ -1,0 +1,126 @@
+#include "scene/scene_parts.h"
+
+#include "shadelabPartMaterials.h"
+#include "shadelabTriangleMesh.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+
+namespace shadelab
+{
+namespace
+{
+// Part p's coefficients from the field array `name`, of N components (zeros where it has none).
+template <std::size_t N>
+std::array<double, N> FieldTuple(vtkFieldData* field, const char* name, vtkIdType p)
+{
+  std::array<double, N> values{};
+  vtkDataArray* array = field->GetArray(name);
+  if (array && p < array->GetNumberOfTuples() &&
+    array->GetNumberOfComponents() == static_cast<int>(N))
+  {
+    array->GetTuple(p, values.data());
+  }
+  return values;
+}
+}
+
+std::vector<int> PartOfCells(vtkPolyData* mesh)
+{
+  std::vector<int> parts(mesh->GetNumberOfCells(), 0);
+  if (vtkDataArray* part = mesh->GetCellData()->GetArray(PartArrayName))
+  {
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells() && c < part->GetNumberOfTuples(); ++c)
+    {
+      parts[c] = std::max(0, static_cast<int>(part->GetComponent(c, 0)));
+    }
+  }
+  return parts;
+}
+
+std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh)
+{
+  const std::vector<int> cells = PartOfCells(mesh);
+  vtkFieldData* field = mesh->GetFieldData();
+  auto* names = vtkStringArray::SafeDownCast(field->GetAbstractArray(PartMaterialsArrayName));
+  auto* indices = vtkIntArray::SafeDownCast(field->GetArray(PartMaterialIndicesArrayName));
+  // Every part the field data names, and any a triangle is of beyond them.
+  int count = names ? static_cast<int>(names->GetNumberOfValues()) : 1;
+  for (int p : cells)
+  {
+    count = std::max(count, p + 1);
+  }
+  const std::pair<const char*, bool> overrides[] = { { "ka", options.Ka.has_value() },
+    { "kd", options.Kd.has_value() }, { "ks", options.Ks.has_value() },
+    { "ns", options.Ns.has_value() } };
+  std::vector<ScenePart> parts(count);
+  for (int p = 0; p < count; ++p)
+  {
+    ScenePart& part = parts[p];
+    part.Index = p;
+    part.Name = names && p < names->GetNumberOfValues() ? names->GetValue(p) : "";
+    const bool own = indices && p < indices->GetNumberOfValues() && indices->GetValue(p) >= 0;
+    if (own && !options.MaterialGiven)
+    {
+      Material file{ part.Name };
+      file.Ka = FieldTuple<3>(field, PartKaArrayName, p);
+      file.Kd = FieldTuple<3>(field, PartKdArrayName, p);
+      file.Ks = FieldTuple<3>(field, PartKsArrayName, p);
+      file.Ns = FieldTuple<1>(field, PartNsArrayName, p)[0];
+      part.Surface = options.Overridden(file);
+      part.Source = MaterialSource::File;
+    }
+    else
+    {
+      part.Surface = options.EffectiveMaterial();
+      part.Source = options.MaterialGiven ? MaterialSource::Option : MaterialSource::Default;
+    }
+    for (const auto& [name, given] : overrides)
+    {
+      if (given)
+      {
+        part.Overridden.push_back(name);
+      }
+    }
+    if (part.Overridden.size() == std::size(overrides))
+    {
+      part.Source = MaterialSource::Option; // nothing of the file's or the default's is left
+    }
+  }
+  for (int p : cells)
+  {
+    ++parts[p].Triangles;
+  }
+  return parts;
+}
+
+vtkSmartPointer<vtkPolyData> TrianglesOfParts(vtkPolyData* mesh, const std::vector<int>& parts)
+{
+  const std::vector<int> cells = PartOfCells(mesh);
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  vtkCellArray* all = mesh->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkIdType cell = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines(); // polys come after these
+  for (all->InitTraversal(); all->GetNextCell(n, ids); ++cell)
+  {
+    if (std::binary_search(parts.begin(), parts.end(), cells[cell]))
+    {
+      polys->InsertNextCell(n, ids);
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(mesh->GetPoints());
+  result->GetPointData()->ShallowCopy(mesh->GetPointData());
+  result->SetPolys(polys);
+  return result;
+}
+}

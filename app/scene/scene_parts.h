@@ -1,0 +1,67 @@
+// A mesh's parts (the readers' cell data "Part" and the field data of their
+// materials, filters/io/shadelabPartMaterials.h) with the material each is
+// drawn with: the file's, unless the options override it (--material
+// replaces every part's whole material, --ka/--kd/--ks/--ns that
+// coefficient of every part); a part without a material of its own gets the
+// options' material, as a mesh without parts does.
+#ifndef shadelab_scene_parts_h
+#define shadelab_scene_parts_h
+
+#include "core/options.h"
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace shadelab
+{
+/** Where a part's material comes from. */
+enum class MaterialSource
+{
+  File,    // the mesh file's own (OBJ's MTL, glTF's)
+  Default, // the part has none: the options' material (--material's default)
+  Option   // --material, or all of --ka --kd --ks --ns, replaced it
+};
+
+template <>
+struct NameTable<MaterialSource>
+{
+  static constexpr std::array<std::pair<MaterialSource, const char*>, 3> Entries{
+    { { MaterialSource::File, "file" }, { MaterialSource::Default, "default" },
+      { MaterialSource::Option, "option" } }
+  };
+};
+
+/** One part of a mesh as drawn. */
+struct ScenePart
+{
+  int Index = 0;           // the value of "Part" on its triangles; 0 for a mesh without parts
+  std::string Name;        // its material's name in the file, "" without one
+  vtkIdType Triangles = 0; // how many triangles it has
+  Material Surface;        // what it is lit with, the overrides applied
+  MaterialSource Source = MaterialSource::Default;
+  std::vector<std::string> Overridden; // the coefficients options replaced: "ka", "kd", "ks", "ns"
+};
+
+/**
+ * mesh's parts as options draw them, by index: one for a mesh without parts
+ * (its triangles all of part 0).
+ */
+std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh);
+
+/** The part of each of mesh's cells, by cell index: all 0 for a mesh without parts. */
+std::vector<int> PartOfCells(vtkPolyData* mesh);
+
+/**
+ * mesh with only the triangles whose part is in `parts` (ascending), its
+ * points and point data shared (the same arrays, normals included): what
+ * one part's actor draws.
+ */
+vtkSmartPointer<vtkPolyData> TrianglesOfParts(vtkPolyData* mesh, const std::vector<int>& parts);
+}
+
+#endif

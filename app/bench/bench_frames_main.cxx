@@ -21,6 +21,7 @@
 #include "headless/headless_renderer.h"
 #include "scene/mesh_input.h"
 #include "scene/scene.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabShading.h"

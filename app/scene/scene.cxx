@@ -32,10 +32,26 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
-IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
+SurfaceTexture SceneTexture(
+  const SceneOptions& options, std::shared_ptr<const TextureImage> texture)
+{
+  SurfaceTexture t;
+  if (!options.Texture.empty() && texture)
+  {
+    t.Map.Image = std::move(texture);
+    t.Map.WrapS = t.Map.WrapT = options.TextureWrapping;
+    t.Map.Filter = options.TextureFiltering;
+    t.Kd = t.Ka = true;
+  }
+  return t;
+}
+
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights,
+  std::shared_ptr<const TextureImage> texture)
 {
   IlluminationInputs in;
   in.Surface = options.EffectiveMaterial();
+  in.Texture = SceneTexture(options, std::move(texture));
   in.Ambient = options.Ambient;
   in.Model = options.ReflectionModel;
   for (const Light& light : lights)
@@ -45,8 +61,8 @@ IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vec
   return in;
 }
 
-BuiltScene BuildScene(
-  const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
+BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
+  const BuiltScene* reuse, std::shared_ptr<const TextureImage> texture)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -63,11 +79,13 @@ BuiltScene BuildScene(
   renderer->ResetCameraClippingRange(bounds);
   Vec3 eye;
   camera->GetPosition(eye.data());
-  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse);
+  return BuildActor(
+    options, EffectiveLights(options, eye), mesh, renderer, reuse, std::move(texture));
 }
 
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
-  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse,
+  std::shared_ptr<const TextureImage> texture)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -75,6 +93,8 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   scene.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
     options.EffectiveMaterial(), options.Ambient, lights);
   scene.Shading->SetVertexKd(UsesVertexKd(options, mesh));
+  scene.Texture = texture;
+  scene.Shading->SetTexture(SceneTexture(options, std::move(texture)));
   const vtkShadelabShading* previous = nullptr;
   if (reuse && reuse->Actor && reuse->Mesh == mesh &&
     reuse->Shading->GetFeatures().Rule == options.ShadingRule)

@@ -101,10 +101,20 @@ void ConvertShot(
     {
       Text(v, path); // used by the output template
     }
-    else if (key == "mesh")
+    else if (key == "mesh" || key == "texture")
     {
-      const std::filesystem::path mesh(Text(v, path));
-      o.Mesh = (mesh.is_absolute() ? mesh : folder / mesh).lexically_normal().string();
+      const std::filesystem::path file(Text(v, path));
+      (key == "mesh" ? o.Mesh : o.Texture) =
+        (file.is_absolute() ? file : folder / file).lexically_normal().string();
+    }
+    else if (key == "texture_wrap")
+    {
+      Apply(o, { "--texture-wrap", Choice(v, path, "texture wrap", Names<TextureWrap>()) }, path);
+    }
+    else if (key == "texture_filter")
+    {
+      Apply(
+        o, { "--texture-filter", Choice(v, path, "texture filter", Names<TextureFilter>()) }, path);
     }
     else if (key == "shading" || key == "reflection" || key == "normals" || key == "weighting")
     {

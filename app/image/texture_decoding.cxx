@@ -60,11 +60,12 @@ Transfer TransferOf(const OIIO::ImageSpec& spec, double& gamma)
   }
   return spec.format.basetype == OIIO::TypeDesc::UINT8 ? Transfer::Srgb : Transfer::Linear;
 }
-}
 
+// sRGB's transfer function undone: the IEC 61966-2-1 decoding.
 double SrgbToLinear(double v)
 {
   return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
 }
 
 std::string DecodeTexture(const DecodeRequest& request, TextureImage& image)

@@ -19,9 +19,6 @@ namespace shadelab
 {
 /** Decodes request's image into image: "" or the problem, one line. */
 std::string DecodeTexture(const DecodeRequest& request, TextureImage& image);
-
-/** sRGB's transfer function undone: the IEC 61966-2-1 decoding of v in [0, 1]. */
-double SrgbToLinear(double v);
 }
 
 #endif

@@ -183,6 +183,18 @@ Image ReadCurrent(OIIO::ImageInput& in, int subimage)
 }
 }
 
+void WriteImage8(
+  const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb)
+{
+  // A failure shows as the test's picture missing: shadelab names the file.
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (out && out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)))
+  {
+    out->write_image(OIIO::TypeDesc::UINT8, rgb.data());
+    out->close();
+  }
+}
+
 Image ReadImage(const std::filesystem::path& path)
 {
   auto in = OIIO::ImageInput::open(path.string());

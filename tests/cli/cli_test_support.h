@@ -121,6 +121,10 @@ std::filesystem::path TestMesh(const std::string& name);
 /** Writes text to path. */
 void WriteText(const std::filesystem::path& path, const std::string& text);
 
+/** An 8-bit RGB image file (PNG by the extension), pixels top row first, 3 per pixel. */
+void WriteImage8(
+  const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb);
+
 /** An ASCII PLY of one triangle in z = 0 whose vertices are red, green and blue (uchar colours). */
 void WriteRgbTriangle(const std::filesystem::path& path);
 }

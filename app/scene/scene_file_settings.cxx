@@ -92,6 +92,10 @@ void ConvertShot(
   const json& settings, Shot& shot, const std::filesystem::path& folder, const PathOfKey& where)
 {
   SceneOptions& o = shot.Scene;
+  // The material last: it is resolved whole (ConvertMaterial), and with a
+  // texture its ka and kd are the texel's factors.
+  const json* material = nullptr;
+  std::string materialPath;
   for (const auto& item : settings.items())
   {
     const std::string& key = item.key();
@@ -126,7 +130,8 @@ void ConvertShot(
     }
     else if (key == "material")
     {
-      ConvertMaterial(v, path, o);
+      material = &v;
+      materialPath = path;
     }
     else if (key == "background" && v.is_string() && v.get<std::string>() == "transparent")
     {
@@ -181,6 +186,10 @@ void ConvertShot(
     {
       Apply(o, { "--edge-width", Number(v, path) }, path);
     }
+  }
+  if (material)
+  {
+    ConvertMaterial(*material, materialPath, o);
   }
 }
 }

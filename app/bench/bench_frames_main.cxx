@@ -4,11 +4,14 @@
 // program that per-scene generation is measured against.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
-//                         [--vertex-colors]
+//                         [--vertex-colors] [--texture]
 //
 // --vertex-colors gives every point a colour (from its position in the
 // bounding box), which our variants light as per-vertex kd: the cost of
-// vertex colours against the same run without them.
+// vertex colours against the same run without them. --texture gives every
+// point texture coordinates (its x and y in the bounding box) and our
+// variants a 1024 x 1024 float checker for kd and ka (as --texture IMAGE,
+// bilinear, repeat): the cost of a texture.
 // Each variant gets a fresh OpenGL context, so its first frame includes
 // compiling its programs; run with MESA_SHADER_CACHE_DISABLE=true to measure
 // compilation (scripts/bench-shading does).
@@ -39,6 +42,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 using namespace shadelab;
@@ -80,27 +84,45 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
   renderer->AddLight(light);
 }
 
-// A colour per point: its position in the mesh's bounding box as r, g, b.
-void AddPositionColors(vtkPolyData* mesh)
+// A point array `name` from each point's position in the mesh's bounding
+// box, scaled to [0, 1]: colours r, g, b (and alpha 1) with 4 components,
+// texture coordinates x, y with 2.
+void AddPositionArray(vtkPolyData* mesh, const char* name, int components)
 {
   double b[6];
   mesh->GetBounds(b);
-  auto colors = vtkSmartPointer<vtkFloatArray>::New();
-  colors->SetName(ColorsArrayName);
-  colors->SetNumberOfComponents(4);
-  colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(mesh->GetNumberOfPoints());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     double p[3];
     mesh->GetPoint(i, p);
-    float rgba[4] = { 0, 0, 0, 1 };
-    for (int c = 0; c < 3; ++c)
+    float value[4] = { 0, 0, 0, 1 };
+    for (int c = 0; c < std::min(components, 3); ++c)
     {
-      rgba[c] = static_cast<float>((p[c] - b[2 * c]) / std::max(b[2 * c + 1] - b[2 * c], 1e-30));
+      value[c] = static_cast<float>((p[c] - b[2 * c]) / std::max(b[2 * c + 1] - b[2 * c], 1e-30));
     }
-    colors->SetTypedTuple(i, rgba);
+    array->SetTypedTuple(i, value);
   }
-  mesh->GetPointData()->AddArray(colors);
+  mesh->GetPointData()->AddArray(array);
+}
+
+// A side x side checker of 32 squares a side, linear 0.8 and 0.2.
+std::shared_ptr<const TextureImage> Checker(int side)
+{
+  auto image = std::make_shared<TextureImage>();
+  image->Width = image->Height = side;
+  for (int j = 0; j < side; ++j)
+  {
+    for (int i = 0; i < side; ++i)
+    {
+      const float v = ((i * 32 / side) + (j * 32 / side)) % 2 ? 0.8f : 0.2f;
+      image->Pixels.insert(image->Pixels.end(), { v, v, v });
+    }
+  }
+  return image;
 }
 }
 
@@ -115,12 +137,14 @@ int main(int argc, char** argv)
   int frames = 10;
   int subdivide = 0;
   bool vertexColors = false;
+  bool texture = false;
   app.add_option("MESH", o.Mesh)->required();
   app.add_option("--size", size);
   app.add_option("--frames", frames)->check(CLI::Range(1, 1000));
   app.add_option("--subdivide", subdivide, "Loop subdivision levels first")
     ->check(CLI::Range(0, 4));
   app.add_flag("--vertex-colors", vertexColors, "Colour the points, lit as per-vertex kd");
+  app.add_flag("--texture", texture, "A checker texture for kd and ka of our variants");
   CLI11_PARSE(app, argc, argv);
   o.Size = ParseSize(size);
 
@@ -135,12 +159,25 @@ int main(int argc, char** argv)
   {
     mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
   }
-  if (vertexColors)
+  if (vertexColors || texture)
   {
-    auto colored = vtkSmartPointer<vtkPolyData>::New();
-    colored->ShallowCopy(mesh); // its own point data, sharing the arrays
-    AddPositionColors(colored);
-    mesh = colored;
+    auto added = vtkSmartPointer<vtkPolyData>::New();
+    added->ShallowCopy(mesh); // its own point data, sharing the arrays
+    if (vertexColors)
+    {
+      AddPositionArray(added, ColorsArrayName, 4);
+    }
+    if (texture)
+    {
+      AddPositionArray(added, TextureCoordinatesArrayName, 2);
+    }
+    mesh = added;
+  }
+  std::shared_ptr<const TextureImage> checker;
+  if (texture)
+  {
+    o.Texture = "checker"; // decoded already: Checker
+    checker = Checker(1024);
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
@@ -161,7 +198,7 @@ int main(int argc, char** argv)
     {
       return ReportError("render", error);
     }
-    BuiltScene built = BuildScene(scene, mesh, renderer.GetRenderer());
+    BuiltScene built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr, checker);
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

@@ -94,7 +94,7 @@ ordered_json ProbeJson(const PixelProbe& p)
   // The kd that lit the pixel and where it came from (material or vertex
   // colours), times the texel where a texture is looked up.
   j["kd"] = p.Shaded.Kd;
-  j["kd_from"] = p.VertexKd ? "vertex colors" : "material";
+  j["kd_from"] = p.VertexKd ? "vertex colors" : p.Textured ? "texture" : "material";
   if (p.Shaded.Texel)
   {
     j["texture_coordinates"] = *p.Shaded.TexCoord;

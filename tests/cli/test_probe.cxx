@@ -375,6 +375,7 @@ TEST(Probe, TexelIsTheKdThatLit)
     const auto st = p[0].at("texture_coordinates");
     EXPECT_LT(st.at(0).get<double>(), 0.5);
     EXPECT_LT(st.at(1).get<double>(), 0.5);
+    EXPECT_EQ(p[0].at("kd_from"), "texture");
     ExpectNear(Vec(p[0].at("texel")), { 1, 0.2158605, 0 }, 1e-6, "texel");
     ExpectNear(Vec(p[0].at("kd")), Vec(p[0].at("texel")), 0, "kd");
     ExpectNear(Vec(p[0].at("rendered")), Vec(p[0].at("oracle")), 1e-5, "rendered");

@@ -382,6 +382,38 @@ TEST(Probe, TexelIsTheKdThatLit)
   }
 }
 
+// The colour rules of the texture decoding: 8-bit is sRGB, decoded to
+// linear; 16-bit and float are linear unless the file says otherwise, and
+// OpenImageIO says sRGB of every PNG without a gAMA chunk, 16-bit ones too.
+TEST(Probe, TexelsAreLinearAsTheFileSays)
+{
+  TempDir dir;
+  WriteText(dir / "square.off",
+    "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n"
+    "0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n");
+  const auto srgb = [](double v) { return std::pow((v + 0.055) / 1.055, 2.4); };
+  const double v8 = 128 / 255.0, v16 = 32768 / 65535.0;
+  const struct
+  {
+    const char* File;
+    const char* Type;
+    double Stored, Texel;
+  } cases[] = { { "t8.png", "uint8", v8, srgb(v8) }, { "t16.tif", "uint16", v16, v16 },
+    { "t16.png", "uint16", v16, srgb(v16) }, { "t.exr", "float", 0.5, 0.5 } };
+  for (const auto& c : cases)
+  {
+    SCOPED_TRACE(c.File);
+    const float stored = static_cast<float>(c.Stored);
+    WriteImage(dir / c.File, 1, 1, { stored, stored, stored }, c.Type);
+    std::string error;
+    const std::vector<json> p = Probe({ (dir / "square.off").string(), "--size", "64x48",
+                                        "--shading", "none", "--texture", (dir / c.File).string() },
+      { { 32, 24 } }, error);
+    ASSERT_EQ(error, "");
+    ExpectNear(Vec(p.at(0).at("texel")), { c.Texel, c.Texel, c.Texel }, 1e-6, "texel");
+  }
+}
+
 // Vertex colours are kd: the probe says so and which kd lit (flat the
 // provoking vertex's, the others the weights' mix), each light's diffuse
 // term is that kd's; --kd puts the material's back.

@@ -287,7 +287,8 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
 }
 
 // A texel multiplies kd, ka or both per fragment while flat and gouraud
-// light per vertex: the vertex stage keeps the equation's parts apart.
+// light per vertex: the vertex stage keeps the equation's parts apart (the
+// oracle's counterpart: MultiplyByTexel in shadelabTriangleFragment.cxx).
 const char* const IlluminateApartHeadSource = R"glsl(
 // The equation's parts, for the fragment to multiply by its texel:
 // D = sum_l Il*kd*max(N.L, 0), S = sum_l Il*S_l (ka*Ia is the fragment's).

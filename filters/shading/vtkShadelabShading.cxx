@@ -343,25 +343,28 @@ void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
   const TextureMap& map = this->Texture.Map;
   if (!this->TextureObject || this->TextureObject->GetContext() != window)
   {
-    const auto wrap = [](TextureWrap w)
-    {
-      return w == TextureWrap::Clamp ? vtkTextureObject::ClampToEdge
-        : w == TextureWrap::Mirror   ? vtkTextureObject::MirroredRepeat
-                                     : vtkTextureObject::Repeat;
-    };
-    const int filter =
-      map.Filter == TextureFilter::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
     this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
     this->TextureObject->SetContext(window);
-    this->TextureObject->SetWrapS(wrap(map.WrapS));
-    this->TextureObject->SetWrapT(wrap(map.WrapT));
-    this->TextureObject->SetMinificationFilter(filter);
-    this->TextureObject->SetMagnificationFilter(filter);
     // 32-bit float texels: the decoded image as it is, no 8-bit rounding.
     this->TextureObject->SetInternalFormat(GL_RGB32F);
     this->TextureObject->Create2DFromRaw(map.Image->Width, map.Image->Height, 3, VTK_FLOAT,
       const_cast<float*>(map.Image->Pixels.data()));
   }
+  // The sampler's settings at every draw: a texture taken over from the
+  // shading before (the same image) may have had others. The object sends
+  // them to OpenGL when they changed.
+  const auto wrap = [](TextureWrap w)
+  {
+    return w == TextureWrap::Clamp ? vtkTextureObject::ClampToEdge
+      : w == TextureWrap::Mirror   ? vtkTextureObject::MirroredRepeat
+                                   : vtkTextureObject::Repeat;
+  };
+  const int filter =
+    map.Filter == TextureFilter::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
+  this->TextureObject->SetWrapS(wrap(map.WrapS));
+  this->TextureObject->SetWrapT(wrap(map.WrapT));
+  this->TextureObject->SetMinificationFilter(filter);
+  this->TextureObject->SetMagnificationFilter(filter);
   // Kept active (its unit reserved) while the shading draws.
   this->TextureObject->Activate();
   program->SetUniformi(TextureSamplerName, this->TextureObject->GetTextureUnit());

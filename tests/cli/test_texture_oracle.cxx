@@ -73,3 +73,34 @@ TEST_P(TextureOracle, MatchesTheCpuOracle)
 
 INSTANTIATE_TEST_SUITE_P(Cases, TextureOracle, testing::ValuesIn(Cases()),
   [](const testing::TestParamInfo<Case>& info) { return info.param.Name; });
+
+// A batch keeps a rule's actor from shot to shot (SceneCache) and with it
+// the uploaded texture when the image is the same: the next shot's wrap and
+// filter must still apply. Each shot of a scene file equals its own render.
+TEST(TextureBatch, EachShotSamplesAsItsOwnRender)
+{
+  TempDir dir;
+  Scene s;
+  s.Textured = true;
+  WriteText(dir / "mesh.off", OffText(s, Grid(s.Geometry)));
+  WriteImage8(dir / "texture.png", TextureSide, TextureSide, TextureBytes());
+  WriteText(dir / "scene.json",
+    R"({ "mesh": "mesh.off", "texture": "texture.png", "size": [64, 64],
+         "shots": [ { "texture_filter": "nearest", "texture_wrap": "clamp" },
+                    { "texture_filter": "bilinear", "texture_wrap": "repeat" } ] })");
+  const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "shot{index}.exr").string() });
+  ASSERT_EQ(batch.ExitCode, 0) << batch.Stderr;
+  const char* settings[][2] = { { "nearest", "clamp" }, { "bilinear", "repeat" } };
+  for (int shot = 0; shot < 2; ++shot)
+  {
+    SCOPED_TRACE(settings[shot][0]);
+    const auto alone = dir / ("alone" + std::to_string(shot) + ".exr");
+    const RunResult r = RunShadelab({ "render", (dir / "mesh.off").string(), "-o", alone.string(),
+      "--size", "64x64", "--texture", (dir / "texture.png").string(), "--texture-filter",
+      settings[shot][0], "--texture-wrap", settings[shot][1] });
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    EXPECT_EQ(
+      ReadImage(dir / ("shot" + std::to_string(shot) + ".exr")).Pixels, ReadImage(alone).Pixels);
+  }
+}

@@ -129,12 +129,6 @@ void AddTexelLookup(std::vector<ShaderReplacement>& r)
   Prepend(r, false, "//VTK::Light::Impl", TexelSource);
 }
 
-// Whether the rule's code reads the texel: none shows kd only.
-bool UsesTexel(const ShaderFeatures& f)
-{
-  return f.Rule == Shading::None ? f.KdTexture : f.Textured();
-}
-
 // Per-vertex kd for the fragment stage (none, phong): the vertex stage
 // passes the attribute on, interpolated.
 void AddVertexKdPassing(std::vector<ShaderReplacement>& r)
@@ -279,7 +273,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
       AddFragmentLit(f, r);
       break;
   }
-  if (UsesTexel(f))
+  if (f.ReadsTexel())
   {
     AddTexelLookup(r);
   }

@@ -41,6 +41,14 @@ struct ShaderFeatures
   bool AllFeatures = false;
 
   bool Textured() const { return this->KdTexture || this->KaTexture; }
+  /**
+   * The code looks a texel up (and reads the texture coordinates): a
+   * texture for kd, or for ka under a rule that lights; never AllFeatures.
+   */
+  bool ReadsTexel() const
+  {
+    return !this->AllFeatures && (this->Rule == Shading::None ? this->KdTexture : this->Textured());
+  }
   bool operator==(const ShaderFeatures& other) const;
 };
 

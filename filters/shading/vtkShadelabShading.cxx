@@ -221,7 +221,7 @@ void vtkShadelabShading::Attach(
       mapper->MapDataArrayToVertexAttribute(
         VertexKdAttributeName, ColorsArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
-    if (this->Features.Textured())
+    if (this->Features.ReadsTexel())
     {
       mapper->MapDataArrayToVertexAttribute(TextureCoordinateAttributeName,
         TextureCoordinatesArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
@@ -267,7 +267,7 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   };
   program->SetUniform3f("shadelabKa", toFloat(this->Surface.Ka).data());
   program->SetUniform3f("shadelabKd", toFloat(this->Surface.Kd).data());
-  if (this->Features.Textured())
+  if (this->Features.ReadsTexel())
   {
     program->SetUniform3f("shadelabKaFactor", toFloat(this->Surface.Ka).data());
     program->SetUniform3f("shadelabKdFactor", toFloat(this->Surface.Kd).data());

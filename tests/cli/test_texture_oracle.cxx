@@ -76,7 +76,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, TextureOracle, testing::ValuesIn(Cases()),
 
 // A batch keeps a rule's actor from shot to shot (SceneCache) and with it
 // the uploaded texture when the image is the same: the next shot's wrap and
-// filter must still apply. Each shot of a scene file equals its own render.
+// filter must still apply. And it decodes a new image while the picture
+// before is being written (the writer's answers must not mix). Each shot of
+// a scene file equals its own render.
 TEST(TextureBatch, EachShotSamplesAsItsOwnRender)
 {
   TempDir dir;
@@ -84,21 +86,29 @@ TEST(TextureBatch, EachShotSamplesAsItsOwnRender)
   s.Textured = true;
   WriteText(dir / "mesh.off", OffText(s, Grid(s.Geometry)));
   WriteImage8(dir / "texture.png", TextureSide, TextureSide, TextureBytes());
+  std::vector<unsigned char> inverted = TextureBytes();
+  for (unsigned char& v : inverted)
+  {
+    v = static_cast<unsigned char>(255 - v);
+  }
+  WriteImage8(dir / "inverted.png", TextureSide, TextureSide, inverted);
   WriteText(dir / "scene.json",
     R"({ "mesh": "mesh.off", "texture": "texture.png", "size": [64, 64],
          "shots": [ { "texture_filter": "nearest", "texture_wrap": "clamp" },
-                    { "texture_filter": "bilinear", "texture_wrap": "repeat" } ] })");
+                    { "texture_filter": "bilinear", "texture_wrap": "repeat" },
+                    { "texture": "inverted.png" } ] })");
   const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "shot{index}.exr").string() });
   ASSERT_EQ(batch.ExitCode, 0) << batch.Stderr;
-  const char* settings[][2] = { { "nearest", "clamp" }, { "bilinear", "repeat" } };
-  for (int shot = 0; shot < 2; ++shot)
+  const char* settings[][3] = { { "texture.png", "nearest", "clamp" },
+    { "texture.png", "bilinear", "repeat" }, { "inverted.png", "bilinear", "repeat" } };
+  for (int shot = 0; shot < 3; ++shot)
   {
-    SCOPED_TRACE(settings[shot][0]);
+    SCOPED_TRACE(std::to_string(shot));
     const auto alone = dir / ("alone" + std::to_string(shot) + ".exr");
     const RunResult r = RunShadelab({ "render", (dir / "mesh.off").string(), "-o", alone.string(),
-      "--size", "64x64", "--texture", (dir / "texture.png").string(), "--texture-filter",
-      settings[shot][0], "--texture-wrap", settings[shot][1] });
+      "--size", "64x64", "--texture", (dir / settings[shot][0]).string(), "--texture-filter",
+      settings[shot][1], "--texture-wrap", settings[shot][2] });
     ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
     EXPECT_EQ(
       ReadImage(dir / ("shot" + std::to_string(shot) + ".exr")).Pixels, ReadImage(alone).Pixels);

@@ -4,14 +4,17 @@
 // program that per-scene generation is measured against.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
-//                         [--vertex-colors] [--parts N]
+//                         [--vertex-colors] [--texture] [--parts N]
 //
 // --vertex-colors gives every point a colour (from its position in the
 // bounding box), which our variants light as per-vertex kd: the cost of
-// vertex colours against the same run without them. --parts N deals the
-// triangles into N parts, each with a material of its own (an actor each):
-// the cost of many parts against the same run with one; VTK's variants and
-// the all-features program are left out then (they draw one actor).
+// vertex colours against the same run without them. --texture gives every
+// point texture coordinates (its x and y in the bounding box) and our
+// variants a 1024 x 1024 float checker for kd and ka (as --texture IMAGE,
+// bilinear, repeat): the cost of a texture. --parts N deals the triangles
+// into N parts, each with a material of its own (an actor each): the cost of
+// many parts against the same run with one; VTK's variants and the
+// all-features program are left out then (they draw one actor).
 // Each variant gets a fresh OpenGL context, so its first frame includes
 // compiling its programs; run with MESA_SHADER_CACHE_DISABLE=true to measure
 // compilation (scripts/bench-shading does).
@@ -45,6 +48,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 using namespace shadelab;
@@ -86,27 +90,45 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
   renderer->AddLight(light);
 }
 
-// A colour per point: its position in the mesh's bounding box as r, g, b.
-void AddPositionColors(vtkPolyData* mesh)
+// A point array `name` from each point's position in the mesh's bounding
+// box, scaled to [0, 1]: colours r, g, b (and alpha 1) with 4 components,
+// texture coordinates x, y with 2.
+void AddPositionArray(vtkPolyData* mesh, const char* name, int components)
 {
   double b[6];
   mesh->GetBounds(b);
-  auto colors = vtkSmartPointer<vtkFloatArray>::New();
-  colors->SetName(ColorsArrayName);
-  colors->SetNumberOfComponents(4);
-  colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(mesh->GetNumberOfPoints());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     double p[3];
     mesh->GetPoint(i, p);
-    float rgba[4] = { 0, 0, 0, 1 };
-    for (int c = 0; c < 3; ++c)
+    float value[4] = { 0, 0, 0, 1 };
+    for (int c = 0; c < std::min(components, 3); ++c)
     {
-      rgba[c] = static_cast<float>((p[c] - b[2 * c]) / std::max(b[2 * c + 1] - b[2 * c], 1e-30));
+      value[c] = static_cast<float>((p[c] - b[2 * c]) / std::max(b[2 * c + 1] - b[2 * c], 1e-30));
     }
-    colors->SetTypedTuple(i, rgba);
+    array->SetTypedTuple(i, value);
   }
-  mesh->GetPointData()->AddArray(colors);
+  mesh->GetPointData()->AddArray(array);
+}
+
+// A side x side checker of 32 squares a side, linear 0.8 and 0.2.
+std::shared_ptr<const TextureImage> Checker(int side)
+{
+  auto image = std::make_shared<TextureImage>();
+  image->Width = image->Height = side;
+  for (int j = 0; j < side; ++j)
+  {
+    for (int i = 0; i < side; ++i)
+    {
+      const float v = ((i * 32 / side) + (j * 32 / side)) % 2 ? 0.8f : 0.2f;
+      image->Pixels.insert(image->Pixels.end(), { v, v, v });
+    }
+  }
+  return image;
 }
 
 // n parts in bands of cell indices (as an OBJ's usemtl runs are), each with
@@ -148,6 +170,7 @@ int main(int argc, char** argv)
   int subdivide = 0;
   bool vertexColors = false;
   int parts = 1;
+  bool texture = false;
   app.add_option("MESH", o.Mesh)->required();
   app.add_option("--size", size);
   app.add_option("--frames", frames)->check(CLI::Range(1, 1000));
@@ -156,6 +179,7 @@ int main(int argc, char** argv)
   app.add_flag("--vertex-colors", vertexColors, "Colour the points, lit as per-vertex kd");
   app.add_option("--parts", parts, "Deal the triangles into N parts of their own materials")
     ->check(CLI::Range(1, 1000));
+  app.add_flag("--texture", texture, "A checker texture for kd and ka of our variants");
   CLI11_PARSE(app, argc, argv);
   o.Size = ParseSize(size);
 
@@ -170,19 +194,29 @@ int main(int argc, char** argv)
   {
     mesh = ComputeNormals(LoopSubdivided(mesh, subdivide), o.Computed).Mesh;
   }
-  if (vertexColors || parts > 1)
+  if (vertexColors || texture || parts > 1)
   {
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(mesh); // its own attributes, sharing the arrays
+    auto added = vtkSmartPointer<vtkPolyData>::New();
+    added->ShallowCopy(mesh); // its own attributes, sharing the arrays
     if (vertexColors)
     {
-      AddPositionColors(copy);
+      AddPositionArray(added, ColorsArrayName, 4);
+    }
+    if (texture)
+    {
+      AddPositionArray(added, TextureCoordinatesArrayName, 2);
     }
     if (parts > 1)
     {
-      AddParts(copy, parts);
+      AddParts(added, parts);
     }
-    mesh = copy;
+    mesh = added;
+  }
+  std::shared_ptr<const TextureImage> checker;
+  if (texture)
+  {
+    o.Texture = "checker"; // decoded already: Checker
+    checker = Checker(1024);
   }
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
@@ -208,7 +242,8 @@ int main(int argc, char** argv)
       return ReportError("render", error);
     }
     // One actor but with --parts, where only ours run.
-    const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer()).Drawn.front();
+    const DrawnParts built =
+      BuildScene(scene, mesh, renderer.GetRenderer(), nullptr, checker).Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

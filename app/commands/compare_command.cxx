@@ -64,7 +64,7 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   }
   ImageWriterProcess writer; // started first: it binds OpenImageIO while we render
 
-  MeshCache meshes;
+  MeshCache meshes(DecodingThrough(writer));
   HeadlessRenderer renderer;
   ImageSize rendered;
   if (const std::string error = RenderedSize(o.Scene, rendered); !error.empty())

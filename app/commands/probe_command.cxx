@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "headless/headless_renderer.h"
 #include "headless/scene_picture.h"
+#include "image/image_writer_process.h"
 #include "probe/pixel_probe.h"
 #include "probe/probe_json.h"
 #include "probe/probe_text.h"
@@ -15,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <memory>
 
 namespace shadelab
 {
@@ -81,7 +83,8 @@ int RunProbe(const ProbeOptions& o)
       return ExitUsage;
     }
   }
-  MeshCache meshes;
+  std::unique_ptr<ImageWriterProcess> decoder; // started for a texture's image only
+  MeshCache meshes(DecodingThrough(decoder));
   HeadlessRenderer renderer;
   if (const std::string error = renderer.Start(s.Size.Width, s.Size.Height); !error.empty())
   {
@@ -93,8 +96,8 @@ int RunProbe(const ProbeOptions& o)
   {
     return ReportError(picture.Input, picture.Error);
   }
-  const PixelProber prober(
-    s, picture.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(), s.Size);
+  const PixelProber prober(s, picture.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(),
+    s.Size, picture.Scene->Texture);
   for (std::size_t i = 0; i < o.Pixels.size(); ++i)
   {
     PixelProbe probe = prober.Probe(o.Pixels[i]);

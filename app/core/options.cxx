@@ -49,6 +49,17 @@ void AddMaterialOptions(CLI::App& command, SceneOptions& o)
   AddParsed(command, "--kd", o.Kd, ParseRgb, "Diffuse coefficients")->option_text("R,G,B");
   AddParsed(command, "--ks", o.Ks, ParseRgb, "Specular coefficients")->option_text("R,G,B");
   AddParsed(command, "--ns", o.Ns, ParseNonNegative, "Specular exponent")->option_text("X");
+  command
+    .add_option("--texture", o.Texture,
+      "An image (any format OpenImageIO reads; 8-bit sRGB decoded to linear) whose texel at "
+      "the mesh's texture coordinates is kd and ka, looked up per fragment under every rule "
+      "(times --kd and --ka when given)")
+    ->option_text("IMAGE");
+  AddChoice(command, "--texture-wrap", o.TextureWrapping,
+    "The texture beyond [0, 1]: repeat, clamp to the edge texels, or mirror (default repeat)");
+  AddChoice(command, "--texture-filter", o.TextureFiltering,
+    "Texel lookup: bilinear between the four nearest texel centres, or the nearest texel; no "
+    "mipmaps (default bilinear)");
 }
 
 // --ambient and the repeatable --light.
@@ -205,8 +216,10 @@ Material SceneOptions::EffectiveMaterial() const
 
 Material SceneOptions::Overridden(Material m) const
 {
-  m.Ka = this->Ka.value_or(m.Ka);
-  m.Kd = this->Kd.value_or(m.Kd);
+  // --texture is every part's kd and ka: their factors become 1.
+  const bool textured = !this->Texture.empty();
+  m.Ka = this->Ka.value_or(textured ? Rgb{ 1, 1, 1 } : m.Ka);
+  m.Kd = this->Kd.value_or(textured ? Rgb{ 1, 1, 1 } : m.Kd);
   m.Ks = this->Ks.value_or(m.Ks);
   m.Ns = this->Ns.value_or(m.Ns);
   return m;

@@ -4,6 +4,7 @@
 #define shadelab_options_h
 
 #include "shadelabIllumination.h"
+#include "shadelabTexture.h"
 
 #include <array>
 #include <optional>
@@ -139,6 +140,11 @@ struct SceneOptions
   bool MaterialGiven = false; // --material: it replaces the file's materials and colours
   std::optional<Rgb> Ka, Kd, Ks;
   std::optional<double> Ns;
+  // --texture: an image whose texel is kd and ka of the whole mesh (times
+  // --kd and --ka when given), looked up at its texture coordinates.
+  std::string Texture;
+  TextureWrap TextureWrapping = TextureWrap::Repeat;
+  TextureFilter TextureFiltering = TextureFilter::Bilinear;
   // OpenGL's default global ambient: the lecture's table is OpenGL's classic
   // material table, whose ka values were chosen for it.
   Rgb Ambient{ 0.2, 0.2, 0.2 };
@@ -165,14 +171,20 @@ struct SceneOptions
   NormalsMode Normals = NormalsMode::Auto;
   NormalsSettings Computed; // how normals are computed, when they are
 
-  /** The material after the --ka/--kd/--ks/--ns overrides. */
+  /**
+   * The material after the --ka/--kd/--ks/--ns overrides; with --texture,
+   * ka and kd are the texel's factors: 1 unless --ka, --kd give them.
+   */
   Material EffectiveMaterial() const;
 
-  /** m with the coefficients that --ka/--kd/--ks/--ns give replaced. */
+  /** m with the coefficients that --ka/--kd/--ks/--ns (and --texture's factors) give replaced. */
   Material Overridden(Material m) const;
 
-  /** --material or --kd: the mesh's vertex colours are not its kd. */
-  bool OverridesKd() const { return this->MaterialGiven || this->Kd.has_value(); }
+  /** --material, --kd or --texture: the mesh's vertex colours are not its kd. */
+  bool OverridesKd() const
+  {
+    return this->MaterialGiven || this->Kd.has_value() || !this->Texture.empty();
+  }
 };
 
 struct RenderOptions

@@ -77,6 +77,18 @@ std::vector<std::string> SceneArguments(const SceneOptions& s)
   {
     add("--ns", Number(*s.Ns));
   }
+  if (!s.Texture.empty())
+  {
+    add("--texture", s.Texture);
+  }
+  if (s.TextureWrapping != d.TextureWrapping)
+  {
+    add("--texture-wrap", ToString(s.TextureWrapping));
+  }
+  if (s.TextureFiltering != d.TextureFiltering)
+  {
+    add("--texture-filter", ToString(s.TextureFiltering));
+  }
   if (s.Ambient != d.Ambient)
   {
     add("--ambient", Triple(s.Ambient));

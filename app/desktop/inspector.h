@@ -205,7 +205,7 @@ private:
   bool Dragging = false;
   bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
   std::string Problem;      // the last thing that went wrong, shown in the HUD
-  MeshCache Meshes;
+  MeshCache Meshes{ DecodingThrough(this->Writer) }; // Writer: declared below, started when used
   double Bounds[6] = {};
   vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)
   vtkIdType Triangles = 0;

@@ -302,7 +302,7 @@ private:
   PhaseTimer Timer;
   ImageWriterProcess Writer;     // started first: it binds OpenImageIO while we render
   const Shot* Writing = nullptr; // submitted to the writer, not yet collected
-  MeshCache Meshes;
+  MeshCache Meshes{ DecodingThrough(this->Writer) };
   std::map<std::tuple<int, int, int>, Context> Contexts; // width, height, supersampling
 };
 

@@ -26,6 +26,8 @@ OIIO::TypeDesc ToTypeDesc(PixelType type)
   }
 }
 
+}
+
 std::string OneLine(std::string s)
 {
   std::replace(s.begin(), s.end(), '\n', ' ');
@@ -36,6 +38,8 @@ std::string OneLine(std::string s)
   return s;
 }
 
+namespace
+{
 // The writer for path's format, encoding into memory: OpenImageIO's PNG and
 // JPEG writers do not report a failed write to a file of their own, so the
 // bytes are written by OutputFile, which checks every step.

@@ -17,6 +17,9 @@
 
 namespace shadelab
 {
+/** OpenImageIO's message s (often several lines) as one line. */
+std::string OneLine(std::string s);
+
 /**
  * Writes RGB (RGBA with alpha): 8 and 16-bit types store
  * round(max*clamp(I, 0, 1)), float types store I as rendered. The request's

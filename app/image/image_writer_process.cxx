@@ -166,26 +166,27 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
     request.Image.Rgba = image.Rgba;
   }
   this->Pending = SendImageRequest(this->ToChild, request);
-  return this->Pending ? std::string() : this->Collect();
+  bool broke = false;
+  return this->Pending ? std::string() : this->ReadReply(broke);
 }
 
-std::string ImageWriterProcess::Collect()
+std::string ImageWriterProcess::ReadReply(bool& broke)
 {
-  // One line answers each picture: empty when it is written.
+  // One line answers each request: empty when it is done.
   std::string reply;
   char c = 0;
   ssize_t n = 0;
-  while (this->Pending && ((n = read(this->FromChild, &c, 1)) > 0 || (n < 0 && errno == EINTR)))
+  broke = false;
+  while ((n = read(this->FromChild, &c, 1)) > 0 || (n < 0 && errno == EINTR))
   {
     if (n == 1 && c == '\n')
     {
-      this->Pending = false;
       return reply;
     }
     reply.append(n == 1 ? 1 : 0, c);
   }
   // The pipe broke: the writer died; its status says how.
-  this->Pending = false;
+  broke = true;
   Close(this->ToChild);
   const int status = this->Wait();
   if (!reply.empty())
@@ -195,5 +196,67 @@ std::string ImageWriterProcess::Collect()
   return WIFSIGNALED(status)
     ? "the image writer died (signal " + std::to_string(WTERMSIG(status)) + ")"
     : std::string("the image writer failed");
+}
+
+std::string ImageWriterProcess::Collect()
+{
+  if (this->Answered)
+  {
+    this->Answered = false;
+    return this->Answer;
+  }
+  if (!this->Pending)
+  {
+    return "the image writer has stopped";
+  }
+  this->Pending = false;
+  bool broke = false;
+  return this->ReadReply(broke);
+}
+
+std::string ImageWriterProcess::Decode(const DecodeRequest& request, TextureImage& image)
+{
+  if (!this->StartError.empty())
+  {
+    return this->StartError;
+  }
+  if (this->Pending)
+  {
+    this->Answer = this->Collect();
+    this->Answered = true;
+  }
+  if (this->ToChild < 0 || !SendDecodeRequest(this->ToChild, request))
+  {
+    return "the image writer has stopped";
+  }
+  bool broke = false;
+  const std::string reply = this->ReadReply(broke);
+  if (broke || !reply.empty())
+  {
+    return reply;
+  }
+  return ReceiveTextureImage(this->FromChild, image) ? std::string()
+                                                     : std::string("the image writer failed");
+}
+
+ImageDecoder DecodingThrough(ImageWriterProcess& writer)
+{
+  return [&writer](
+           const std::string& path, const std::vector<std::uint8_t>& bytes, TextureImage& image) {
+    return writer.Decode({ path, bytes }, image);
+  };
+}
+
+ImageDecoder DecodingThrough(std::unique_ptr<ImageWriterProcess>& writer)
+{
+  return
+    [&writer](const std::string& path, const std::vector<std::uint8_t>& bytes, TextureImage& image)
+  {
+    if (!writer)
+    {
+      writer = std::make_unique<ImageWriterProcess>();
+    }
+    return writer->Decode({ path, bytes }, image);
+  };
 }
 }

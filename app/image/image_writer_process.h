@@ -12,9 +12,11 @@
 
 #include "image/image_pixels.h"
 #include "image/image_writer_protocol.h"
+#include "scene/mesh_cache.h"
 
 #include <sys/types.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,19 +62,36 @@ public:
   /** Waits until the submitted picture is written: "" or an error text. */
   std::string Collect();
 
+  /**
+   * Has the writer decode an image for a texture (texture_decoding.h) and
+   * waits for it: "" or the problem. May come between a Submit and its
+   * Collect: the picture's answer is kept for the Collect.
+   */
+  std::string Decode(const DecodeRequest& request, TextureImage& image);
+
 private:
   ImageWriterProcess(const ImageWriterProcess&) = delete;
   void operator=(const ImageWriterProcess&) = delete;
 
   int Wait();
+  // One answer line, or the writer's end as an error: "" when written.
+  std::string ReadReply(bool& broke);
 
   pid_t Child = -1;
   int ToChild = -1;
   int FromChild = -1;
   std::string StartError;
-  bool Written = false; // a picture was handed over: let the writer finish
-  bool Pending = false; // submitted, not yet collected
+  bool Written = false;  // a picture was handed over: let the writer finish
+  bool Pending = false;  // submitted, not yet collected
+  bool Answered = false; // the submitted picture's answer came before a decode's: Answer
+  std::string Answer;
 };
+
+/** A MeshCache's decoder through writer. */
+ImageDecoder DecodingThrough(ImageWriterProcess& writer);
+
+/** The same through a writer that is started at the first image when there is none yet. */
+ImageDecoder DecodingThrough(std::unique_ptr<ImageWriterProcess>& writer);
 }
 
 #endif

@@ -11,8 +11,11 @@ namespace shadelab
 {
 namespace
 {
-constexpr uint32_t Magic = 0x53484c31; // "SHL1"
+constexpr uint32_t Magic = 0x53484c31;       // "SHL1": a picture
+constexpr uint32_t DecodeMagic = 0x53484431; // "SHD1": an image to decode
 constexpr uint64_t MaxText = 1 << 24;
+// An embedded image's bytes: as large as a glTF buffer is likely to hold.
+constexpr uint64_t MaxEncoded = 1ULL << 30;
 
 // Moves size bytes through read or write, across partial transfers and EINTR.
 template <typename Call, typename Byte>
@@ -92,10 +95,59 @@ bool SendImageRequest(int fd, const ImageRequest& r)
            : WriteAll(fd, r.Image.Rgba.data(), r.Image.Rgba.size() * sizeof(float)));
 }
 
+bool SendDecodeRequest(int fd, const DecodeRequest& r)
+{
+  return Send(fd, DecodeMagic) && SendText(fd, r.Path) && Send<uint64_t>(fd, r.Bytes.size()) &&
+    WriteAll(fd, r.Bytes.data(), r.Bytes.size());
+}
+
+bool ReceiveRequestKind(int fd, RequestKind& kind)
+{
+  uint32_t magic = 0;
+  if (!Receive(fd, magic) || (magic != Magic && magic != DecodeMagic))
+  {
+    return false;
+  }
+  kind = magic == Magic ? RequestKind::Picture : RequestKind::Decode;
+  return true;
+}
+
+bool ReceiveDecodeRequest(int fd, DecodeRequest& r)
+{
+  uint64_t size = 0;
+  if (!ReceiveText(fd, r.Path) || !Receive(fd, size) || size > MaxEncoded)
+  {
+    return false;
+  }
+  r.Bytes.resize(size);
+  return ReadAll(fd, r.Bytes.data(), size);
+}
+
+bool SendTextureImage(int fd, const TextureImage& image)
+{
+  return Send<int32_t>(fd, image.Width) && Send<int32_t>(fd, image.Height) &&
+    WriteAll(fd, image.Pixels.data(), image.Pixels.size() * sizeof(float));
+}
+
+bool ReceiveTextureImage(int fd, TextureImage& image)
+{
+  int32_t width = 0, height = 0;
+  if (!Receive(fd, width) || !Receive(fd, height) || width < 1 || height < 1 ||
+    width > MaxImageSide || height > MaxImageSide ||
+    static_cast<long long>(width) * height > MaxImagePixels)
+  {
+    return false;
+  }
+  image.Width = width;
+  image.Height = height;
+  image.Pixels.resize(static_cast<size_t>(width) * height * 3);
+  return ReadAll(fd, image.Pixels.data(), image.Pixels.size() * sizeof(float));
+}
+
 bool ReceiveImageRequest(int fd, ImageRequest& r)
 {
-  uint32_t magic = 0, type = 0, count = 0;
-  if (!Receive(fd, magic) || magic != Magic || !ReceiveText(fd, r.Path) || !Receive(fd, type) ||
+  uint32_t type = 0, count = 0;
+  if (!ReceiveText(fd, r.Path) || !Receive(fd, type) ||
     type > static_cast<uint32_t>(PixelType::Float) || !Receive(fd, count) || count > 64)
   {
     return false;

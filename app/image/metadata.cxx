@@ -113,7 +113,14 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["shading"] = ToString(o.ShadingRule);
   j["reflection"] = ToString(o.ReflectionModel);
   j["material"] = DescribeMaterial(o.EffectiveMaterial());
-  j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors" : "material";
+  j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors"
+    : o.Texture.empty()                ? "material"
+                                       : "texture";
+  if (!o.Texture.empty())
+  {
+    j["texture"] = { { "image", o.Texture }, { "wrap", ToString(o.TextureWrapping) },
+      { "filter", ToString(o.TextureFiltering) } };
+  }
   auto parts = nlohmann::ordered_json::array();
   for (const ScenePart& part : SceneParts(o, mesh))
   {

@@ -41,8 +41,8 @@ std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
 }
 }
 
-PixelProber::PixelProber(
-  const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size)
+PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
+  ImageSize size, std::shared_ptr<const TextureImage> texture)
   : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))
 {
   Vec3 eye;
@@ -58,7 +58,7 @@ PixelProber::PixelProber(
   s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
   s.Background = options.Background;
   s.Orthographic = camera->GetParallelProjection();
-  this->In = WorldIllumination(options, s.Lights);
+  this->In = WorldIllumination(options, s.Lights, std::move(texture));
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
@@ -73,6 +73,16 @@ PixelProber::PixelProber(
       {
         this->Kd[i][c] = colors->GetComponent(i, c);
       }
+    }
+  }
+  vtkDataArray* coordinates = mesh->GetPointData()->GetArray(TextureCoordinatesArrayName);
+  if (this->In.Texture.Used() && coordinates)
+  {
+    s.Textured = true;
+    this->TexCoords.resize(coordinates->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < coordinates->GetNumberOfTuples(); ++i)
+    {
+      this->TexCoords[i] = { coordinates->GetComponent(i, 0), coordinates->GetComponent(i, 1) };
     }
   }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
@@ -106,6 +116,10 @@ PixelProbe PixelProber::Probe(Pixel at) const
     if (p.HasNormals)
     {
       p.Fragment.Normals[k] = this->Normals[corners[k]];
+    }
+    if (p.Textured)
+    {
+      p.Fragment.TexCoords[k] = this->TexCoords[corners[k]];
     }
   }
   if (p.VertexKd)

@@ -14,6 +14,7 @@
 #include <vtkType.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 class vtkCamera;
@@ -35,6 +36,7 @@ struct PixelProbe
   bool Orthographic = false;
   bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
   bool VertexKd = false;   // kd from the mesh's vertex colours (Fragment.VertexKd)
+  bool Textured = false;   // kd and ka times a texel (Fragment.TexCoords; Shaded.Texel)
   Rgb Rendered{};          // the picture's value at the pixel: the caller's to set
   // Where Rendered was read, as the text says it: the window reads its own 8-bit pixel.
   const char* RenderedFrom = "the float render at the pixel";
@@ -60,9 +62,11 @@ public:
   /**
    * `mesh` is the mesh as read (BuiltScene::Mesh: triangles, with the
    * vertex normals the rule uses), `camera` the renderer's after the scene
-   * was built, `size` the picture's: what `render` draws for options.
+   * was built, `size` the picture's, `texture` --texture's image
+   * (BuiltScene::Texture): what `render` draws for options.
    */
-  PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size);
+  PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size,
+    std::shared_ptr<const TextureImage> texture = nullptr);
 
   /** The pixel explained; its Rendered value left at 0. */
   PixelProbe Probe(Pixel at) const;
@@ -71,10 +75,11 @@ private:
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
   PictureTriangles Triangles;
-  std::vector<ScenePart> Parts; // as drawn
-  std::vector<int> CellParts;   // the part of each cell
-  std::vector<Vec3> Normals;    // per point, when the mesh has them
-  std::vector<Rgb> Kd;          // per point, when its colours are kd
+  std::vector<ScenePart> Parts;                 // as drawn
+  std::vector<int> CellParts;                   // the part of each cell
+  std::vector<Vec3> Normals;                    // per point, when the mesh has them
+  std::vector<Rgb> Kd;                          // per point, when its colours are kd
+  std::vector<std::array<double, 2>> TexCoords; // per point, when a texture is looked up
 };
 }
 

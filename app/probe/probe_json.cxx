@@ -94,9 +94,15 @@ ordered_json ProbeJson(const PixelProbe& p)
   j["part_name"] = p.PartName;
   j["material"] = DescribeMaterial(p.Surface);
   j["material_from"] = ToString(p.Source);
-  // The kd that lit the pixel and where it came from (material or vertex colours).
+  // The kd that lit the pixel and where it came from (material or vertex
+  // colours), times the texel where a texture is looked up.
   j["kd"] = p.Shaded.Kd;
-  j["kd_from"] = p.VertexKd ? "vertex colors" : "material";
+  j["kd_from"] = p.VertexKd ? "vertex colors" : p.Textured ? "texture" : "material";
+  if (p.Shaded.Texel)
+  {
+    j["texture_coordinates"] = *p.Shaded.TexCoord;
+    j["texel"] = *p.Shaded.Texel;
+  }
   j["ia"] = p.Ia;
   if (p.Rule == Shading::None)
   {

@@ -173,6 +173,14 @@ std::string ProbeText(const PixelProbe& p)
       p.Rule == Shading::Flat ? "the provoking vertex's colour, not the material's"
                               : "the vertex colours mixed by the weights, not the material's");
   }
+  if (p.Shaded.Texel)
+  {
+    const auto& st = *p.Shaded.TexCoord;
+    out.Add("",
+      "texel = " + ProbeTriple(*p.Shaded.Texel) + " at (s, t) = (" + ProbeNumber(st[0]) + ", " +
+        ProbeNumber(st[1]) + "); kd = " + ProbeTriple(p.Shaded.Kd),
+      "kd and ka are the material's times the texel, looked up per fragment");
+  }
   out.Add("", "weights = " + ProbeTriple(p.Fragment.Weights),
     "barycentric, perspective-correct, of the triangle's vertices");
   const IlluminationTerms& t = p.Shaded.Terms;

@@ -14,4 +14,21 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
   }
   return cached->second;
 }
+
+const LoadedTexture& MeshCache::GetTexture(const std::string& path)
+{
+  auto cached = this->Textures.find(path);
+  if (cached == this->Textures.end())
+  {
+    LoadedTexture loaded;
+    auto image = std::make_shared<TextureImage>();
+    loaded.Error = this->Decoder(path, {}, *image);
+    if (loaded.Error.empty())
+    {
+      loaded.Image = image;
+    }
+    cached = this->Textures.emplace(path, loaded).first;
+  }
+  return cached->second;
+}
 }

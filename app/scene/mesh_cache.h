@@ -1,20 +1,44 @@
-// Meshes read once per run: a batch's shots, a comparison's panels and the
-// viewer's weightings ask for the same file again and again, often with
-// other normals settings.
+// Meshes and their textures' images read once per run: a batch's shots, a
+// comparison's panels and the viewer's weightings ask for the same file
+// again and again, often with other normals settings.
 #ifndef shadelab_mesh_cache_h
 #define shadelab_mesh_cache_h
 
 #include "scene/mesh_input.h"
 
+#include <cstdint>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace shadelab
 {
+/**
+ * Decodes an image for a texture, from the file at path or, when bytes are
+ * given, from those (named path in errors): "" or the problem, one line.
+ * The image writer process does it (image_writer_process.h), since it is
+ * the one that links OpenImageIO.
+ */
+using ImageDecoder = std::function<std::string(
+  const std::string& path, const std::vector<std::uint8_t>& bytes, TextureImage& image)>;
+
+struct LoadedTexture
+{
+  std::shared_ptr<const TextureImage> Image; // null on error
+  std::string Error;                         // one line, without the file name
+};
+
 class MeshCache
 {
 public:
+  explicit MeshCache(ImageDecoder decoder)
+    : Decoder(std::move(decoder))
+  {
+  }
+
   /**
    * The mesh that options ask for (file, normals mode and settings), read
    * and its normals computed the first time; a LoadedMesh with its Error
@@ -22,7 +46,12 @@ public:
    */
   const LoadedMesh& Get(const SceneOptions& options);
 
+  /** The image file at path, decoded the first time; the reference stays valid. */
+  const LoadedTexture& GetTexture(const std::string& path);
+
 private:
+  ImageDecoder Decoder;
+  std::map<std::string, LoadedTexture> Textures;
   // What makes two meshes the same: the file and how its normals are got
   // (LoadMesh computes them only for the lit rules).
   using Key = std::tuple<std::string, NormalsMode, std::string, double, bool, bool>;

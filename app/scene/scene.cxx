@@ -35,10 +35,26 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
-IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
+SurfaceTexture SceneTexture(
+  const SceneOptions& options, std::shared_ptr<const TextureImage> texture)
+{
+  SurfaceTexture t;
+  if (!options.Texture.empty() && texture)
+  {
+    t.Map.Image = std::move(texture);
+    t.Map.WrapS = t.Map.WrapT = options.TextureWrapping;
+    t.Map.Filter = options.TextureFiltering;
+    t.Kd = t.Ka = true;
+  }
+  return t;
+}
+
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights,
+  std::shared_ptr<const TextureImage> texture)
 {
   IlluminationInputs in;
   in.Surface = options.EffectiveMaterial();
+  in.Texture = SceneTexture(options, std::move(texture));
   in.Ambient = options.Ambient;
   in.Model = options.ReflectionModel;
   for (const Light& light : lights)
@@ -48,8 +64,8 @@ IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vec
   return in;
 }
 
-BuiltScene BuildScene(
-  const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
+BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
+  const BuiltScene* reuse, std::shared_ptr<const TextureImage> texture)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -66,7 +82,8 @@ BuiltScene BuildScene(
   renderer->ResetCameraClippingRange(bounds);
   Vec3 eye;
   camera->GetPosition(eye.data());
-  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse);
+  return BuildActor(
+    options, EffectiveLights(options, eye), mesh, renderer, reuse, std::move(texture));
 }
 
 namespace
@@ -109,7 +126,8 @@ std::vector<std::vector<int>> PartsByMaterial(const std::vector<ScenePart>& part
 }
 
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
-  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse)
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse,
+  std::shared_ptr<const TextureImage> texture)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -120,6 +138,8 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     reuse->Drawn.front().Shading->GetFeatures().Rule == options.ShadingRule &&
     std::equal(groups.begin(), groups.end(), reuse->Drawn.begin(), reuse->Drawn.end(),
       [](const std::vector<int>& group, const DrawnParts& drawn) { return group == drawn.Parts; });
+  scene.Texture = texture;
+  const SurfaceTexture surfaceTexture = SceneTexture(options, std::move(texture));
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     DrawnParts drawn;
@@ -128,6 +148,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
       parts[drawn.Parts.front()].Surface, options.Ambient, lights);
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
+    drawn.Shading->SetTexture(surfaceTexture);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

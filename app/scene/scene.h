@@ -8,6 +8,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,26 +37,37 @@ struct BuiltScene
   // One per material the parts are drawn with, in the order of their first
   // part: a mesh with one part or none, or one material for all, has one.
   std::vector<DrawnParts> Drawn;
-  std::string Error;           // an impossible scene (camera), else empty
-  vtkPolyData* Mesh = nullptr; // what the actors draw, before the rule prepared it
+  std::string Error;                           // an impossible scene (camera), else empty
+  vtkPolyData* Mesh = nullptr;                 // what the actors draw, before the rule prepared it
+  std::shared_ptr<const TextureImage> Texture; // --texture's image, decoded, or null
 };
 
 /**
  * Fills renderer with mesh as options describe, lit by the lecture's
- * shaders, each part with its material (scene/scene_parts.h). With `reuse`,
- * a scene built before that drew the same mesh with the same rule and the
- * same parts together, its actors are taken over (their mappers keep the
- * uploaded buffers; only the lighting changes).
+ * shaders, each part with its material (scene/scene_parts.h); `texture`,
+ * options.Texture decoded, where it gives one. With `reuse`, a scene built
+ * before that drew the same mesh with the same rule and the same parts
+ * together, its actors are taken over (their mappers keep the uploaded
+ * buffers; only the lighting changes).
  */
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
-  const BuiltScene* reuse = nullptr);
+  const BuiltScene* reuse = nullptr, std::shared_ptr<const TextureImage> texture = nullptr);
 
 /**
  * The actor part of BuildScene: mesh lit as options say by `lights` (world
- * coordinates), under the renderer's camera as it is; `reuse` as there.
+ * coordinates), under the renderer's camera as it is; `reuse` and `texture`
+ * as there.
  */
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
-  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr);
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr,
+  std::shared_ptr<const TextureImage> texture = nullptr);
+
+/**
+ * What --texture makes of texture (options.Texture decoded): kd and ka
+ * both, with options' wrap and filter; nothing used without it.
+ */
+SurfaceTexture SceneTexture(
+  const SceneOptions& options, std::shared_ptr<const TextureImage> texture);
 
 /**
  * Whether mesh's vertex colours are its kd: it has them ("Colors") and
@@ -68,10 +80,12 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
 
 /**
  * The oracle's inputs for options' scene lit by `lights`, in world
- * coordinates: Ia, reflection model and the options' material (a part's
- * own is the caller's to set); the view is the caller's.
+ * coordinates: Ia, reflection model, texture (SceneTexture) and the
+ * options' material (a part's own is the caller's to set); the view is the
+ * caller's.
  */
-IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights);
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights,
+  std::shared_ptr<const TextureImage> texture = nullptr);
 }
 
 #endif

@@ -1,8 +1,10 @@
 #include "scene/scene_cache.h"
 
+#include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -23,11 +25,29 @@ SceneCache::Shown SceneCache::Show(
     return shown;
   }
   shown.Mesh = &loaded;
+  std::shared_ptr<const TextureImage> texture;
+  if (!options.Texture.empty())
+  {
+    const LoadedTexture& image = this->Meshes->GetTexture(options.Texture);
+    if (!image.Image)
+    {
+      shown.Input = options.Texture;
+      shown.Error = image.Error;
+      return shown;
+    }
+    if (!loaded.Mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
+    {
+      shown.Input = options.Mesh;
+      shown.Error = "--texture needs texture coordinates, and the mesh has none";
+      return shown;
+    }
+    texture = image.Image;
+  }
   const Key key{ options.ShadingRule, loaded.Mesh.GetPointer() };
   const auto before = this->Scenes.find(key);
   const BuiltScene* reuse = before == this->Scenes.end() ? nullptr : &before->second;
-  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse)
-                            : BuildScene(options, loaded.Mesh, renderer, reuse);
+  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse, texture)
+                            : BuildScene(options, loaded.Mesh, renderer, reuse, texture);
   if (!scene.Error.empty())
   {
     shown.Input = "camera";

@@ -18,9 +18,9 @@ namespace
 using namespace scene_file;
 
 const std::vector<std::string> ShotKeys{ "name", "mesh", "output", "shading", "reflection",
-  "material", "ambient", "lights", "camera", "size", "background", "normals", "weighting",
-  "feature_angle", "orient", "pixel_type", "ssaa", "up", "edges", "edge_color", "edge_width",
-  "normal_glyphs", "orbit", "fps" };
+  "material", "texture", "texture_wrap", "texture_filter", "ambient", "lights", "camera", "size",
+  "background", "normals", "weighting", "feature_angle", "orient", "pixel_type", "ssaa", "up",
+  "edges", "edge_color", "edge_width", "normal_glyphs", "orbit", "fps" };
 
 // The file's JSON (comments allowed): "" or the problem.
 std::string ParseSceneJson(const std::string& path, json& scene)

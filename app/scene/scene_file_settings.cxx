@@ -92,6 +92,10 @@ void ConvertShot(
   const json& settings, Shot& shot, const std::filesystem::path& folder, const PathOfKey& where)
 {
   SceneOptions& o = shot.Scene;
+  // The material last: it is resolved whole (ConvertMaterial), and with a
+  // texture its ka and kd are the texel's factors.
+  const json* material = nullptr;
+  std::string materialPath;
   for (const auto& item : settings.items())
   {
     const std::string& key = item.key();
@@ -101,10 +105,20 @@ void ConvertShot(
     {
       Text(v, path); // used by the output template
     }
-    else if (key == "mesh")
+    else if (key == "mesh" || key == "texture")
     {
-      const std::filesystem::path mesh(Text(v, path));
-      o.Mesh = (mesh.is_absolute() ? mesh : folder / mesh).lexically_normal().string();
+      const std::filesystem::path file(Text(v, path));
+      (key == "mesh" ? o.Mesh : o.Texture) =
+        (file.is_absolute() ? file : folder / file).lexically_normal().string();
+    }
+    else if (key == "texture_wrap")
+    {
+      Apply(o, { "--texture-wrap", Choice(v, path, "texture wrap", Names<TextureWrap>()) }, path);
+    }
+    else if (key == "texture_filter")
+    {
+      Apply(
+        o, { "--texture-filter", Choice(v, path, "texture filter", Names<TextureFilter>()) }, path);
     }
     else if (key == "shading" || key == "reflection" || key == "normals" || key == "weighting")
     {
@@ -116,7 +130,8 @@ void ConvertShot(
     }
     else if (key == "material")
     {
-      ConvertMaterial(v, path, o);
+      material = &v;
+      materialPath = path;
     }
     else if (key == "background" && v.is_string() && v.get<std::string>() == "transparent")
     {
@@ -171,6 +186,10 @@ void ConvertShot(
     {
       Apply(o, { "--edge-width", Number(v, path) }, path);
     }
+  }
+  if (material)
+  {
+    ConvertMaterial(*material, materialPath, o);
   }
 }
 }

@@ -66,6 +66,12 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
   {
     shot["material"] = s.MaterialName;
   }
+  if (!s.Texture.empty())
+  {
+    shot["texture"] = s.Texture;
+    shot["texture_wrap"] = ToString(s.TextureWrapping);
+    shot["texture_filter"] = ToString(s.TextureFiltering);
+  }
   shot["ambient"] = s.Ambient;
   if (!s.Lights.empty())
   {

@@ -70,11 +70,18 @@ const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
 )glsl";
 
 // The material's uniforms: ks and ns only where there is specular code; kd
-// per vertex is a variable that the stage sets before lighting.
-std::string MaterialUniforms(bool specular, bool vertexKd)
+// per vertex is a variable that the stage sets before lighting, and so are
+// kd and ka where this stage multiplies them by a texel (phong's), each
+// from its factor.
+std::string MaterialUniforms(bool specular, bool vertexKd, bool texelKd, bool texelKa)
 {
-  std::string s = std::string("uniform vec3 shadelabKa;\n") +
-    (vertexKd ? "vec3 shadelabKd; // per vertex\n" : "uniform vec3 shadelabKd;\n");
+  std::string s = texelKa ? "uniform vec3 shadelabKaFactor;\nvec3 shadelabKa; // per fragment: the "
+                            "factor times the texel\n"
+                          : "uniform vec3 shadelabKa;\n";
+  s += vertexKd ? "vec3 shadelabKd; // per vertex\n"
+    : texelKd   ? "uniform vec3 shadelabKdFactor;\nvec3 shadelabKd; // per fragment: the factor "
+                  "times the texel\n"
+                : "uniform vec3 shadelabKd;\n";
   if (specular)
   {
     s += R"glsl(uniform vec3 shadelabKs;
@@ -162,7 +169,7 @@ const char* const AllFeaturesLightLoopSource = R"glsl(  for (int i = 0; i < shad
 // AllFeaturesMaxLights of them.
 std::string AllFeaturesIlluminateSource(bool vertexKd)
 {
-  return MaterialUniforms(true, vertexKd) +
+  return MaterialUniforms(true, vertexKd, false, false) +
     FillGlsl(R"glsl(uniform int shadelabReflection;
 uniform int shadelabLightCount;
 uniform int shadelabLightKind[$];
@@ -175,8 +182,10 @@ uniform int shadelabLightKind[$];
 // The uniforms and constants of the per-scene code: only what its lights use.
 std::string DeclarationsSource(const ShaderFeatures& f)
 {
+  const bool fragmentTexel = f.Rule == Shading::Phong;
   std::string s = "// shadelab: the lecture's illumination model (shadelabShadingOracle.cxx)\n" +
-    MaterialUniforms(f.Specular, f.VertexKd);
+    MaterialUniforms(
+      f.Specular, f.VertexKd, fragmentTexel && f.KdTexture, fragmentTexel && f.KaTexture);
   if (!f.Lights.empty())
   {
     s += LightUniforms(f.Lights.size(), HasPositions(f), HasDirections(f), Has(f, LightKind::Spot));
@@ -208,8 +217,9 @@ const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N -
 }
 )glsl";
 
-// Light i's term, unrolled: its kind's direction, attenuation and guard.
-std::string LightTermSource(size_t i, LightKind kind, bool specular)
+// Light i's term, unrolled: its kind's direction, attenuation and guard;
+// apart, its diffuse and specular parts added to D and S.
+std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
 {
   const std::string index = std::to_string(i);
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
@@ -237,6 +247,25 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular)
       index);
     guard += FillGlsl("cosAngle$ >= shadelabLightCosCutoff[$] && ", index);
   }
+  if (apart)
+  {
+    s += FillGlsl(R"glsl(  NdotL = dot(N, L);
+  if ($NdotL > shadelabGrazingLimit)
+  {
+    D += Il * (NdotL * shadelabKd); // shadelab: diffuse
+)glsl",
+      guard);
+    if (specular)
+    {
+      s += R"glsl(    d = shadelabSpecularD(N, L, V); // shadelab: specular
+    if (d >= 0.0)
+    {
+      S += Il * (shadelabSpecularFalloff(d, shadelabNs) * shadelabKs); // shadelab: specular
+    }
+)glsl";
+    }
+    return s + "  }\n";
+  }
   s += FillGlsl(R"glsl(  NdotL = dot(N, L);
   if ($NdotL > shadelabGrazingLimit)
   {
@@ -257,12 +286,25 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular)
 )glsl";
 }
 
-// The per-scene shadelabIlluminate: the lights unrolled, each with the code
-// of its kind only.
-std::string IlluminateFunctionSource(const ShaderFeatures& f)
+// A texel multiplies kd, ka or both per fragment while flat and gouraud
+// light per vertex: the vertex stage keeps the equation's parts apart (the
+// oracle's counterpart: MultiplyByTexel in shadelabTriangleFragment.cxx).
+const char* const IlluminateApartHeadSource = R"glsl(
+// The equation's parts, for the fragment to multiply by its texel:
+// D = sum_l Il*kd*max(N.L, 0), S = sum_l Il*S_l (ka*Ia is the fragment's).
+void shadelabIlluminateApart(vec3 P, vec3 N, out vec3 D, out vec3 S)
 {
-  std::string s = "\n// I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l], N unit.\n" +
-    std::string(IlluminateHeadSource);
+  D = vec3(0.0);
+  S = vec3(0.0);
+)glsl";
+
+// The per-scene shadelabIlluminate (or, apart, shadelabIlluminateApart):
+// the lights unrolled, each with the code of its kind only.
+std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
+{
+  std::string s = apart ? std::string(IlluminateApartHeadSource)
+                        : "\n// I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l], N unit.\n" +
+      std::string(IlluminateHeadSource);
   if (!f.Lights.empty())
   {
     s += ViewDirectionSource;
@@ -283,11 +325,11 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f)
   }
   for (size_t i = 0; i < f.Lights.size(); ++i)
   {
-    s += LightTermSource(i, f.Lights[i], f.Specular);
+    s += LightTermSource(i, f.Lights[i], f.Specular, apart);
   }
-  return s + R"glsl(  return I;
+  return s + (apart ? "}\n" : R"glsl(  return I;
 }
-)glsl";
+)glsl");
 }
 }
 
@@ -303,6 +345,6 @@ std::string IlluminateSource(const ShaderFeatures& f)
     s += SpecularFalloffSource + std::string(SpecularDHeadSource) +
       (f.Model == Reflection::BlinnPhong ? BlinnPhongSpecularDBody : PhongSpecularDBody);
   }
-  return s + IlluminateFunctionSource(f);
+  return s + IlluminateFunctionSource(f, f.Rule != Shading::Phong && f.Textured());
 }
 }

@@ -26,11 +26,29 @@ struct ShaderFeatures
   // vertex that lights uses its own (gouraud; flat's provoking vertex), phong
   // and none interpolate it to the fragment.
   bool VertexKd = false;
+  // kd and/or ka times a texel of the texture (TextureSamplerName) at the
+  // fragment's texture coordinates (TextureCoordinateAttributeName), under
+  // every rule: phong lights with the products; flat and gouraud light
+  // their vertices with the factors, pass the diffuse and specular sums
+  // apart, and the fragment multiplies ka*Ia and the diffuse sum by its
+  // texel (shadelabTriangleFragment.h says why that is the equation).
+  bool KdTexture = false;
+  bool KaTexture = false;
   // The baseline that per-scene generation is measured against: one program
   // with every light kind, specular, and both reflection models, chosen by
   // uniforms at run time, for up to AllFeaturesMaxLights lights.
+  // It has no texture code.
   bool AllFeatures = false;
 
+  bool Textured() const { return this->KdTexture || this->KaTexture; }
+  /**
+   * The code looks a texel up (and reads the texture coordinates): a
+   * texture for kd, or for ka under a rule that lights; never AllFeatures.
+   */
+  bool ReadsTexel() const
+  {
+    return !this->AllFeatures && (this->Rule == Shading::None ? this->KdTexture : this->Textured());
+  }
   bool operator==(const ShaderFeatures& other) const;
 };
 
@@ -55,6 +73,9 @@ extern const char* const FaceNormalArrayName;
 extern const char* const FaceNormalAttributeName;
 /** The vertex attribute (RGBA, alpha unused) that VertexKd reads. */
 extern const char* const VertexKdAttributeName;
+/** The vertex attribute (s, t) and the sampler that KdTexture and KaTexture read. */
+extern const char* const TextureCoordinateAttributeName;
+extern const char* const TextureSamplerName;
 /**
  * The comment that ends each generated line computing a term of the
  * equation, followed by the terms' names, comma-separated ("ambient",

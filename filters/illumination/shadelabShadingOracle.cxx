@@ -7,10 +7,6 @@ namespace shadelab
 {
 namespace
 {
-Rgb Mul(const Rgb& a, const Rgb& b)
-{
-  return { a[0] * b[0], a[1] * b[1], a[2] * b[2] };
-}
 // Below this length a normal or a direction is taken as undefined.
 constexpr double TinyLength = 1e-20;
 // An interpolated normal shorter than this falls back to the geometric one.
@@ -94,12 +90,12 @@ LightTerms LightTermsAt(const IlluminationInputs& in, const FrameLight& light, c
   t.Specular = t.Lit && d >= 0;
   if (t.Lit)
   {
-    t.DiffuseTerm = Mul(t.Il, t.NdotL * m.Kd);
+    t.DiffuseTerm = t.Il * (t.NdotL * m.Kd);
   }
   if (t.Specular)
   {
     t.Power = SpecularFalloff(d, m.Ns);
-    t.SpecularTerm = Mul(t.Il, t.Power * m.Ks);
+    t.SpecularTerm = t.Il * (t.Power * m.Ks);
   }
   return t;
 }
@@ -158,7 +154,7 @@ IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, c
   IlluminationTerms terms;
   terms.P = P;
   terms.N = N;
-  terms.Ambient = Mul(in.Surface.Ka, in.Ambient);
+  terms.Ambient = in.Surface.Ka * in.Ambient;
   terms.V = -in.ViewDirection;
   if (!in.Orthographic)
   {

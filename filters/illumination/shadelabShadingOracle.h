@@ -10,6 +10,7 @@
 #define shadelabShadingOracle_h
 
 #include "shadelabIllumination.h"
+#include "shadelabTexture.h"
 
 #include <vector>
 
@@ -30,6 +31,9 @@ struct FrameLight
 struct IlluminationInputs
 {
   Material Surface;
+  // kd and/or ka times a texel, looked up per fragment under every rule
+  // (ShadeTriangleFragment): Surface's are the factors.
+  SurfaceTexture Texture;
   Rgb Ambient{}; // Ia
   std::vector<FrameLight> Lights;
   Reflection Model = Reflection::BlinnPhong;

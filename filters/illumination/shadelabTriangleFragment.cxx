@@ -11,6 +11,23 @@ T Mix(const std::array<double, 3>& w, Get get)
 {
   return w[0] * get(0) + w[1] * get(1) + w[2] * get(2);
 }
+
+// The terms of a vertex-lit rule with ka and kd times the texel: the
+// ambient term and every light's diffuse term.
+void MultiplyByTexel(IlluminationTerms& terms, const SurfaceTexture& texture, const Rgb& texel)
+{
+  if (texture.Ka)
+  {
+    terms.Ambient = terms.Ambient * texel;
+  }
+  for (LightTerms& light : terms.Lights)
+  {
+    if (texture.Kd)
+    {
+      light.DiffuseTerm = light.DiffuseTerm * texel;
+    }
+  }
+}
 }
 
 IlluminationTerms MixTerms(
@@ -66,7 +83,21 @@ ShadedFragment ShadeTriangleFragment(
   {
     in.Surface.Kd = Mix<Rgb>(w, [&](int k) { return (*f.VertexKd)[k]; });
   }
-  s.Kd = in.Surface.Kd;
+  const SurfaceTexture& texture = material.Texture;
+  if (texture.Used())
+  {
+    const auto& st = f.TexCoords;
+    s.TexCoord = { Mix<double>(w, [&](int k) { return st[k][0]; }),
+      Mix<double>(w, [&](int k) { return st[k][1]; }) };
+    s.Texel = SampleTexture(texture.Map, (*s.TexCoord)[0], (*s.TexCoord)[1]);
+  }
+  const Rgb factorKd = in.Surface.Kd;
+  if (s.Texel && rule != Shading::Flat && rule != Shading::Gouraud)
+  {
+    in.Surface.Kd = texture.Kd ? in.Surface.Kd * *s.Texel : in.Surface.Kd;
+    in.Surface.Ka = texture.Ka ? in.Surface.Ka * *s.Texel : in.Surface.Ka;
+  }
+  s.Kd = s.Texel && texture.Kd ? factorKd * *s.Texel : factorKd;
   switch (rule)
   {
     case Shading::None:
@@ -74,6 +105,10 @@ ShadedFragment ShadeTriangleFragment(
       return s;
     case Shading::Flat:
       s.Terms = ShadeFlat(in, P[0], P[1], P[2], f.Front);
+      if (s.Texel)
+      {
+        MultiplyByTexel(s.Terms, texture, *s.Texel);
+      }
       break;
     case Shading::Gouraud:
       for (int k = 0; k < 3; ++k)
@@ -81,6 +116,12 @@ ShadedFragment ShadeTriangleFragment(
         s.Vertices[k] = ShadeVertex(atVertex(k), P[k], f.Normals[k], f.Front);
       }
       s.Terms = MixTerms(s.Vertices, w);
+      if (s.Texel)
+      {
+        MultiplyByTexel(s.Terms, texture, *s.Texel);
+        s.Color = s.Terms.Total();
+        return s;
+      }
       s.Color = Mix<Rgb>(w, [&](int k) { return s.Vertices[k].Total(); });
       return s;
     case Shading::Phong:

@@ -23,6 +23,8 @@ struct TriangleFragment
   bool Front = true; // the triangle faces the viewer (counter-clockwise on the screen)
   // kd per vertex (the mesh's colours), instead of the material's.
   std::optional<std::array<Rgb, 3>> VertexKd;
+  // The vertices' texture coordinates (s, t), read where the inputs have a texture.
+  std::array<std::array<double, 2>, 3> TexCoords{};
 };
 
 /** The fragment as its rule shades it. */
@@ -30,8 +32,13 @@ struct ShadedFragment
 {
   Rgb Color{}; // the rule's value: the oracle's intensity of the fragment
   // The kd that lit: the material's, or from VertexKd flat's provoking
-  // vertex's and the others' the weights' mix (gouraud lit each vertex with its own).
+  // vertex's and the others' the weights' mix (gouraud lit each vertex with its own);
+  // times Texel where the texture is kd's.
   Rgb Kd{};
+  // With a texture: the texture coordinates at the fragment (the weights'
+  // mix) and the texel there, which kd and/or ka are multiplied by.
+  std::optional<std::array<double, 2>> TexCoord;
+  std::optional<Rgb> Texel;
   Vec3 Point{};      // the fragment on the surface: the weights' mix of the positions
   Vec3 FaceNormal{}; // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
   // phong: the interpolated normal was too short, so the face normal lit.
@@ -50,7 +57,13 @@ struct ShadedFragment
  * the interpolated normal, falling back to the face normal turned towards
  * the viewer. Back faces light with their normals flipped. With VertexKd,
  * each vertex that lights uses its own kd (flat the provoking vertex's),
- * none and phong the weights' mix of them.
+ * none and phong the weights' mix of them. With a texture, every rule looks
+ * it up per fragment, at the weights' mix of the texture coordinates: none
+ * and phong light with kd and ka times the texel; flat and gouraud light
+ * their vertices with the factors alone and multiply the ambient and the
+ * diffuse terms they give (mixed, for gouraud) by the texel. The equation is
+ * linear in kd and ka, so that is the equation with kd and ka textured
+ * where the rule evaluates it, the texture itself seen per fragment.
  */
 ShadedFragment ShadeTriangleFragment(
   const IlluminationInputs& in, Shading rule, const TriangleFragment& f);

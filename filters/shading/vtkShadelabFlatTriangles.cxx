@@ -4,6 +4,8 @@
 #include "shadelabTriangleMesh.h"
 
 #include <array>
+#include <utility>
+#include <vector>
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -40,14 +42,20 @@ int vtkShadelabFlatTriangles::RequestData(
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(3 * triangles);
 
-  vtkDataArray* colors = input->GetPointData()->GetArray(shadelab::ColorsArrayName);
-  vtkSmartPointer<vtkDataArray> cornerColors;
-  if (colors)
+  // What the rules read per vertex besides the normal: kd from the colours,
+  // the texture coordinates; each corner takes its vertex's.
+  std::vector<std::pair<vtkDataArray*, vtkSmartPointer<vtkDataArray>>> carried;
+  for (const char* name : { shadelab::ColorsArrayName, shadelab::TextureCoordinatesArrayName })
   {
-    cornerColors.TakeReference(colors->NewInstance());
-    cornerColors->SetName(shadelab::ColorsArrayName);
-    cornerColors->SetNumberOfComponents(colors->GetNumberOfComponents());
-    cornerColors->SetNumberOfTuples(3 * triangles);
+    if (vtkDataArray* array = input->GetPointData()->GetArray(name))
+    {
+      vtkSmartPointer<vtkDataArray> corners;
+      corners.TakeReference(array->NewInstance());
+      corners->SetName(name);
+      corners->SetNumberOfComponents(array->GetNumberOfComponents());
+      corners->SetNumberOfTuples(3 * triangles);
+      carried.emplace_back(array, corners);
+    }
   }
 
   vtkIdType npts = 0;
@@ -60,9 +68,9 @@ int vtkShadelabFlatTriangles::RequestData(
     {
       input->GetPoint(ids[k], p[k]);
       points->SetPoint(next + k, p[k]);
-      if (colors)
+      for (auto& [array, corners] : carried)
       {
-        cornerColors->SetTuple(next + k, ids[k], colors);
+        corners->SetTuple(next + k, ids[k], array);
       }
     }
     double e1[3], e2[3], n[3];
@@ -97,9 +105,9 @@ int vtkShadelabFlatTriangles::RequestData(
   output->SetPoints(points);
   output->SetPolys(cells);
   output->GetPointData()->AddArray(normals);
-  if (colors)
+  for (auto& [array, corners] : carried)
   {
-    output->GetPointData()->AddArray(cornerColors);
+    output->GetPointData()->AddArray(corners);
   }
   return 1;
 }

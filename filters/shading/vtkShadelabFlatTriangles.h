@@ -8,7 +8,8 @@
  * three points, in the cell's order (the last one provokes), and the point
  * array shadelabFaceNormal holds the unit normal of (p1 - p0) x (p2 - p0),
  * computed in double; (0,0,0) for a degenerate triangle. The vertex colours
- * ("Colors", per-vertex kd) go along, each point with its corner's; no other
+ * ("Colors", per-vertex kd) and the texture coordinates ("TextureCoordinates",
+ * looked up per fragment) go along, each point with its corner's; no other
  * arrays.
  */
 #ifndef vtkShadelabFlatTriangles_h

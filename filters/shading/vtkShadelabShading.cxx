@@ -11,6 +11,7 @@
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderProperty.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -18,6 +19,8 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
 
 #include <algorithm>
 #include <array>
@@ -147,6 +150,14 @@ void vtkShadelabShading::SetVertexKd(bool fromColors)
   this->Modified();
 }
 
+void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
+{
+  this->Texture = texture;
+  this->Features.KdTexture = texture.Used() && texture.Kd;
+  this->Features.KaTexture = texture.Used() && texture.Ka;
+  this->Modified();
+}
+
 void vtkShadelabShading::SetAllFeatures(bool all)
 {
   this->Features.AllFeatures = all;
@@ -210,6 +221,17 @@ void vtkShadelabShading::Attach(
       mapper->MapDataArrayToVertexAttribute(
         VertexKdAttributeName, ColorsArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
+    if (this->Features.ReadsTexel())
+    {
+      mapper->MapDataArrayToVertexAttribute(TextureCoordinateAttributeName,
+        TextureCoordinatesArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+  }
+  if (previous && previous->TextureObject &&
+    previous->Texture.Map.Image == this->Texture.Map.Image &&
+    previous->TextureObject->GetContext() == renderer->GetRenderWindow())
+  {
+    this->TextureObject = previous->TextureObject;
   }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
   actor->GetProperty()->LightingOn();
@@ -245,6 +267,12 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   };
   program->SetUniform3f("shadelabKa", toFloat(this->Surface.Ka).data());
   program->SetUniform3f("shadelabKd", toFloat(this->Surface.Kd).data());
+  if (this->Features.ReadsTexel())
+  {
+    program->SetUniform3f("shadelabKaFactor", toFloat(this->Surface.Ka).data());
+    program->SetUniform3f("shadelabKdFactor", toFloat(this->Surface.Kd).data());
+    this->BindTexture(program);
+  }
   program->SetUniform3f("shadelabKs", toFloat(this->Surface.Ks).data());
   program->SetUniformf("shadelabNs", static_cast<float>(this->Surface.Ns));
   program->SetUniform3f("shadelabIa", toFloat(this->Ambient).data());
@@ -309,6 +337,39 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   }
 }
 
+void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
+  const TextureMap& map = this->Texture.Map;
+  if (!this->TextureObject || this->TextureObject->GetContext() != window)
+  {
+    this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
+    this->TextureObject->SetContext(window);
+    // 32-bit float texels: the decoded image as it is, no 8-bit rounding.
+    this->TextureObject->SetInternalFormat(GL_RGB32F);
+    this->TextureObject->Create2DFromRaw(map.Image->Width, map.Image->Height, 3, VTK_FLOAT,
+      const_cast<float*>(map.Image->Pixels.data()));
+  }
+  // The sampler's settings at every draw: a texture taken over from the
+  // shading before (the same image) may have had others. The object sends
+  // them to OpenGL when they changed.
+  const auto wrap = [](TextureWrap w)
+  {
+    return w == TextureWrap::Clamp ? vtkTextureObject::ClampToEdge
+      : w == TextureWrap::Mirror   ? vtkTextureObject::MirroredRepeat
+                                   : vtkTextureObject::Repeat;
+  };
+  const int filter =
+    map.Filter == TextureFilter::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
+  this->TextureObject->SetWrapS(wrap(map.WrapS));
+  this->TextureObject->SetWrapT(wrap(map.WrapT));
+  this->TextureObject->SetMinificationFilter(filter);
+  this->TextureObject->SetMagnificationFilter(filter);
+  // Kept active (its unit reserved) while the shading draws.
+  this->TextureObject->Activate();
+  program->SetUniformi(TextureSamplerName, this->TextureObject->GetTextureUnit());
+}
+
 void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -317,4 +378,6 @@ void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lights: " << this->Lights.size() << "\n";
   os << indent << "Specular: " << this->Features.Specular << "\n";
   os << indent << "VertexKd: " << this->Features.VertexKd << "\n";
+  os << indent << "KdTexture: " << this->Features.KdTexture << "\n";
+  os << indent << "KaTexture: " << this->Features.KaTexture << "\n";
 }

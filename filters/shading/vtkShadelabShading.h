@@ -28,6 +28,7 @@ class vtkCallbackCommand;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkTextureObject;
 
 class vtkShadelabShading : public vtkObject
 {
@@ -52,6 +53,15 @@ public:
    * "Colors") instead of the material (ShaderFeatures::VertexKd).
    */
   void SetVertexKd(bool fromColors);
+
+  /**
+   * kd and/or ka times a texel of texture.Map at the mesh's texture
+   * coordinates (point data "TextureCoordinates"), per fragment under every
+   * rule (ShaderFeatures::KdTexture, KaTexture); the material's kd and ka are
+   * the factors. The image goes to OpenGL as a float texture with the map's
+   * wrap and filter, once per image and render window.
+   */
+  void SetTexture(const shadelab::SurfaceTexture& texture);
 
   ///@{
   /**
@@ -105,12 +115,17 @@ private:
   void operator=(const vtkShadelabShading&) = delete;
 
   void SetUniforms(vtkShaderProgram* program);
+  void BindTexture(vtkShaderProgram* program);
   void AddLight(const shadelab::Light& light);
 
   shadelab::ShaderFeatures Features;
   shadelab::Material Surface;
   shadelab::Rgb Ambient{};
   std::vector<shadelab::Light> Lights;
+  shadelab::SurfaceTexture Texture;
+  // Texture.Map in OpenGL, made at the first draw; a shading that takes over
+  // an actor takes this over too when its image and window are the same.
+  vtkSmartPointer<vtkTextureObject> TextureObject;
   // Not owned, and either may go first (a Python script drops its actor
   // before its shading): weak, so that neither is used once gone.
   vtkWeakPointer<vtkActor> Actor; // its mapper holds the observer

@@ -183,6 +183,29 @@ Image ReadCurrent(OIIO::ImageInput& in, int subimage)
 }
 }
 
+void WriteImage(const std::filesystem::path& path, int width, int height,
+  const std::vector<float>& rgb, const std::string& type)
+{
+  // A failure shows as the test's picture missing: shadelab names the file.
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (out && out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc(type))))
+  {
+    out->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
+    out->close();
+  }
+}
+
+void WriteImage8(
+  const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb)
+{
+  std::vector<float> values;
+  for (unsigned char v : rgb)
+  {
+    values.push_back(v / 255.0f);
+  }
+  WriteImage(path, width, height, values, "uint8");
+}
+
 Image ReadImage(const std::filesystem::path& path)
 {
   auto in = OIIO::ImageInput::open(path.string());

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -88,6 +89,7 @@ struct Mesh
   std::vector<Vec3> Normals;   // per vertex, float-exact (what the reader keeps)
   std::vector<shadelab::TriangleCorners> Triangles; // draw order; the third is the provoking vertex
   std::vector<std::array<int, 3>> Colors;           // per vertex, 0..255, or empty
+  std::vector<std::array<double, 2>> TexCoords;     // per vertex (s, t), float-exact
 };
 
 struct GridSpec
@@ -125,6 +127,51 @@ inline std::array<int, 3> GridColor(int i, int j)
   return { red[(i + j) % 3], green[(2 * i + j) % 3], blue[(i + 2 * j) % 3] };
 }
 
+// The texture coordinates at (x, y): s over [-0.25, 1.25] and t over
+// [-0.125, 1.125], so that every wrap mode shows beyond [0, 1]; float-exact.
+inline std::array<double, 2> TexCoordAt(double x, double y)
+{
+  return { static_cast<float>(0.75 * (x + 1) - 0.25), static_cast<float>(0.625 * (y + 1) - 0.125) };
+}
+
+// The test's texture: 4 x 4 texels of 8-bit sRGB, top row first as files
+// store them; no two alike and no symmetry, so a flipped, transposed or
+// shifted lookup shows.
+constexpr int TextureSide = 4;
+inline std::vector<unsigned char> TextureBytes()
+{
+  std::vector<unsigned char> rgb;
+  for (int row = 0; row < TextureSide; ++row)
+  {
+    for (int column = 0; column < TextureSide; ++column)
+    {
+      rgb.push_back(static_cast<unsigned char>(30 + 60 * column + 10 * row));
+      rgb.push_back(static_cast<unsigned char>(220 - 50 * row - 5 * column));
+      rgb.push_back(static_cast<unsigned char>(40 + 45 * ((column + 2 * row) % 4)));
+    }
+  }
+  return rgb;
+}
+
+// What the program should make of it: linear values by the sRGB standard
+// (IEC 61966-2-1), the file's bottom row first (t = 0 at the bottom).
+inline shadelab::TextureImage ExpectedTexture()
+{
+  const std::vector<unsigned char> bytes = TextureBytes();
+  shadelab::TextureImage image;
+  image.Width = image.Height = TextureSide;
+  for (int row = TextureSide - 1; row >= 0; --row)
+  {
+    for (int i = 0; i < 3 * TextureSide; ++i)
+    {
+      const double v = bytes[3 * TextureSide * row + i] / 255.0;
+      image.Pixels.push_back(
+        static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4)));
+    }
+  }
+  return image;
+}
+
 // The vertex normal at (x, y), before rounding to float.
 inline Vec3 GridNormal(const GridSpec& g, double x, double y)
 {
@@ -158,6 +205,7 @@ inline Mesh Grid(const GridSpec& g)
         c = static_cast<float>(c); // the OBJ reader keeps normals as float
       }
       m.Normals.push_back(normal);
+      m.TexCoords.push_back(TexCoordAt(x, y));
       if (g.VertexColors)
       {
         m.Colors.push_back(GridColor(i, j));
@@ -200,6 +248,7 @@ inline Mesh Grid(const GridSpec& g)
     }
     m.Positions.push_back(p);
     m.Normals.push_back(normal);
+    m.TexCoords.push_back(TexCoordAt(p[0], p[1]));
     if (g.VertexColors)
     {
       m.Colors.push_back({ 128, 128, 128 });
@@ -301,6 +350,12 @@ struct Scene
   // reader keeps float). Empty: one material, Surface, given as options.
   // Plain grids only (no slivers or degenerate triangles).
   std::vector<Material> Parts;
+  // --texture: TextureBytes() as an 8-bit PNG on the grid's TexCoordAt, the
+  // mesh written as an OFF with texture coordinates; kd and ka are the
+  // material's (given as --kd, --ka) times the texel.
+  bool Textured = false;
+  shadelab::TextureWrap Wrap = shadelab::TextureWrap::Repeat;
+  shadelab::TextureFilter Filter = shadelab::TextureFilter::Bilinear;
 
   /** kd comes from the mesh's vertex colours. */
   bool VertexKd() const { return this->Geometry.VertexColors && !this->OverrideKd; }
@@ -433,15 +488,36 @@ inline std::string PlyText(const Scene& s, const Mesh& m)
   return ply.str();
 }
 
+// An OFF with normals and texture coordinates (STNOFF): what the grid is
+// when it has a texture.
+inline std::string OffText(const Scene& s, const Mesh& m)
+{
+  std::ostringstream off;
+  off << "STNOFF\n" << m.Positions.size() << " " << m.Triangles.size() << " 0\n";
+  for (std::size_t v = 0; v < m.Positions.size(); ++v)
+  {
+    const Vec3 w = s.World(m.Positions[v]);
+    const Vec3& n = m.Normals[v];
+    off << Num(w[0]) << " " << Num(w[1]) << " " << Num(w[2]) << " " << Num(n[0]) << " " << Num(n[1])
+        << " " << Num(n[2]) << " " << Num(m.TexCoords[v][0]) << " " << Num(m.TexCoords[v][1])
+        << "\n";
+  }
+  for (const auto& t : m.Triangles)
+  {
+    off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  }
+  return off.str();
+}
+
 // Renders the scene with `shadelab render`; every setting is passed
 // explicitly, lights included (shadelab's default is a light at the camera).
 inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
 {
   const bool ply = s.Geometry.VertexColors;
-  const auto mesh = dir / (ply ? "mesh.ply" : "mesh.obj");
+  const auto mesh = dir / (ply ? "mesh.ply" : s.Textured ? "mesh.off" : "mesh.obj");
   const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
   const Mesh m = Grid(s.Geometry);
-  WriteText(mesh, ply ? PlyText(s, m) : ObjText(s, m));
+  WriteText(mesh, ply ? PlyText(s, m) : s.Textured ? OffText(s, m) : ObjText(s, m));
   if (!s.Parts.empty())
   {
     WriteText(dir / "mesh.mtl", MtlText(s));
@@ -461,6 +537,14 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   if (s.Parts.empty() ? !s.VertexKd() : s.OverrideKd)
   {
     args.insert(args.end(), { "--kd", Triple(s.Surface.Kd) });
+  }
+  if (s.Textured)
+  {
+    const auto texture = dir / "texture.png";
+    WriteImage8(texture, TextureSide, TextureSide, TextureBytes());
+    args.insert(args.end(),
+      { "--texture", texture.string(), "--texture-wrap", ToString(s.Wrap), "--texture-filter",
+        ToString(s.Filter) });
   }
   for (const Light& l : WorldLights(s))
   {
@@ -498,6 +582,7 @@ struct Expected
   // or for flat the provoking vertex), with which normal (unit, facing the
   // viewer; gouraud: the vertices' mixed), and each light's terms.
   shadelab::IlluminationTerms Terms;
+  std::array<double, 2> TexCoord{}; // with a texture: where it was looked up
 };
 
 // The pixels of a scene as the oracle sees them: the library's rays through
@@ -518,6 +603,14 @@ public:
     for (const Light& l : WorldLights(s))
     {
       this->In.Lights.push_back(shadelab::ToFrame(l));
+    }
+    if (s.Textured)
+    {
+      shadelab::SurfaceTexture& t = this->In.Texture;
+      t.Map.Image = std::make_shared<shadelab::TextureImage>(ExpectedTexture());
+      t.Map.WrapS = t.Map.WrapT = s.Wrap;
+      t.Map.Filter = s.Filter;
+      t.Kd = t.Ka = true;
     }
   }
 
@@ -590,27 +683,36 @@ private:
   // Values within rounding of 0 (float normals: 3e-8) count as 0, so that a
   // light in the surface's plane is compared (it is a case of its own), not
   // skipped; a real crossing moves by 1e-6/0.005 = 2e-4 pixel for it.
-  static std::vector<bool> Switches(const Expected& at)
+  // With a nearest texture, the texel looked up switches too (its index
+  // here, unwrapped: wrapping changes no boundary).
+  std::vector<long long> Switches(const Expected& at) const
   {
     constexpr double Rounding = 1e-6;
-    std::vector<bool> on;
+    std::vector<long long> on;
     for (const shadelab::LightTerms& t : at.Terms.Lights)
     {
       on.push_back(t.Reaches);
       on.push_back(t.NdotL > Rounding);
       on.push_back(t.Base > Rounding);
     }
+    if (this->S.Textured && this->S.Filter == shadelab::TextureFilter::Nearest)
+    {
+      on.push_back(static_cast<long long>(std::floor(at.TexCoord[0] * TextureSide)));
+      on.push_back(static_cast<long long>(std::floor(at.TexCoord[1] * TextureSide)));
+    }
     return on;
   }
 
-  // Per-fragment lighting only (phong; flat and gouraud decide at vertices):
+  // Per-fragment lighting (phong; flat and gouraud decide at vertices) and
+  // nearest texels (every rule):
   // whether one of the switches above changes within EdgeMargin pixels of
   // picture point (x, y) on triangle t, found on a ring of that radius (the
   // switching curves bend over many pixels, so one passing this close cuts
   // the ring).
   bool NearSwitch(int t, bool front, double x, double y) const
   {
-    if (this->S.Rule != Shading::Phong)
+    if (this->S.Rule != Shading::Phong &&
+      !(this->S.Textured && this->S.Filter == shadelab::TextureFilter::Nearest))
     {
       return false;
     }
@@ -624,7 +726,7 @@ private:
       this->Shade(t, h.Weights, front, at);
       return Switches(at);
     };
-    const std::vector<bool> centre = switches(x, y);
+    const std::vector<long long> centre = switches(x, y);
     for (int k = 0; k < 32; ++k)
     {
       const double a = 2 * Pi * k / 32;
@@ -645,6 +747,7 @@ private:
       const auto v = this->M.Triangles[t][k];
       f.Positions[k] = this->Triangles.GetPoints()[v];
       f.Normals[k] = this->M.Normals[v];
+      f.TexCoords[k] = this->M.TexCoords[v];
     }
     f.Weights = w;
     f.Front = front;
@@ -666,6 +769,7 @@ private:
     const shadelab::ShadedFragment shaded = shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
     e.Terms = shaded.Terms;
+    e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});
   }
 
   const Scene& S;
@@ -825,7 +929,8 @@ inline Deviation Compare(
           d.WorstY = y;
         }
       }
-      if (s.Rule == Shading::Flat && !s.EightBit)
+      // A texture varies per fragment under flat too.
+      if (s.Rule == Shading::Flat && !s.EightBit && !s.Textured)
       {
         const auto [first, added] = flatColour.emplace(e.Triangle, got);
         if (!added && first->second != got && d.FlatDifferent++ == 0)

@@ -39,6 +39,10 @@ std::vector<std::string> WithMesh(const TempDir& dir, const std::string& name,
 const std::string Tetrahedron =
   "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
+// Two triangles with normals and texture coordinates (OFF's ST and N).
+const std::string TexturedQuad = "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n"
+                                 "1 1 0 0 0 1 1 1\n0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n";
+
 std::string BinaryPlyHeader(const std::string& counts)
 {
   return "ply\nformat binary_little_endian 1.0\n" + counts +
@@ -303,6 +307,37 @@ const BadCase Cases[] = {
       return std::vector<std::string>{ (d / "huge.stl").string(), "-o", "OUT" };
     },
     1, { "huge.stl", "is 102400 MiB; reading it needs more than the", "MiB of memory available" } },
+  // --texture: the image named with its problem, and a mesh without texture
+  // coordinates named with the contract's words.
+  { "TextureMissing",
+    [](const TempDir& d) {
+      return WithMesh(d, "st.off", TexturedQuad, { "--texture", (d / "nope.png").string() });
+    },
+    1, { "nope.png", "No such file" } },
+  { "TextureUnreadable",
+    [](const TempDir& d)
+    {
+      WriteText(d / "text.png", "not a picture\n");
+      return WithMesh(d, "st.off", TexturedQuad, { "--texture", (d / "text.png").string() });
+    },
+    1, { "text.png", "not an image OpenImageIO can read" } },
+  { "TextureOnMeshWithoutCoordinates",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "one.png", 1, 1, { 255, 128, 0 });
+      return WithMesh(d, "t.obj", Tetrahedron, { "--texture", (d / "one.png").string() });
+    },
+    1, { "t.obj: --texture needs texture coordinates, and the mesh has none" } },
+  { "TextureWrapUnknown",
+    [](const TempDir& d) {
+      return WithMesh(d, "st.off", TexturedQuad, { "--texture-wrap", "wobble" });
+    },
+    2, { "--texture-wrap", "wobble" } },
+  { "TextureFilterUnknown",
+    [](const TempDir& d) {
+      return WithMesh(d, "st.off", TexturedQuad, { "--texture-filter", "trilinear" });
+    },
+    2, { "--texture-filter", "trilinear" } },
 };
 
 class BadInput : public testing::TestWithParam<BadCase>

@@ -27,10 +27,11 @@ struct Dumped
   std::string Vertex, Fragment;
 };
 
-Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::string> extra)
+Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::string> extra,
+  const std::filesystem::path& mesh = TestMesh("cow.obj"))
 {
-  std::vector<std::string> args = { "render", TestMesh("cow.obj").string(), "-o",
-    (dir / "cow.png").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() };
+  std::vector<std::string> args = { "render", mesh.string(), "-o", (dir / "cow.png").string(),
+    "--size", "48x48", "--dump-shaders", (dir / "glsl").string() };
   args.insert(args.end(), extra.begin(), extra.end());
   const RunResult r = RunShadelab(args);
   EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
@@ -93,4 +94,33 @@ TEST(GeneratedShaders, NoneDrawsOneColourWithoutNormals)
   EXPECT_TRUE(Contains(d.Fragment, "fragOutput0 = vec4(shadelabKd, 1.0);"));
   EXPECT_FALSE(Contains(d.Fragment, "shadelabIlluminate"));
   EXPECT_FALSE(Contains(d.Vertex, "normalMC"));
+}
+
+TEST(GeneratedShaders, TextureCodeOnlyWithATexture)
+{
+  TempDir dir;
+  const auto mesh = dir / "square.off";
+  WriteText(mesh,
+    "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n"
+    "0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n");
+  WriteImage8(dir / "one.png", 1, 1, { 200, 100, 50 });
+  for (const char* rule : { "none", "flat", "gouraud", "phong" })
+  {
+    SCOPED_TRACE(rule);
+    const std::string name = std::string(rule) + "-blinn";
+    const Dumped plain = Render(dir, name, { "--shading", rule }, mesh);
+    EXPECT_FALSE(Contains(plain.Fragment + plain.Vertex, "shadelabTexture"));
+    EXPECT_FALSE(Contains(plain.Fragment + plain.Vertex, "shadelabTCoord"));
+    const Dumped textured =
+      Render(dir, name, { "--shading", rule, "--texture", (dir / "one.png").string() }, mesh);
+    EXPECT_TRUE(Contains(textured.Fragment, "uniform sampler2D shadelabTexture;"));
+    EXPECT_TRUE(Contains(textured.Fragment,
+      "vec3 shadelabTexel = texture(shadelabTexture, shadelabTCoordVSOutput).rgb;"));
+    EXPECT_TRUE(Contains(textured.Vertex, "shadelabTCoordVSOutput = shadelabTCoord;"));
+    // Flat and gouraud light per vertex with the sums apart; the fragment
+    // multiplies by its texel.
+    const bool vertexLit = std::string(rule) == "flat" || std::string(rule) == "gouraud";
+    EXPECT_EQ(Contains(textured.Vertex, "shadelabIlluminateApart("), vertexLit);
+    EXPECT_EQ(Contains(textured.Fragment, "shadelabTexel * shadelabDiffuse"), vertexLit);
+  }
 }

@@ -350,6 +350,70 @@ TEST(Probe, NoneIsKdUnlit)
   EXPECT_FALSE(p[0].contains("lights") || p[0].contains("ambient"));
 }
 
+// A texture: the probe gives where it was looked up and the texel, the kd
+// that lit is the texel (--texture alone: factor 1), and the render agrees.
+TEST(Probe, TexelIsTheKdThatLit)
+{
+  TempDir dir;
+  // A unit square with (s, t) = (x, y); the 2 x 2 image's bottom left texel
+  // is 8-bit (255, 128, 0), linear (1, 0.2158605, 0) by the sRGB standard.
+  WriteText(dir / "square.off",
+    "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n"
+    "0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n");
+  WriteImage8(dir / "four.png", 2, 2, { 0, 0, 255, 255, 255, 255, 255, 128, 0, 0, 255, 0 });
+  for (Shading rule : { Shading::None, Shading::Phong })
+  {
+    SCOPED_TRACE(ToString(rule));
+    std::string error;
+    // Pixel (26, 30) of the 64x48 picture lies in the square's bottom left quarter.
+    const std::vector<json> p =
+      Probe({ (dir / "square.off").string(), "--size", "64x48", "--shading", ToString(rule),
+              "--texture", (dir / "four.png").string(), "--texture-filter", "nearest" },
+        { { 26, 30 } }, error);
+    ASSERT_EQ(error, "");
+    ASSERT_TRUE(p.at(0).at("hit").get<bool>());
+    const auto st = p[0].at("texture_coordinates");
+    EXPECT_LT(st.at(0).get<double>(), 0.5);
+    EXPECT_LT(st.at(1).get<double>(), 0.5);
+    EXPECT_EQ(p[0].at("kd_from"), "texture");
+    ExpectNear(Vec(p[0].at("texel")), { 1, 0.2158605, 0 }, 1e-6, "texel");
+    ExpectNear(Vec(p[0].at("kd")), Vec(p[0].at("texel")), 0, "kd");
+    ExpectNear(Vec(p[0].at("rendered")), Vec(p[0].at("oracle")), 1e-5, "rendered");
+  }
+}
+
+// The colour rules of the texture decoding: 8-bit is sRGB, decoded to
+// linear; 16-bit and float are linear unless the file says otherwise, and
+// OpenImageIO says sRGB of every PNG without a gAMA chunk, 16-bit ones too.
+TEST(Probe, TexelsAreLinearAsTheFileSays)
+{
+  TempDir dir;
+  WriteText(dir / "square.off",
+    "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n"
+    "0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n");
+  const auto srgb = [](double v) { return std::pow((v + 0.055) / 1.055, 2.4); };
+  const double v8 = 128 / 255.0, v16 = 32768 / 65535.0;
+  const struct
+  {
+    const char* File;
+    const char* Type;
+    double Stored, Texel;
+  } cases[] = { { "t8.png", "uint8", v8, srgb(v8) }, { "t16.tif", "uint16", v16, v16 },
+    { "t16.png", "uint16", v16, srgb(v16) }, { "t.exr", "float", 0.5, 0.5 } };
+  for (const auto& c : cases)
+  {
+    SCOPED_TRACE(c.File);
+    const float stored = static_cast<float>(c.Stored);
+    WriteImage(dir / c.File, 1, 1, { stored, stored, stored }, c.Type);
+    std::string error;
+    const std::vector<json> p = Probe({ (dir / "square.off").string(), "--size", "64x48",
+                                        "--shading", "none", "--texture", (dir / c.File).string() },
+      { { 32, 24 } }, error);
+    ASSERT_EQ(error, "");
+    ExpectNear(Vec(p.at(0).at("texel")), { c.Texel, c.Texel, c.Texel }, 1e-6, "texel");
+  }
+}
+
 // Vertex colours are kd: the probe says so and which kd lit (flat the
 // provoking vertex's, the others the weights' mix), each light's diffuse
 // term is that kd's; --kd puts the material's back.

@@ -241,6 +241,24 @@ TEST(SceneSchema, ListsTheNameTablesChoices)
     Names<ViewPreset>());
   EXPECT_EQ(
     shot["camera"]["properties"]["fit"]["enum"].get<std::vector<std::string>>(), Names<FitMode>());
+  EXPECT_EQ(shot["texture_wrap"]["enum"].get<std::vector<std::string>>(), Names<TextureWrap>());
+  EXPECT_EQ(shot["texture_filter"]["enum"].get<std::vector<std::string>>(), Names<TextureFilter>());
+}
+
+// --texture's keys: the image's path relative to the scene file's folder,
+// as the mesh's; a wrong choice names its key.
+TEST_F(SceneFile, TextureKeysAreTheTextureOptions)
+{
+  ASSERT_EQ(Read(R"({ "mesh": "meshes/grid.off", "output": "{index}.png",
+    "texture": "images/checker.png", "texture_wrap": "clamp", "texture_filter": "nearest" })"),
+    "");
+  ASSERT_EQ(this->Shots.size(), 1u);
+  const SceneOptions& o = this->Shots[0].Scene;
+  EXPECT_EQ(o.Texture, (this->Folder / "images" / "checker.png").string());
+  EXPECT_EQ(o.TextureWrapping, TextureWrap::Clamp);
+  EXPECT_EQ(o.TextureFiltering, TextureFilter::Nearest);
+  EXPECT_EQ(Read(R"({ "mesh": "m.off", "output": "o.png", "texture_wrap": "wobble" })"),
+    "texture_wrap: unknown texture wrap \"wobble\" (known: repeat, clamp, mirror)");
 }
 
 TEST(SceneSchema, DescribesExactlyTheKeysTheParserTakes)
@@ -317,6 +335,9 @@ TEST_F(SceneFile, AWrittenSceneReadsBackTheSame)
   s.Computed.Weighting = "area";
   s.Computed.FeatureAngle = 45.5;
   s.Computed.Orient = true;
+  s.Texture = (this->Folder / "meshes" / "spot.png").string();
+  s.TextureWrapping = TextureWrap::Mirror;
+  s.TextureFiltering = TextureFilter::Nearest;
   ASSERT_EQ(Read(WriteSceneText(s, "out.png")), "");
   ASSERT_EQ(this->Shots.size(), 1u);
   EXPECT_EQ(this->Shots[0].Output, "out.png");

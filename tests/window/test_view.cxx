@@ -34,6 +34,42 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 10)) << "the mesh is there";
 }
 
+// The window decodes a texture's image too (through the image writer it
+// starts) and shows it as render does.
+TEST(View, ATextureShowsAsRenderRendersIt)
+{
+  TempDir dir;
+  WriteText(dir / "square.off",
+    "STNOFF\n4 2 0\n-1 -1 0 0 0 1 0 0\n1 -1 0 0 0 1 2 0\n1 1 0 0 0 1 2 2\n"
+    "-1 1 0 0 0 1 0 2\n3 0 1 2\n3 0 2 3\n");
+  std::vector<unsigned char> checker;
+  for (int i = 0; i < 16; ++i)
+  {
+    const bool light = (i % 4 + i / 4) % 2;
+    checker.insert(checker.end(),
+      { static_cast<unsigned char>(light ? 240 : 200), static_cast<unsigned char>(light ? 240 : 30),
+        static_cast<unsigned char>(light ? 240 : 20) });
+  }
+  WriteImage8(dir / "checker.png", 4, 4, checker);
+  const std::vector<std::string> texture{ "--texture", (dir / "checker.png").string(),
+    "--texture-filter", "nearest" };
+  Viewer viewer(
+    texture, std::to_string(W) + "x" + std::to_string(H), RLIM_INFINITY, dir / "square.off");
+  ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
+  const Image shown = viewer.Screenshot();
+  std::vector<std::string> args{ "render", (dir / "square.off").string(), "-o",
+    (dir / "r.png").string(), "--size", std::to_string(W) + "x" + std::to_string(H),
+    "--camera-position", "3.9,1.5,-2.2" };
+  args.insert(args.end(), texture.begin(), texture.end());
+  const RunResult render = RunShadelab(args);
+  ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
+  // As above: the same shaders on the same Mesa, at most 1 step of
+  // rounding; a texture missing or upside down differs by 200 steps.
+  const Change change = Compare(shown, ReadImage(dir / "r.png"), 1);
+  EXPECT_LE(change.Largest, 1);
+  EXPECT_GT(CountCovered(shown), static_cast<size_t>(W * H / 20)) << "the square is there";
+}
+
 // Copy command (key y) and Save scene (key j): the printed `shadelab
 // render` command, and the scene file, rendered headless make the picture
 // the window shows after the camera turned and the rule, reflection,

@@ -80,11 +80,12 @@ int Run(const std::string& command)
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-Viewer::Viewer(const std::vector<std::string>& args, const std::string& size, rlim_t fileSizeLimit)
-  : Title("shadelab - spot.obj")
+Viewer::Viewer(const std::vector<std::string>& args, const std::string& size, rlim_t fileSizeLimit,
+  const std::filesystem::path& mesh)
+  : Title("shadelab - " + mesh.filename().string())
 {
-  std::vector<std::string> words{ SHADELAB_BINARY, "view", TestMesh("spot.obj").string(), "--size",
-    size, "--camera-position", "3.9,1.5,-2.2" };
+  std::vector<std::string> words{ SHADELAB_BINARY, "view", mesh.string(), "--size", size,
+    "--camera-position", "3.9,1.5,-2.2" };
   words.insert(words.end(), args.begin(), args.end());
   this->Pid = fork();
   if (this->Pid == 0)

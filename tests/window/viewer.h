@@ -30,13 +30,14 @@ std::string Slurp(const std::filesystem::path& path);
 int Run(const std::string& command);
 
 // A running `shadelab view MESH ARGS...` in a temporary folder (where its
-// screenshots go), under a file-size limit if one is given.
+// screenshots go), under a file-size limit if one is given; MESH spot.obj
+// unless given.
 class Viewer
 {
 public:
   explicit Viewer(const std::vector<std::string>& args,
     const std::string& size = std::to_string(W) + "x" + std::to_string(H),
-    rlim_t fileSizeLimit = RLIM_INFINITY);
+    rlim_t fileSizeLimit = RLIM_INFINITY, const std::filesystem::path& mesh = TestMesh("spot.obj"));
   ~Viewer();
 
   bool HasWindow() const { return !this->Window.empty(); }

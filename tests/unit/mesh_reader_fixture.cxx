@@ -1,5 +1,7 @@
 #include "mesh_reader_fixture.h"
 
+#include "shadelabMeshReadError.h"
+#include "shadelabMtlParser.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
@@ -179,6 +181,22 @@ void MeshReaders::ExpectError(const fs::path& path, std::initializer_list<const 
   {
     EXPECT_NE(result.Error.find(word), std::string::npos)
       << "'" << word << "' not in: " << result.Error;
+  }
+}
+
+void ExpectMtlErrors(const std::vector<std::pair<std::string, std::string>>& mistakes)
+{
+  for (const auto& [text, message] : mistakes)
+  {
+    try
+    {
+      ParseMtl(text);
+      ADD_FAILURE() << "no error for " << text;
+    }
+    catch (const MeshReadError& e)
+    {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
   }
 }
 }

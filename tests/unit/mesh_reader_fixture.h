@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab::test
@@ -53,6 +54,9 @@ std::array<double, 3> AreaNormal(vtkPolyData* mesh, const std::array<vtkIdType, 
  * point, file vertices at their copies' positions.
  */
 void ExpectTriangleMesh(vtkPolyData* mesh);
+
+/** Each MTL text of `mistakes` fails ParseMtl with exactly its message. */
+void ExpectMtlErrors(const std::vector<std::pair<std::string, std::string>>& mistakes);
 
 /** Appends `value` in the given byte order (host-independent). */
 template <typename T>

@@ -242,8 +242,9 @@ int main(int argc, char** argv)
       return ReportError("render", error);
     }
     // One actor but with --parts, where only ours run.
-    const DrawnParts built =
-      BuildScene(scene, mesh, renderer.GetRenderer(), nullptr, checker).Drawn.front();
+    const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr,
+      SceneImages{
+        checker, {} }).Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

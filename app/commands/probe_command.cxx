@@ -97,7 +97,7 @@ int RunProbe(const ProbeOptions& o)
     return ReportError(picture.Input, picture.Error);
   }
   const PixelProber prober(s, picture.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(),
-    s.Size, picture.Scene->Texture);
+    s.Size, picture.Scene->Images);
   for (std::size_t i = 0; i < o.Pixels.size(); ++i)
   {
     PixelProbe probe = prober.Probe(o.Pixels[i]);

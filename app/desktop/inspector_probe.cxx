@@ -133,7 +133,7 @@ bool Inspector::Reprobe()
   const SceneOptions scene = this->ShownScene();
   if (shown && at.X >= 0 && at.Y >= 0 && at.X < scene.Size.Width && at.Y < scene.Size.Height)
   {
-    const PixelProber prober(scene, shown->Mesh, this->Camera, scene.Size, shown->Texture);
+    const PixelProber prober(scene, shown->Mesh, this->Camera, scene.Size, shown->Images);
     PixelProbe probe = prober.Probe(at);
     // The window's pixel without the arrows over it.
     this->DrawArrows();

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string_view>
 
 namespace shadelab
@@ -113,20 +114,37 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["shading"] = ToString(o.ShadingRule);
   j["reflection"] = ToString(o.ReflectionModel);
   j["material"] = DescribeMaterial(o.EffectiveMaterial());
-  j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors"
-    : o.Texture.empty()                ? "material"
-                                       : "texture";
+  const std::vector<ScenePart> sceneParts = SceneParts(o, mesh);
+  const bool texturedKd = std::any_of(
+    sceneParts.begin(), sceneParts.end(), [](const ScenePart& part) { return part.Texture.Kd; });
+  j["kd_from"] = UsesVertexKd(o, mesh) ? "vertex colors" : texturedKd ? "texture" : "material";
   if (!o.Texture.empty())
   {
     j["texture"] = { { "image", o.Texture }, { "wrap", ToString(o.TextureWrapping) },
       { "filter", ToString(o.TextureFiltering) } };
   }
   auto parts = nlohmann::ordered_json::array();
-  for (const ScenePart& part : SceneParts(o, mesh))
+  for (const ScenePart& part : sceneParts)
   {
-    parts.push_back({ { "index", part.Index }, { "name", part.Name },
+    nlohmann::ordered_json described{ { "index", part.Index }, { "name", part.Name },
       { "triangles", part.Triangles }, { "material", DescribeMaterial(part.Surface) },
-      { "source", ToString(part.Source) }, { "overridden", part.Overridden } });
+      { "source", ToString(part.Source) }, { "overridden", part.Overridden } };
+    const SurfaceTexture& t = part.Texture;
+    if (t.Kd || t.Ka)
+    {
+      auto maps = nlohmann::ordered_json::array();
+      for (const auto& [name, used] : { std::pair{ "kd", t.Kd }, std::pair{ "ka", t.Ka } })
+      {
+        if (used)
+        {
+          maps.push_back(name);
+        }
+      }
+      described["texture"] = { { "image", part.ImageName }, { "maps", maps },
+        { "wrap", { ToString(t.Map.WrapS), ToString(t.Map.WrapT) } },
+        { "filter", ToString(t.Map.Filter) } };
+    }
+    parts.push_back(described);
   }
   j["parts"] = parts;
   j["ambient"] = o.Ambient;

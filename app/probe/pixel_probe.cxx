@@ -9,6 +9,8 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+
 namespace shadelab
 {
 namespace
@@ -42,7 +44,7 @@ std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
 }
 
 PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
-  ImageSize size, std::shared_ptr<const TextureImage> texture)
+  ImageSize size, const SceneImages& images)
   : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))
 {
   Vec3 eye;
@@ -52,13 +54,13 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Rule = options.ShadingRule;
   s.Model = options.ReflectionModel;
   s.Surface = options.EffectiveMaterial();
-  this->Parts = SceneParts(options, mesh);
+  this->Parts = SceneParts(options, mesh, images);
   this->CellParts = PartOfCells(mesh);
   s.Ia = options.Ambient;
   s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
   s.Background = options.Background;
   s.Orthographic = camera->GetParallelProjection();
-  this->In = WorldIllumination(options, s.Lights, std::move(texture));
+  this->In = WorldIllumination(options, s.Lights);
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
@@ -76,7 +78,9 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
     }
   }
   vtkDataArray* coordinates = mesh->GetPointData()->GetArray(TextureCoordinatesArrayName);
-  if (this->In.Texture.Used() && coordinates)
+  if (coordinates &&
+    std::any_of(this->Parts.begin(), this->Parts.end(),
+      [](const ScenePart& part) { return part.Texture.Used(); }))
   {
     s.Textured = true;
     this->TexCoords.resize(coordinates->GetNumberOfTuples());
@@ -133,8 +137,10 @@ PixelProbe PixelProber::Probe(Pixel at) const
   p.PartName = part.Name;
   p.Source = part.Source;
   p.Surface = part.Surface;
+  p.Textured = p.Textured && part.Texture.Used();
   IlluminationInputs in = this->In;
   in.Surface = part.Surface;
+  in.Texture = part.Texture;
   p.Shaded = ShadeTriangleFragment(in, p.Rule, p.Fragment);
   return p;
 }

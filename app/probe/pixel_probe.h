@@ -62,11 +62,11 @@ public:
   /**
    * `mesh` is the mesh as read (BuiltScene::Mesh: triangles, with the
    * vertex normals the rule uses), `camera` the renderer's after the scene
-   * was built, `size` the picture's, `texture` --texture's image
-   * (BuiltScene::Texture): what `render` draws for options.
+   * was built, `size` the picture's, `images` its textures' images
+   * (BuiltScene::Images): what `render` draws for options.
    */
   PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size,
-    std::shared_ptr<const TextureImage> texture = nullptr);
+    const SceneImages& images = {});
 
   /** The pixel explained; its Rendered value left at 0. */
   PixelProbe Probe(Pixel at) const;

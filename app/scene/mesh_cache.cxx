@@ -15,14 +15,15 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
   return cached->second;
 }
 
-const LoadedTexture& MeshCache::GetTexture(const std::string& path)
+const LoadedTexture& MeshCache::GetTexture(
+  const std::string& path, const std::vector<std::uint8_t>& bytes)
 {
   auto cached = this->Textures.find(path);
   if (cached == this->Textures.end())
   {
     LoadedTexture loaded;
     auto image = std::make_shared<TextureImage>();
-    loaded.Error = this->Decoder(path, {}, *image);
+    loaded.Error = this->Decoder(path, bytes, *image);
     if (loaded.Error.empty())
     {
       loaded.Image = image;

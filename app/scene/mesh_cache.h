@@ -46,8 +46,13 @@ public:
    */
   const LoadedMesh& Get(const SceneOptions& options);
 
-  /** The image file at path, decoded the first time; the reference stays valid. */
-  const LoadedTexture& GetTexture(const std::string& path);
+  /**
+   * The image file at path or, where bytes are given, the image they
+   * encode (a mesh file's embedded one, path naming it), decoded the first
+   * time it is asked for by that name; the reference stays valid.
+   */
+  const LoadedTexture& GetTexture(
+    const std::string& path, const std::vector<std::uint8_t>& bytes = {});
 
 private:
   ImageDecoder Decoder;

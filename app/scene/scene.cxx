@@ -1,7 +1,6 @@
 #include "scene/scene.h"
 
 #include "scene/camera.h"
-#include "scene/scene_parts.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
 
@@ -35,26 +34,10 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
-SurfaceTexture SceneTexture(
-  const SceneOptions& options, std::shared_ptr<const TextureImage> texture)
-{
-  SurfaceTexture t;
-  if (!options.Texture.empty() && texture)
-  {
-    t.Map.Image = std::move(texture);
-    t.Map.WrapS = t.Map.WrapT = options.TextureWrapping;
-    t.Map.Filter = options.TextureFiltering;
-    t.Kd = t.Ka = true;
-  }
-  return t;
-}
-
-IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights,
-  std::shared_ptr<const TextureImage> texture)
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
 {
   IlluminationInputs in;
   in.Surface = options.EffectiveMaterial();
-  in.Texture = SceneTexture(options, std::move(texture));
   in.Ambient = options.Ambient;
   in.Model = options.ReflectionModel;
   for (const Light& light : lights)
@@ -65,7 +48,7 @@ IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vec
 }
 
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
-  const BuiltScene* reuse, std::shared_ptr<const TextureImage> texture)
+  const BuiltScene* reuse, const SceneImages& images)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -82,39 +65,44 @@ BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRendere
   renderer->ResetCameraClippingRange(bounds);
   Vec3 eye;
   camera->GetPosition(eye.data());
-  return BuildActor(
-    options, EffectiveLights(options, eye), mesh, renderer, reuse, std::move(texture));
+  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse, images);
 }
 
 namespace
 {
-bool SameCoefficients(const Material& a, const Material& b)
+// Whether two parts are drawn alike: the same coefficients and texture.
+bool SameLook(const ScenePart& a, const ScenePart& b)
 {
-  return a.Ka == b.Ka && a.Kd == b.Kd && a.Ks == b.Ks && a.Ns == b.Ns;
+  const Material &m = a.Surface, &n = b.Surface;
+  const SurfaceTexture &t = a.Texture, &u = b.Texture;
+  return m.Ka == n.Ka && m.Kd == n.Kd && m.Ks == n.Ks && m.Ns == n.Ns && t.Kd == u.Kd &&
+    t.Ka == u.Ka && t.Map.Image == u.Map.Image && t.Map.WrapS == u.Map.WrapS &&
+    t.Map.WrapT == u.Map.WrapT && t.Map.Filter == u.Map.Filter;
 }
 
-// The parts with triangles, grouped by the material they are drawn with:
-// one actor per material, so that parts without their own share the default.
-std::vector<std::vector<int>> PartsByMaterial(const std::vector<ScenePart>& parts)
+// The parts with triangles, grouped by the material and texture they are
+// drawn with: one actor per look, so that parts without their own material
+// share the default.
+std::vector<std::vector<int>> PartsByLook(const std::vector<ScenePart>& parts)
 {
   std::vector<std::vector<int>> groups;
-  std::vector<const Material*> materials;
+  std::vector<const ScenePart*> looks;
   for (const ScenePart& part : parts)
   {
     if (part.Triangles == 0)
     {
       continue;
     }
-    const auto same = std::find_if(materials.begin(), materials.end(),
-      [&part](const Material* m) { return SameCoefficients(*m, part.Surface); });
-    if (same == materials.end())
+    const auto same = std::find_if(
+      looks.begin(), looks.end(), [&part](const ScenePart* p) { return SameLook(*p, part); });
+    if (same == looks.end())
     {
-      materials.push_back(&part.Surface);
+      looks.push_back(&part);
       groups.push_back({ part.Index });
     }
     else
     {
-      groups[same - materials.begin()].push_back(part.Index);
+      groups[same - looks.begin()].push_back(part.Index);
     }
   }
   if (groups.empty())
@@ -126,20 +114,18 @@ std::vector<std::vector<int>> PartsByMaterial(const std::vector<ScenePart>& part
 }
 
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
-  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse,
-  std::shared_ptr<const TextureImage> texture)
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse, const SceneImages& images)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
-  const std::vector<ScenePart> parts = SceneParts(options, mesh);
-  const std::vector<std::vector<int>> groups = PartsByMaterial(parts);
+  const std::vector<ScenePart> parts = SceneParts(options, mesh, images);
+  const std::vector<std::vector<int>> groups = PartsByLook(parts);
   // The same mesh, rule and grouping: every actor keeps its buffers and program.
   const bool takeOver = reuse && reuse->Mesh == mesh && !reuse->Drawn.empty() &&
     reuse->Drawn.front().Shading->GetFeatures().Rule == options.ShadingRule &&
     std::equal(groups.begin(), groups.end(), reuse->Drawn.begin(), reuse->Drawn.end(),
       [](const std::vector<int>& group, const DrawnParts& drawn) { return group == drawn.Parts; });
-  scene.Texture = texture;
-  const SurfaceTexture surfaceTexture = SceneTexture(options, std::move(texture));
+  scene.Images = images;
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     DrawnParts drawn;
@@ -148,7 +134,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
       parts[drawn.Parts.front()].Surface, options.Ambient, lights);
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
-    drawn.Shading->SetTexture(surfaceTexture);
+    drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

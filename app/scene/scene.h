@@ -4,11 +4,11 @@
 #define shadelab_scene_h
 
 #include "core/options.h"
+#include "scene/scene_parts.h"
 #include "shadelabShadingOracle.h"
 
 #include <vtkSmartPointer.h>
 
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,9 +20,9 @@ class vtkShadelabShading;
 namespace shadelab
 {
 /**
- * An actor of a scene: the mesh's parts that one material draws (all of them
- * when they share it), with the shading, which must live as long as the
- * actor draws.
+ * An actor of a scene: the mesh's parts that one material and texture
+ * draw (all of them when they share them), with the shading, which must
+ * live as long as the actor draws.
  */
 struct DrawnParts
 {
@@ -34,40 +34,34 @@ struct DrawnParts
 /** What a built scene is made of. */
 struct BuiltScene
 {
-  // One per material the parts are drawn with, in the order of their first
-  // part: a mesh with one part or none, or one material for all, has one.
+  // One per material and texture the parts are drawn with, in the order of
+  // their first part: a mesh with one part or none, or one look for all,
+  // has one.
   std::vector<DrawnParts> Drawn;
-  std::string Error;                           // an impossible scene (camera), else empty
-  vtkPolyData* Mesh = nullptr;                 // what the actors draw, before the rule prepared it
-  std::shared_ptr<const TextureImage> Texture; // --texture's image, decoded, or null
+  std::string Error;           // an impossible scene (camera), else empty
+  vtkPolyData* Mesh = nullptr; // what the actors draw, before the rule prepared it
+  SceneImages Images;          // its textures' images, decoded
 };
 
 /**
  * Fills renderer with mesh as options describe, lit by the lecture's
- * shaders, each part with its material (scene/scene_parts.h); `texture`,
- * options.Texture decoded, where it gives one. With `reuse`, a scene built
+ * shaders, each part with its material and texture (scene/scene_parts.h),
+ * their images decoded in `images`. With `reuse`, a scene built
  * before that drew the same mesh with the same rule and the same parts
  * together, its actors are taken over (their mappers keep the uploaded
  * buffers; only the lighting changes).
  */
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
-  const BuiltScene* reuse = nullptr, std::shared_ptr<const TextureImage> texture = nullptr);
+  const BuiltScene* reuse = nullptr, const SceneImages& images = {});
 
 /**
  * The actor part of BuildScene: mesh lit as options say by `lights` (world
- * coordinates), under the renderer's camera as it is; `reuse` and `texture`
+ * coordinates), under the renderer's camera as it is; `reuse` and `images`
  * as there.
  */
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
   vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr,
-  std::shared_ptr<const TextureImage> texture = nullptr);
-
-/**
- * What --texture makes of texture (options.Texture decoded): kd and ka
- * both, with options' wrap and filter; nothing used without it.
- */
-SurfaceTexture SceneTexture(
-  const SceneOptions& options, std::shared_ptr<const TextureImage> texture);
+  const SceneImages& images = {});
 
 /**
  * Whether mesh's vertex colours are its kd: it has them ("Colors") and
@@ -80,12 +74,10 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
 
 /**
  * The oracle's inputs for options' scene lit by `lights`, in world
- * coordinates: Ia, reflection model, texture (SceneTexture) and the
- * options' material (a part's own is the caller's to set); the view is the
- * caller's.
+ * coordinates: Ia, reflection model and the options' material (a part's
+ * own, and its texture, are the caller's to set); the view is the caller's.
  */
-IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights,
-  std::shared_ptr<const TextureImage> texture = nullptr);
+IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights);
 }
 
 #endif

@@ -1,5 +1,6 @@
 #include "scene/scene_cache.h"
 
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
 
@@ -25,7 +26,7 @@ SceneCache::Shown SceneCache::Show(
     return shown;
   }
   shown.Mesh = &loaded;
-  std::shared_ptr<const TextureImage> texture;
+  SceneImages images;
   if (!options.Texture.empty())
   {
     const LoadedTexture& image = this->Meshes->GetTexture(options.Texture);
@@ -41,13 +42,31 @@ SceneCache::Shown SceneCache::Show(
       shown.Error = "--texture needs texture coordinates, and the mesh has none";
       return shown;
     }
-    texture = image.Image;
+    images.Option = image.Image;
+  }
+  // The images of the file's textures that its parts draw, each decoded once.
+  const std::vector<Texture> textures = MeshTextures(loaded.Mesh);
+  images.File.resize(textures.size());
+  for (const ScenePart& part : SceneParts(options, loaded.Mesh))
+  {
+    if (part.FileTexture >= 0 && !images.File[part.FileTexture])
+    {
+      const LoadedTexture& image =
+        this->Meshes->GetTexture(part.ImageName, textures[part.FileTexture].Bytes);
+      if (!image.Image)
+      {
+        shown.Input = part.ImageName;
+        shown.Error = image.Error;
+        return shown;
+      }
+      images.File[part.FileTexture] = image.Image;
+    }
   }
   const Key key{ options.ShadingRule, loaded.Mesh.GetPointer() };
   const auto before = this->Scenes.find(key);
   const BuiltScene* reuse = before == this->Scenes.end() ? nullptr : &before->second;
-  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse, texture)
-                            : BuildScene(options, loaded.Mesh, renderer, reuse, texture);
+  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse, images)
+                            : BuildScene(options, loaded.Mesh, renderer, reuse, images);
   if (!scene.Error.empty())
   {
     shown.Input = "camera";

@@ -31,6 +31,50 @@ std::array<double, N> FieldTuple(vtkFieldData* field, const char* name, vtkIdTyp
   }
   return values;
 }
+
+int FieldInt(vtkFieldData* field, const char* name, vtkIdType p)
+{
+  auto* array = vtkIntArray::SafeDownCast(field->GetArray(name));
+  return array && p < array->GetNumberOfValues() ? array->GetValue(p) : -1;
+}
+
+// The part's texture: --texture's on every part, else the file's kd and ka
+// textures of a part with its own material (kdTexture, kaTexture: indices
+// into `textures`, -1 for none), less those that --kd and --ka drop.
+void SetTexture(const SceneOptions& options, const std::vector<Texture>& textures,
+  const SceneImages& images, int kdTexture, int kaTexture, ScenePart& part)
+{
+  SurfaceTexture& t = part.Texture;
+  if (!options.Texture.empty())
+  {
+    t.Map.Image = images.Option;
+    t.Map.WrapS = t.Map.WrapT = options.TextureWrapping;
+    t.Map.Filter = options.TextureFiltering;
+    t.Kd = t.Ka = true;
+    part.ImageName = options.Texture;
+    return;
+  }
+  const int count = static_cast<int>(textures.size());
+  const int kd = options.Kd || kdTexture >= count ? -1 : kdTexture;
+  const int ka = options.Ka || kaTexture >= count ? -1 : kaTexture;
+  const int drawn = kd >= 0 ? kd : ka;
+  if (drawn < 0)
+  {
+    return;
+  }
+  const Texture& file = textures[drawn];
+  t.Map.Image = drawn < static_cast<int>(images.File.size()) ? images.File[drawn] : nullptr;
+  t.Map.WrapS = WrapFromGL(file.WrapS).value_or(TextureWrap::Repeat);
+  t.Map.WrapT = WrapFromGL(file.WrapT).value_or(TextureWrap::Repeat);
+  // One filter without mipmaps (shadelabTexture.h): the magnification one,
+  // since a close view shows it and minification aliases either way.
+  t.Map.Filter = FilterFromGL(file.MagFilter).value_or(TextureFilter::Bilinear);
+  t.Kd = kd == drawn;
+  t.Ka = ka == drawn;
+  part.FileTexture = drawn;
+  part.ImageName =
+    file.Source.empty() ? options.Mesh + " (texture " + std::to_string(drawn) + ")" : file.Source;
+}
 }
 
 std::vector<int> PartOfCells(vtkPolyData* mesh)
@@ -46,7 +90,8 @@ std::vector<int> PartOfCells(vtkPolyData* mesh)
   return parts;
 }
 
-std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh)
+std::vector<ScenePart> SceneParts(
+  const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images)
 {
   const std::vector<int> cells = PartOfCells(mesh);
   vtkFieldData* field = mesh->GetFieldData();
@@ -61,6 +106,10 @@ std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh
   const std::pair<const char*, bool> overrides[] = { { "ka", options.Ka.has_value() },
     { "kd", options.Kd.has_value() }, { "ks", options.Ks.has_value() },
     { "ns", options.Ns.has_value() } };
+  // A file's textures need its texture coordinates: without them none is drawn.
+  const std::vector<Texture> textures = mesh->GetPointData()->GetArray(TextureCoordinatesArrayName)
+    ? MeshTextures(mesh)
+    : std::vector<Texture>{};
   std::vector<ScenePart> parts(count);
   for (int p = 0; p < count; ++p)
   {
@@ -90,6 +139,10 @@ std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh
         part.Overridden.push_back(name);
       }
     }
+    const bool fileTextures = own && !options.MaterialGiven;
+    SetTexture(options, textures, images,
+      fileTextures ? FieldInt(field, PartKdTextureArrayName, p) : -1,
+      fileTextures ? FieldInt(field, PartKaTextureArrayName, p) : -1, part);
     if (part.Overridden.size() == std::size(overrides))
     {
       part.Source = MaterialSource::Option; // nothing of the file's or the default's is left

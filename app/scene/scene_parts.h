@@ -3,7 +3,9 @@
 // drawn with: the file's, unless the options override it (--material
 // replaces every part's whole material, --ka/--kd/--ks/--ns that
 // coefficient of every part); a part without a material of its own gets the
-// options' material, as a mesh without parts does.
+// options' material, as a mesh without parts does. Likewise its texture:
+// the file's kd and ka textures unless --material, --kd or --ka drop them,
+// --texture's image on every part where given.
 #ifndef shadelab_scene_parts_h
 #define shadelab_scene_parts_h
 
@@ -12,6 +14,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,13 +48,31 @@ struct ScenePart
   Material Surface;        // what it is lit with, the overrides applied
   MaterialSource Source = MaterialSource::Default;
   std::vector<std::string> Overridden; // the coefficients options replaced: "ka", "kd", "ks", "ns"
+  // What multiplies its kd and ka: --texture's image, the file's or none;
+  // the map's image is null where SceneParts was not given the images.
+  SurfaceTexture Texture;
+  std::string ImageName; // the texture's image file, "MESH (texture I)" for an embedded one
+  int FileTexture = -1;  // the mesh file's texture drawn (MeshTextures' index), else -1
+};
+
+/**
+ * The decoded images of a scene's textures: --texture's, and the mesh
+ * file's by MeshTextures' index (null where no part draws it).
+ */
+struct SceneImages
+{
+  std::shared_ptr<const TextureImage> Option;
+  std::vector<std::shared_ptr<const TextureImage>> File;
 };
 
 /**
  * mesh's parts as options draw them, by index: one for a mesh without parts
- * (its triangles all of part 0).
+ * (its triangles all of part 0). A part's texture takes its image from
+ * `images`. One map per part: where a part's kd and ka textures differ,
+ * kd's is drawn and ka is its factor alone.
  */
-std::vector<ScenePart> SceneParts(const SceneOptions& options, vtkPolyData* mesh);
+std::vector<ScenePart> SceneParts(
+  const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images = {});
 
 /** The part of each of mesh's cells, by cell index: all 0 for a mesh without parts. */
 std::vector<int> PartOfCells(vtkPolyData* mesh);

@@ -124,4 +124,31 @@ void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles)
   }
   AddArrays(triangles, { sources, wrapS, wrapT, magFilter, minFilter });
 }
+
+std::vector<Texture> MeshTextures(vtkPolyData* mesh)
+{
+  vtkFieldData* field = mesh->GetFieldData();
+  auto* sources = vtkStringArray::SafeDownCast(field->GetAbstractArray(TextureSourcesArrayName));
+  std::vector<Texture> textures(sources ? sources->GetNumberOfValues() : 0);
+  const auto sampler = [field](const char* name, vtkIdType i, int fallback)
+  {
+    auto* values = vtkIntArray::SafeDownCast(field->GetArray(name));
+    return values && i < values->GetNumberOfValues() ? values->GetValue(i) : fallback;
+  };
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(textures.size()); ++i)
+  {
+    Texture& texture = textures[i];
+    texture.Source = sources->GetValue(i);
+    texture.WrapS = sampler(TextureWrapSArrayName, i, gl::Repeat);
+    texture.WrapT = sampler(TextureWrapTArrayName, i, gl::Repeat);
+    texture.MagFilter = sampler(TextureMagFilterArrayName, i, gl::Linear);
+    texture.MinFilter = sampler(TextureMinFilterArrayName, i, gl::Linear);
+    const std::string bytesName = TextureBytesArrayPrefix + std::to_string(i);
+    if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(field->GetArray(bytesName.c_str())))
+    {
+      texture.Bytes.assign(bytes->GetPointer(0), bytes->GetPointer(0) + bytes->GetNumberOfValues());
+    }
+  }
+  return textures;
+}
 }

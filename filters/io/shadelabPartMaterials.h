@@ -114,6 +114,13 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
  * TextureMagFilter and TextureMinFilter; nothing without textures.
  */
 void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles);
+
+/**
+ * The textures that AddTextures added to mesh, read back from its field
+ * data: none without TextureSources; OpenGL's defaults (repeat, linear)
+ * where a sampler array is missing or short.
+ */
+std::vector<Texture> MeshTextures(vtkPolyData* mesh);
 }
 
 #endif

@@ -352,7 +352,10 @@ struct Scene
   std::vector<Material> Parts;
   // --texture: TextureBytes() as an 8-bit PNG on the grid's TexCoordAt, the
   // mesh written as an OFF with texture coordinates; kd and ka are the
-  // material's (given as --kd, --ka) times the texel.
+  // material's (given as --kd, --ka) times the texel. With Parts, the
+  // file's own textures instead: the OBJ gets vt, and the MTL gives the
+  // even parts the image as map_Kd and map_Ka (-clamp on for Clamp; OBJ's
+  // textures are bilinear), the odd parts none (TexturedPart).
   bool Textured = false;
   shadelab::TextureWrap Wrap = shadelab::TextureWrap::Repeat;
   shadelab::TextureFilter Filter = shadelab::TextureFilter::Bilinear;
@@ -372,6 +375,30 @@ inline int PartOf(const Scene& s, int t)
   }
   const int cell = t / 2, i = cell % s.Geometry.Cells, j = cell / s.Geometry.Cells;
   return (i + 2 * j) % static_cast<int>(s.Parts.size());
+}
+
+// Three parts' materials, one without specular; exact in float.
+inline std::vector<Material> ThreeParts()
+{
+  Material first, second, third;
+  first.Ka = { 0.25, 0.125, 0.0625 };
+  first.Kd = { 0.75, 0.5, 0.25 };
+  first.Ks = { 0.5, 0.5, 0.5 };
+  first.Ns = 32;
+  second.Ka = { 0.0625, 0.125, 0.25 };
+  second.Kd = { 0.125, 0.375, 0.75 };
+  second.Ks = { 0.25, 0.5, 0.75 };
+  second.Ns = 8;
+  third.Ka = { 0.125, 0.25, 0.125 };
+  third.Kd = { 0.5, 0.75, 0.375 };
+  third.Ns = 1;
+  return { first, second, third };
+}
+
+// Whether triangle t's kd and ka are textured.
+inline bool TexturedPart(const Scene& s, int t)
+{
+  return s.Textured && (s.Parts.empty() || PartOf(s, t) % 2 == 0);
 }
 
 // The material triangle t is lit with.
@@ -425,6 +452,11 @@ inline std::string MtlText(const Scene& s)
         << Num(m.Ka[2]) << "\nKd " << Num(m.Kd[0]) << " " << Num(m.Kd[1]) << " " << Num(m.Kd[2])
         << "\nKs " << Num(m.Ks[0]) << " " << Num(m.Ks[1]) << " " << Num(m.Ks[2]) << "\nNs "
         << Num(m.Ns) << "\n";
+    if (s.Textured && k % 2 == 0)
+    {
+      const char* clamp = s.Wrap == shadelab::TextureWrap::Clamp ? "-clamp on " : "";
+      mtl << "map_Kd " << clamp << "texture.png\nmap_Ka " << clamp << "texture.png\n";
+    }
   }
   return mtl.str();
 }
@@ -445,6 +477,13 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
   {
     obj << "vn " << Num(n[0]) << " " << Num(n[1]) << " " << Num(n[2]) << "\n";
   }
+  if (s.Textured)
+  {
+    for (const auto& st : m.TexCoords)
+    {
+      obj << "vt " << Num(st[0]) << " " << Num(st[1]) << "\n";
+    }
+  }
   int part = -1;
   for (std::size_t t = 0; t < m.Triangles.size(); ++t)
   {
@@ -456,7 +495,8 @@ inline std::string ObjText(const Scene& s, const Mesh& m)
     obj << "f";
     for (const auto v : m.Triangles[t])
     {
-      obj << " " << v + 1 << "//" << v + 1;
+      const std::string vt = s.Textured ? std::to_string(v + 1) : "";
+      obj << " " << v + 1 << "/" << vt << "/" << v + 1;
     }
     obj << "\n";
   }
@@ -514,10 +554,11 @@ inline std::string OffText(const Scene& s, const Mesh& m)
 inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
 {
   const bool ply = s.Geometry.VertexColors;
-  const auto mesh = dir / (ply ? "mesh.ply" : s.Textured ? "mesh.off" : "mesh.obj");
+  const bool off = s.Textured && s.Parts.empty(); // --texture's mesh
+  const auto mesh = dir / (ply ? "mesh.ply" : off ? "mesh.off" : "mesh.obj");
   const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
   const Mesh m = Grid(s.Geometry);
-  WriteText(mesh, ply ? PlyText(s, m) : s.Textured ? OffText(s, m) : ObjText(s, m));
+  WriteText(mesh, ply ? PlyText(s, m) : off ? OffText(s, m) : ObjText(s, m));
   if (!s.Parts.empty())
   {
     WriteText(dir / "mesh.mtl", MtlText(s));
@@ -542,9 +583,12 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   {
     const auto texture = dir / "texture.png";
     WriteImage8(texture, TextureSide, TextureSide, TextureBytes());
-    args.insert(args.end(),
-      { "--texture", texture.string(), "--texture-wrap", ToString(s.Wrap), "--texture-filter",
-        ToString(s.Filter) });
+    if (off)
+    {
+      args.insert(args.end(),
+        { "--texture", texture.string(), "--texture-wrap", ToString(s.Wrap), "--texture-filter",
+          ToString(s.Filter) });
+    }
   }
   for (const Light& l : WorldLights(s))
   {
@@ -766,6 +810,10 @@ private:
     }
     IlluminationInputs in = this->In;
     in.Surface = SurfaceOf(this->S, t);
+    if (!TexturedPart(this->S, t))
+    {
+      in.Texture = {};
+    }
     const shadelab::ShadedFragment shaded = shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
     e.Terms = shaded.Terms;

@@ -43,6 +43,11 @@ const std::string Tetrahedron =
 const std::string TexturedQuad = "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n"
                                  "1 1 0 0 0 1 1 1\n0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n";
 
+// A square of two triangles with texture coordinates, of material t in t.mtl.
+const std::string TexturedObj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl t\n"
+                                "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+
 std::string BinaryPlyHeader(const std::string& counts)
 {
   return "ply\nformat binary_little_endian 1.0\n" + counts +
@@ -328,6 +333,41 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--texture", (d / "one.png").string() });
     },
     1, { "t.obj: --texture needs texture coordinates, and the mesh has none" } },
+  // The file's own textures: the image its MTL names, or the one a glTF
+  // holds (named after the mesh), with the problem.
+  { "FileTextureMissing",
+    [](const TempDir& d)
+    {
+      WriteText(d / "t.mtl", "newmtl t\nKd 1 1 1\nmap_Kd nope.png\n");
+      return WithMesh(d, "t.obj", TexturedObj);
+    },
+    1, { "nope.png", "No such file" } },
+  { "FileTextureUnreadable",
+    [](const TempDir& d)
+    {
+      WriteText(d / "text.png", "not a picture\n");
+      WriteText(d / "t.mtl", "newmtl t\nKd 1 1 1\nmap_Kd text.png\n");
+      return WithMesh(d, "t.obj", TexturedObj);
+    },
+    1, { "text.png", "not an image OpenImageIO can read" } },
+  { "FileTextureEmbeddedUnreadable",
+    [](const TempDir& d)
+    {
+      // One triangle with TEXCOORD_0; its image a data URI of "not an image".
+      const float data[15] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1 };
+      WriteText(d / "tri.bin", Binary(data, sizeof data));
+      return WithMesh(d, "embedded.gltf",
+        "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"tri.bin\", "
+        "\"byteLength\": 60}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 60}], "
+        "\"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, "
+        "\"type\": \"VEC3\"}, {\"bufferView\": 0, \"byteOffset\": 36, \"componentType\": "
+        "5126, \"count\": 3, \"type\": \"VEC2\"}], \"meshes\": [{\"primitives\": "
+        "[{\"attributes\": {\"POSITION\": 0, \"TEXCOORD_0\": 1}, \"material\": 0}]}], "
+        "\"materials\": [{\"pbrMetallicRoughness\": {\"baseColorTexture\": {\"index\": "
+        "0}}}], \"textures\": [{\"source\": 0}], \"images\": [{\"uri\": "
+        "\"data:image/png;base64,bm90IGFuIGltYWdl\"}]}");
+    },
+    1, { "embedded.gltf (texture 0)", "embedded image: neither PNG nor JPEG" } },
   { "TextureWrapUnknown",
     [](const TempDir& d) {
       return WithMesh(d, "st.off", TexturedQuad, { "--texture-wrap", "wobble" });

@@ -90,18 +90,6 @@ std::vector<Case> Cases()
   // A mesh of three parts, each with its own material from its MTL file (one
   // without specular), under every rule and both reflection models; --kd
   // replaces the kd of every part and keeps the rest of each.
-  Material first, second, third;
-  first.Ka = { 0.25, 0.125, 0.0625 };
-  first.Kd = { 0.75, 0.5, 0.25 };
-  first.Ks = { 0.5, 0.5, 0.5 };
-  first.Ns = 32;
-  second.Ka = { 0.0625, 0.125, 0.25 };
-  second.Kd = { 0.125, 0.375, 0.75 };
-  second.Ks = { 0.25, 0.5, 0.75 };
-  second.Ns = 8;
-  third.Ka = { 0.125, 0.25, 0.125 };
-  third.Kd = { 0.5, 0.75, 0.375 };
-  third.Ns = 1;
   for (Shading r : LitRules)
   {
     for (Reflection m : { Reflection::BlinnPhong, Reflection::Phong })
@@ -109,19 +97,19 @@ std::vector<Case> Cases()
       Scene s;
       s.Rule = r;
       s.Model = m;
-      s.Parts = { first, second, third };
+      s.Parts = ThreeParts();
       add("parts_" + std::string(ToString(r)) + "_" + ToString(m), s);
     }
     Scene s = coloured;
     s.Rule = r;
-    s.Parts = { first, second, third };
+    s.Parts = ThreeParts();
     s.OverrideKd = true;
     add("parts_kd_overridden_" + std::string(ToString(r)), s);
   }
   {
     Scene s;
     s.Rule = Shading::None;
-    s.Parts = { first, second, third };
+    s.Parts = ThreeParts();
     add("parts_none", s, { 0, 0, true });
   }
 

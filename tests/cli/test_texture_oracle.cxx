@@ -3,7 +3,8 @@
 // coordinates (an OFF) and a 4 x 4 8-bit sRGB image (a PNG) against the
 // double-precision oracle, which looks the texel up as OpenGL defines it
 // (filters/illumination/shadelabTexture.h). Every rule, both filters, every
-// wrap mode; the scenes and the comparison are oracle_scene.h's.
+// wrap mode, and the same image as a mesh file's own texture on some of its
+// parts; the scenes and the comparison are oracle_scene.h's.
 //
 // The tolerance is the standard one (1e-4 relative, oracle_scene.h) with
 // nothing added for the texture. OpenGL lets bilinear filtering compute its
@@ -43,6 +44,21 @@ std::vector<Case> Cases()
         s.Wrap = wrap;
         add(std::string(ToString(r)) + "_" + ToString(filter) + "_" + ToString(wrap), s);
       }
+    }
+  }
+  // The file's own textures, per part: an OBJ of three parts whose MTL
+  // gives parts 0 and 2 the image as map_Kd and map_Ka (Kd, Ka the factors),
+  // part 1 none; repeating and clamped (-clamp on).
+  for (Shading r : { Shading::None, Shading::Flat, Shading::Gouraud, Shading::Phong })
+  {
+    for (TextureWrap wrap : { TextureWrap::Repeat, TextureWrap::Clamp })
+    {
+      Scene s;
+      s.Rule = r;
+      s.Textured = true;
+      s.Parts = ThreeParts();
+      s.Wrap = wrap;
+      add("file_parts_" + std::string(ToString(r)) + "_" + ToString(wrap), s);
     }
   }
   // Several coloured lights of every kind, and the 8-bit picture.

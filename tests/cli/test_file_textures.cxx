@@ -1,0 +1,324 @@
+// The mesh files' own textures drawn, per part: real files (spot-textured.obj
+// with its MTL and PNG, Khronos' BoxTextured as .gltf and .glb) rendered
+// against the oracle under every rule, pixel by pixel through `probe`; a
+// mesh of a textured and an untextured part; which options keep or drop the
+// file's textures, as the picture's metadata lists them.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace shadelab_test;
+using nlohmann::json;
+
+namespace
+{
+using Rgb = std::array<double, 3>;
+
+Rgb Triple(const json& j)
+{
+  return { j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>() };
+}
+
+std::string ReadBytes(const std::filesystem::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+}
+
+// BoxTextured's material has glTF's default metallic factor 1, which the
+// glTF mapping makes kd = ka = 0 (README, "Materials from glTF"): its texture
+// would multiply nothing. The copies written here say metallic 0, so that
+// kd = ka = 1 x texel. The .gltf is copied beside its buffer and image.
+void SetNotMetallic(json& document)
+{
+  document.at("materials").at(0).at("pbrMetallicRoughness")["metallicFactor"] = 0;
+}
+
+std::filesystem::path DielectricGltf(const TempDir& dir)
+{
+  for (const char* file : { "BoxTextured0.bin", "CesiumLogoFlat.png" })
+  {
+    std::filesystem::copy_file(TestMesh(file), dir / file);
+  }
+  json document = json::parse(ReadBytes(TestMesh("box-textured.gltf")));
+  SetNotMetallic(document);
+  WriteText(dir / "box-textured.gltf", document.dump());
+  return dir / "box-textured.gltf";
+}
+
+// The .glb with its JSON chunk rewritten: 12 bytes of header (magic,
+// version, length), the JSON chunk (length, type, text padded with spaces
+// to 4 bytes), the BIN chunk as it was.
+std::filesystem::path DielectricGlb(const TempDir& dir)
+{
+  const std::string glb = ReadBytes(TestMesh("box-textured.glb"));
+  std::uint32_t jsonLength = 0;
+  std::memcpy(&jsonLength, glb.data() + 12, 4);
+  json document = json::parse(glb.substr(20, jsonLength));
+  SetNotMetallic(document);
+  std::string text = document.dump();
+  text.append((4 - text.size() % 4) % 4, ' ');
+  const std::string rest = glb.substr(20 + jsonLength);
+  const std::uint32_t header[5] = { 0x46546C67, 2,
+    static_cast<std::uint32_t>(20 + text.size() + rest.size()),
+    static_cast<std::uint32_t>(text.size()), 0x4E4F534A };
+  WriteText(dir / "box-textured.glb",
+    std::string(reinterpret_cast<const char*>(header), sizeof header) + text + rest);
+  return dir / "box-textured.glb";
+}
+
+// `shadelab probe MESH --json` at every 12th pixel of a 240x240 picture
+// seen from "iso", under `rule`: one JSON object per pixel.
+std::vector<json> ProbeGrid(const std::filesystem::path& mesh, const char* rule)
+{
+  std::vector<std::string> args{ "probe", mesh.string(), "--json", "--shading", rule, "--size",
+    "240x240", "--view", "iso" };
+  for (int y = 4; y < 240; y += 12)
+  {
+    for (int x = 4; x < 240; x += 12)
+    {
+      args.insert(args.end(), { "--pixel", std::to_string(x) + "," + std::to_string(y) });
+    }
+  }
+  const RunResult r = RunShadelab(args);
+  EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+  std::vector<json> probes;
+  std::istringstream lines(r.Stdout);
+  for (std::string line; std::getline(lines, line);)
+  {
+    probes.push_back(json::parse(line));
+  }
+  return probes;
+}
+
+// The pixels probe compared, at least half a pixel inside their triangle
+// (as the oracle tests skip the edges, where the rasteriser and the ray may
+// meet different triangles), each rendered as the oracle lights it within
+// the oracle tests' standard bound (1e-4 relative, floor 0.01;
+// oracle_scene.h's Standard says why) plus `texelSlack` absolute; each
+// kd a texel's (kd_from "texture"), and not all the same texel (so the
+// image is looked up, not one colour of it).
+void ExpectTexturedAsTheOracle(
+  const std::filesystem::path& mesh, double texelSlack, std::size_t atLeast)
+{
+  for (const char* rule : { "none", "flat", "gouraud", "phong" })
+  {
+    std::size_t compared = 0;
+    std::set<std::vector<double>> texels;
+    for (const json& p : ProbeGrid(mesh, rule))
+    {
+      if (!p.at("hit") || p.at("edge_distance").get<double>() < 0.5)
+      {
+        continue;
+      }
+      ++compared;
+      ASSERT_EQ(p.at("kd_from"), "texture") << rule << " " << p.at("pixel");
+      texels.insert(p.at("texel").get<std::vector<double>>());
+      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01) + texelSlack)
+          << mesh.filename() << ", " << rule << ", pixel " << p.at("pixel") << ", channel " << c;
+      }
+    }
+    EXPECT_GE(compared, atLeast) << mesh.filename() << ", " << rule;
+    EXPECT_GT(texels.size(), 1u) << mesh.filename() << ", " << rule;
+  }
+}
+}
+
+// spot's texture coordinates lie in [0, 1]: the standard bound alone.
+TEST(FileTextures, SpotTexturedObjMatchesTheOracleUnderEveryRule)
+{
+  ExpectTexturedAsTheOracle(TestMesh("spot-textured.obj"), 0, 20);
+}
+
+// The box's texture coordinates reach s = 6, where a float's ulp is 4.8e-7:
+// 1e-4 of a texel of the 211-texel logo. Across the logo's sharp edges the
+// texel changes by up to 1 per texel, so each ulp that the interpolated s
+// is off moves the texel by up to 1e-4 and the pixel by that times
+// ka Ia + kd Il (1.2 here): 6e-4 allows about five ulps. The largest
+// deviation measured was 7e-5; a wrong texel (another image, wrap, filter
+// or orientation) is off by tenths.
+TEST(FileTextures, BoxTexturedGltfAndGlbMatchTheOracleUnderEveryRule)
+{
+  const TempDir dir;
+  ExpectTexturedAsTheOracle(DielectricGltf(dir), 6e-4, 100);
+  ExpectTexturedAsTheOracle(DielectricGlb(dir), 6e-4, 100);
+}
+
+namespace
+{
+// The square [-1, 1]^2 of test_parts in two parts: part 0 ("tex", below the
+// diagonal) with map_Kd and map_Ka, part 1 ("plain") without. The texture is
+// one colour, 8-bit sRGB (0.5 linear is 188), so every lookup gives it.
+constexpr const char* TwoPartObj = "mtllib two.mtl\n"
+                                   "v -1 -1 0\nv 1 -1 0\nv -1 1 0\nv 1 1 0\n"
+                                   "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+                                   "usemtl tex\nf 1/1 2/2 3/3\n"
+                                   "usemtl plain\nf 2/2 4/4 3/3\n";
+constexpr const char* TwoPartMtl = "newmtl tex\nKa 0.5 0.5 0.5\nKd 0.5 0.25 1\nKs 0.5 0.5 0.5\n"
+                                   "Ns 16\nmap_Kd tex.png\nmap_Ka tex.png\n"
+                                   "newmtl plain\nKa 0 0 0\nKd 0.75 0.125 0.0625\nKs 0 0 0\nNs 1\n";
+const std::vector<unsigned char> TexRgb{ 188, 188, 188 };
+
+const std::vector<std::string> View{ "--size", "100x100", "--orthographic", "--camera-position",
+  "0,0,5", "--camera-focal-point", "0,0,0", "--camera-view-up", "0,1,0", "--parallel-scale",
+  "1.1" };
+// Pixels well inside each part: (-0.5, -0.5) and (0.5, 0.5).
+constexpr std::array<int, 2> InPart0{ 27, 72 }, InPart1{ 72, 27 };
+
+struct TwoParts
+{
+  TempDir Dir;
+  std::string Obj = (Dir / "two.obj").string();
+  TwoParts()
+  {
+    WriteText(Dir / "two.obj", TwoPartObj);
+    WriteText(Dir / "two.mtl", TwoPartMtl);
+    WriteImage8(Dir / "tex.png", 1, 1, TexRgb);
+  }
+
+  // The parts as the picture's metadata lists them, rendered with options
+  // under `none`, and the picture (a float EXR: kd exactly).
+  Image Render(const std::vector<std::string>& options) const
+  {
+    const auto out = this->Dir / "out.exr";
+    std::vector<std::string> args{ "render", this->Obj, "-o", out.string(), "--shading", "none",
+      "--pixel-type", "float" };
+    args.insert(args.end(), View.begin(), View.end());
+    args.insert(args.end(), options.begin(), options.end());
+    const RunResult r = RunShadelab(args);
+    EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+    return ReadImage(out);
+  }
+};
+
+json PartsOf(const Image& image)
+{
+  return json::parse(image.Description).at("parts");
+}
+
+Rgb At(const Image& image, const std::array<int, 2>& xy)
+{
+  const size_t i = (static_cast<size_t>(xy[1]) * image.Width + xy[0]) * image.Channels;
+  return { image.Pixels[i], image.Pixels[i + 1], image.Pixels[i + 2] };
+}
+
+// 188 of 255 in sRGB, decoded as the texture decoding does (IEC 61966-2-1).
+double TexLinear()
+{
+  const double v = 188 / 255.0;
+  return std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+// Each value of `got` within float's rounding of `want` (the picture is float).
+void ExpectRgb(const Rgb& got, const Rgb& want, const std::string& what)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(got[c], want[c], 1e-6) << what << ", channel " << c;
+  }
+}
+}
+
+// Part 0 is Kd x texel, part 1 its own Kd: under `none` exactly, under the
+// lit rules as the oracle lights each part (probe, the standard bound).
+TEST(FileTextures, TexturedAndUntexturedPartsOfOneMesh)
+{
+  const TwoParts files;
+  const Image none = files.Render({});
+  const double t = TexLinear();
+  ExpectRgb(At(none, InPart0), { 0.5 * t, 0.25 * t, 1 * t }, "part 0");
+  ExpectRgb(At(none, InPart1), { 0.75, 0.125, 0.0625 }, "part 1");
+  for (const char* rule : { "flat", "gouraud", "phong" })
+  {
+    std::vector<std::string> args{ "probe", files.Obj, "--json", "--shading", rule, "--light",
+      "point:0.3,0.2,2", "--pixel", std::to_string(InPart0[0]) + "," + std::to_string(InPart0[1]),
+      "--pixel", std::to_string(InPart1[0]) + "," + std::to_string(InPart1[1]) };
+    args.insert(args.end(), View.begin(), View.end());
+    const RunResult r = RunShadelab(args);
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    std::istringstream lines(r.Stdout);
+    int part = 0;
+    for (std::string line; std::getline(lines, line); ++part)
+    {
+      const json p = json::parse(line);
+      EXPECT_EQ(p.at("part"), part) << rule;
+      EXPECT_EQ(p.at("kd_from"), part == 0 ? "texture" : "material") << rule;
+      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01))
+          << rule << ", part " << part << ", channel " << c;
+      }
+    }
+    EXPECT_EQ(part, 2) << r.Stdout;
+  }
+}
+
+// The metadata lists each part's texture: its image, which of kd and ka it
+// multiplies, its wrap (s, t) and filter; a part without one has none.
+TEST(FileTextures, MetadataListsEachPartsTexture)
+{
+  const TwoParts files;
+  const Image image = files.Render({});
+  const json parts = PartsOf(image);
+  const json& texture = parts.at(0).at("texture");
+  EXPECT_EQ(texture.at("image"), (files.Dir / "tex.png").string());
+  EXPECT_EQ(texture.at("maps"), json({ "kd", "ka" }));
+  EXPECT_EQ(texture.at("wrap"), json({ "repeat", "repeat" }));
+  EXPECT_EQ(texture.at("filter"), "bilinear");
+  EXPECT_FALSE(parts.at(1).contains("texture"));
+  EXPECT_EQ(json::parse(image.Description).at("kd_from"), "texture");
+}
+
+// --material and --kd drop the file's kd texture, --ka its ka texture
+// (they say "this coefficient, everywhere"); --ks keeps both; --texture
+// replaces every part's, over --kd's too.
+TEST(FileTextures, OverridesDropOrReplaceTheFilesTextures)
+{
+  const TwoParts files;
+  const double t = TexLinear();
+
+  const Image kd = files.Render({ "--kd", "0.25,0.5,0.75" });
+  EXPECT_EQ(PartsOf(kd).at(0).at("texture").at("maps"), json({ "ka" }));
+  ExpectRgb(At(kd, InPart0), { 0.25, 0.5, 0.75 }, "--kd: part 0");
+
+  const Image ka = files.Render({ "--ka", "0.25,0.25,0.25" });
+  EXPECT_EQ(PartsOf(ka).at(0).at("texture").at("maps"), json({ "kd" }));
+  ExpectRgb(At(ka, InPart0), { 0.5 * t, 0.25 * t, 1 * t }, "--ka: part 0");
+
+  const Image material = files.Render({ "--material", "gold" });
+  for (const json& part : PartsOf(material))
+  {
+    EXPECT_FALSE(part.contains("texture")) << part;
+  }
+
+  const Image ks = files.Render({ "--ks", "0,0,0" });
+  EXPECT_EQ(PartsOf(ks).at(0).at("texture").at("maps"), json({ "kd", "ka" }));
+  ExpectRgb(At(ks, InPart0), { 0.5 * t, 0.25 * t, 1 * t }, "--ks: part 0");
+
+  WriteImage8(files.Dir / "other.png", 1, 1, { 255, 255, 255 });
+  const Image other =
+    files.Render({ "--texture", (files.Dir / "other.png").string(), "--kd", "0.5,0.5,0.5" });
+  for (const json& part : PartsOf(other))
+  {
+    EXPECT_EQ(part.at("texture").at("image"), (files.Dir / "other.png").string()) << part;
+  }
+  ExpectRgb(At(other, InPart0), { 0.5, 0.5, 0.5 }, "--texture: part 0");
+  ExpectRgb(At(other, InPart1), { 0.5, 0.5, 0.5 }, "--texture: part 1");
+}

@@ -1,7 +1,7 @@
 #include "shadelabPartMaterials.h"
 
 #include <vtkFieldData.h>
-#include <vtkFloatArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -62,7 +62,7 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto kaTextures = IntArray(PartKaTextureArrayName, count);
   const auto coefficients = [count](const char* name, int components)
   {
-    auto array = vtkSmartPointer<vtkFloatArray>::New();
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetName(name);
     array->SetNumberOfComponents(components);
     array->SetNumberOfTuples(count);

@@ -25,10 +25,10 @@ constexpr const char* PartMaterialsArrayName = "PartMaterials";
 /** Field data, one per part: its material's index in the file (int), -1 without one. */
 constexpr const char* PartMaterialIndicesArrayName = "PartMaterialIndices";
 /**
- * Field data, one tuple per part: its material's float ka, kd, ks (3
- * components) and ns (1) (OBJ: from its MTL; glTF: mapped from
- * metallic-roughness, shadelabGLTFMaterial.h); zeros for a part whose index
- * is -1.
+ * Field data, one tuple per part: its material's ka, kd, ks (3 components)
+ * and ns (1) (OBJ: from its MTL; glTF: mapped from metallic-roughness,
+ * shadelabGLTFMaterial.h), double as parsed, so that the picture's metadata
+ * gives the file's own numbers; zeros for a part whose index is -1.
  */
 constexpr const char* PartKaArrayName = "PartKa";
 constexpr const char* PartKdArrayName = "PartKd";

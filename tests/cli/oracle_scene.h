@@ -346,8 +346,8 @@ struct Scene
   bool OverrideKd = false;
   // The grid's cells dealt into parts, each with its material from the MTL
   // file: cell (i, j) is part (i + 2j) % Parts.size(), so that every part
-  // borders the others; the materials' numbers are exact in float (the
-  // reader keeps float). Empty: one material, Surface, given as options.
+  // borders the others; the materials are exact in float (the GPU
+  // draws with float uniforms). Empty: one material, Surface, given as options.
   // Plain grids only (no slivers or degenerate triangles).
   std::vector<Material> Parts;
   // --texture: TextureBytes() as an 8-bit PNG on the grid's TexCoordAt, the

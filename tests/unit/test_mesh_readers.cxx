@@ -543,7 +543,7 @@ TEST_F(MeshReaders, ObjMaterialLibrariesGiveThePartsTheirMaterials)
     }
     return v;
   };
-  EXPECT_EQ(tuple(shadelab::PartKaArrayName, 0), (std::array<double, 3>{ 0.1f, 0.1f, 0.1f }));
+  EXPECT_EQ(tuple(shadelab::PartKaArrayName, 0), (std::array<double, 3>{ 0.1, 0.1, 0.1 }));
   EXPECT_EQ(tuple(shadelab::PartKdArrayName, 0), (std::array<double, 3>{ 1, 0, 0 }));
   EXPECT_EQ(tuple(shadelab::PartKsArrayName, 0), (std::array<double, 3>{ 0.5, 0.25, 0.125 }));
   EXPECT_EQ(tuple(shadelab::PartNsArrayName, 0)[0], 20);

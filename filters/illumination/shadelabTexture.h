@@ -72,15 +72,24 @@ struct TextureMap
   TextureFilter Filter = TextureFilter::Bilinear;
 };
 
-/** What a surface's texture map stands for: kd, ka or both are factor x texel. */
+/**
+ * What a surface's texture map stands for: kd, ka or both are factor x
+ * texel; ks, where Ks is set, is ks + KsScale x (texel - 1), the part
+ * KsScale of ks times the texel (a glTF metal's m B of its ks, README
+ * "Materials from glTF").
+ */
 struct SurfaceTexture
 {
   TextureMap Map;
   bool Kd = false;
   bool Ka = false;
+  bool Ks = false;
+  Rgb KsScale{};
 
-  /** Whether it changes anything: an image for kd or ka. */
-  bool Used() const { return this->Map.Image && (this->Kd || this->Ka); }
+  /** Whether it changes anything: an image for kd, ka or ks. */
+  bool Used() const { return this->Map.Image && (this->Kd || this->Ka || this->Ks); }
+  /** ks at a texel: ks + KsScale (texel - 1) where the texture is ks's, else ks. */
+  Rgb TexelKs(const Rgb& ks, const Rgb& texel) const;
 };
 
 /** The map's value at texture coordinates (s, t), as OpenGL samples it. */

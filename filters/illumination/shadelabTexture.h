@@ -1,9 +1,10 @@
-// Texture maps for the lecture's kd and ka (DESIGN.md, "Meshes in"): an
+// Texture maps for the lecture's kd, ka and ks (DESIGN.md, "Meshes in"): an
 // image of linear RGB, how it wraps and filters, and its lookup as OpenGL
 // defines it (texel centres at (i + 0.5)/size, GL_REPEAT, GL_CLAMP_TO_EDGE
 // and GL_MIRRORED_REPEAT, GL_NEAREST and GL_LINEAR without mipmaps), in
-// double: what the oracle multiplies kd and ka by, and what the shaders are
-// given as a float texture with the same sampler settings.
+// double: what the oracle multiplies kd and ka by (and ks, SurfaceTexture),
+// and what the shaders are given as a float texture with the same sampler
+// settings.
 #ifndef shadelabTexture_h
 #define shadelabTexture_h
 

@@ -130,10 +130,11 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
       { "triangles", part.Triangles }, { "material", DescribeMaterial(part.Surface) },
       { "source", ToString(part.Source) }, { "overridden", part.Overridden } };
     const SurfaceTexture& t = part.Texture;
-    if (t.Kd || t.Ka)
+    if (t.Kd || t.Ka || t.Ks)
     {
       auto maps = nlohmann::ordered_json::array();
-      for (const auto& [name, used] : { std::pair{ "kd", t.Kd }, std::pair{ "ka", t.Ka } })
+      for (const auto& [name, used] :
+        { std::pair{ "kd", t.Kd }, std::pair{ "ka", t.Ka }, std::pair{ "ks", t.Ks } })
       {
         if (used)
         {

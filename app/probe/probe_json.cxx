@@ -102,6 +102,7 @@ ordered_json ProbeJson(const PixelProbe& p)
   {
     j["texture_coordinates"] = *p.Shaded.TexCoord;
     j["texel"] = *p.Shaded.Texel;
+    j["ks"] = *p.Shaded.Ks; // the texel's where it is ks's (a glTF metal's), else the material's
   }
   j["ia"] = p.Ia;
   if (p.Rule == Shading::None)

@@ -178,8 +178,10 @@ std::string ProbeText(const PixelProbe& p)
     const auto& st = *p.Shaded.TexCoord;
     out.Add("",
       "texel = " + ProbeTriple(*p.Shaded.Texel) + " at (s, t) = (" + ProbeNumber(st[0]) + ", " +
-        ProbeNumber(st[1]) + "); kd = " + ProbeTriple(p.Shaded.Kd),
-      "kd and ka are the material's times the texel, looked up per fragment");
+        ProbeNumber(st[1]) + "); kd = " + ProbeTriple(p.Shaded.Kd) +
+        "; ks = " + ProbeTriple(*p.Shaded.Ks),
+      "kd and ka are the material's times the texel, looked up per fragment; ks too for a "
+      "glTF metal (ks + m B (texel - 1))");
   }
   out.Add("", "weights = " + ProbeTriple(p.Fragment.Weights),
     "barycentric, perspective-correct, of the triangle's vertices");

@@ -38,11 +38,20 @@ int FieldInt(vtkFieldData* field, const char* name, vtkIdType p)
   return array && p < array->GetNumberOfValues() ? array->GetValue(p) : -1;
 }
 
-// The part's texture: --texture's on every part, else the file's kd and ka
-// textures of a part with its own material (kdTexture, kaTexture: indices
-// into `textures`, -1 for none), less those that --kd and --ka drop.
+// The file's textures of a part: indices into the mesh's textures, -1 for none.
+struct FileTextures
+{
+  int Kd = -1;
+  int Ka = -1;
+  int Ks = -1;
+  Rgb KsScale{};
+};
+
+// The part's texture: --texture's on every part (kd and ka), else the file's
+// kd, ka and ks textures of a part with its own material, less those that
+// --kd, --ka and --ks drop.
 void SetTexture(const SceneOptions& options, const std::vector<Texture>& textures,
-  const SceneImages& images, int kdTexture, int kaTexture, ScenePart& part)
+  const SceneImages& images, const FileTextures& fileTextures, ScenePart& part)
 {
   SurfaceTexture& t = part.Texture;
   if (!options.Texture.empty())
@@ -55,9 +64,10 @@ void SetTexture(const SceneOptions& options, const std::vector<Texture>& texture
     return;
   }
   const int count = static_cast<int>(textures.size());
-  const int kd = options.Kd || kdTexture >= count ? -1 : kdTexture;
-  const int ka = options.Ka || kaTexture >= count ? -1 : kaTexture;
-  const int drawn = kd >= 0 ? kd : ka;
+  const int kd = options.Kd || fileTextures.Kd >= count ? -1 : fileTextures.Kd;
+  const int ka = options.Ka || fileTextures.Ka >= count ? -1 : fileTextures.Ka;
+  const int ks = options.Ks || fileTextures.Ks >= count ? -1 : fileTextures.Ks;
+  const int drawn = kd >= 0 ? kd : ka >= 0 ? ka : ks;
   if (drawn < 0)
   {
     return;
@@ -71,6 +81,8 @@ void SetTexture(const SceneOptions& options, const std::vector<Texture>& texture
   t.Map.Filter = FilterFromGL(file.MagFilter).value_or(TextureFilter::Bilinear);
   t.Kd = kd == drawn;
   t.Ka = ka == drawn;
+  t.Ks = ks == drawn;
+  t.KsScale = t.Ks ? fileTextures.KsScale : Rgb{};
   part.FileTexture = drawn;
   part.ImageName =
     file.Source.empty() ? options.Mesh + " (texture " + std::to_string(drawn) + ")" : file.Source;
@@ -139,10 +151,14 @@ std::vector<ScenePart> SceneParts(
         part.Overridden.push_back(name);
       }
     }
-    const bool fileTextures = own && !options.MaterialGiven;
-    SetTexture(options, textures, images,
-      fileTextures ? FieldInt(field, PartKdTextureArrayName, p) : -1,
-      fileTextures ? FieldInt(field, PartKaTextureArrayName, p) : -1, part);
+    FileTextures fileTextures;
+    if (own && !options.MaterialGiven)
+    {
+      fileTextures = { FieldInt(field, PartKdTextureArrayName, p),
+        FieldInt(field, PartKaTextureArrayName, p), FieldInt(field, PartKsTextureArrayName, p),
+        FieldTuple<3>(field, PartKsTextureScaleArrayName, p) };
+    }
+    SetTexture(options, textures, images, fileTextures, part);
     if (part.Overridden.size() == std::size(overrides))
     {
       part.Source = MaterialSource::Option; // nothing of the file's or the default's is left

@@ -4,8 +4,8 @@
 // replaces every part's whole material, --ka/--kd/--ks/--ns that
 // coefficient of every part); a part without a material of its own gets the
 // options' material, as a mesh without parts does. Likewise its texture:
-// the file's kd and ka textures unless --material, --kd or --ka drop them,
-// --texture's image on every part where given.
+// the file's kd, ka and ks textures unless --material, --kd, --ka or --ks
+// drop them, --texture's image (kd and ka) on every part where given.
 #ifndef shadelab_scene_parts_h
 #define shadelab_scene_parts_h
 
@@ -48,7 +48,7 @@ struct ScenePart
   Material Surface;        // what it is lit with, the overrides applied
   MaterialSource Source = MaterialSource::Default;
   std::vector<std::string> Overridden; // the coefficients options replaced: "ka", "kd", "ks", "ns"
-  // What multiplies its kd and ka: --texture's image, the file's or none;
+  // What multiplies its kd, ka and ks: --texture's image, the file's or none;
   // the map's image is null where SceneParts was not given the images.
   SurfaceTexture Texture;
   std::string ImageName; // the texture's image file, "MESH (texture I)" for an embedded one
@@ -68,8 +68,9 @@ struct SceneImages
 /**
  * mesh's parts as options draw them, by index: one for a mesh without parts
  * (its triangles all of part 0). A part's texture takes its image from
- * `images`. One map per part: where a part's kd and ka textures differ,
- * kd's is drawn and ka is its factor alone.
+ * `images`. One map per part: where a part's kd, ka and ks textures
+ * differ, the first of kd's, ka's, ks's is drawn and the others are their
+ * factors alone.
  */
 std::vector<ScenePart> SceneParts(
   const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images = {});

@@ -73,7 +73,8 @@ const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
 // per vertex is a variable that the stage sets before lighting, and so are
 // kd and ka where this stage multiplies them by a texel (phong's), each
 // from its factor.
-std::string MaterialUniforms(bool specular, bool vertexKd, bool texelKd, bool texelKa)
+std::string MaterialUniforms(
+  bool specular, bool vertexKd, bool texelKd, bool texelKa, const char* ksTexture = nullptr)
 {
   std::string s = texelKa ? "uniform vec3 shadelabKaFactor;\nvec3 shadelabKa; // per fragment: the "
                             "factor times the texel\n"
@@ -84,9 +85,8 @@ std::string MaterialUniforms(bool specular, bool vertexKd, bool texelKd, bool te
                 : "uniform vec3 shadelabKd;\n";
   if (specular)
   {
-    s += R"glsl(uniform vec3 shadelabKs;
-uniform float shadelabNs;
-)glsl";
+    s += (ksTexture ? ksTexture : "uniform vec3 shadelabKs;\n") +
+      std::string("uniform float shadelabNs;\n");
   }
   return s + R"glsl(uniform vec3 shadelabIa;
 uniform int shadelabOrthographic;
@@ -183,9 +183,16 @@ uniform int shadelabLightKind[$];
 std::string DeclarationsSource(const ShaderFeatures& f)
 {
   const bool fragmentTexel = f.Rule == Shading::Phong;
+  // A ks texture: phong's ks is the fragment's (ShaderFeatures::KsTexture),
+  // flat's and gouraud's vertices light with 1 for the fragment to multiply.
+  const char* ks = !f.KsTexture ? nullptr
+    : fragmentTexel
+    ? "uniform vec3 shadelabKsFactor;\nuniform vec3 shadelabKsScale;\nvec3 shadelabKs; // per "
+      "fragment: the texel's\n"
+    : "const vec3 shadelabKs = vec3(1.0); // the fragment multiplies by its texel's ks\n";
   std::string s = "// shadelab: the lecture's illumination model (shadelabShadingOracle.cxx)\n" +
     MaterialUniforms(
-      f.Specular, f.VertexKd, fragmentTexel && f.KdTexture, fragmentTexel && f.KaTexture);
+      f.Specular, f.VertexKd, fragmentTexel && f.KdTexture, fragmentTexel && f.KaTexture, ks);
   if (!f.Lights.empty())
   {
     s += LightUniforms(f.Lights.size(), HasPositions(f), HasDirections(f), Has(f, LightKind::Spot));

@@ -18,7 +18,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
     this->Specular == o.Specular && this->VertexKd == o.VertexKd &&
     this->KdTexture == o.KdTexture && this->KaTexture == o.KaTexture &&
-    this->AllFeatures == o.AllFeatures;
+    this->KsTexture == o.KsTexture && this->AllFeatures == o.AllFeatures;
 }
 
 namespace
@@ -97,6 +97,11 @@ const char* const ShadeFragmentSource = R"glsl(  vec3 shadelabN;
 // The texel that multiplies kd and ka, per fragment under every rule.
 const char* const TexelSource =
   "  vec3 shadelabTexel = texture(shadelabTexture, shadelabTCoordVSOutput).rgb;\n";
+
+// ks at the fragment's texel (ShaderFeatures::KsTexture).
+const char* const TexelKsSource = "shadelabKsFactor + shadelabKsScale * (shadelabTexel - 1.0)";
+const char* const TexelKsUniformsSource =
+  "uniform vec3 shadelabKsFactor;\nuniform vec3 shadelabKsScale;\n";
 
 // `code` before what replaces tag in that stage, or the replacement itself:
 // each (stage, tag) is one replacement, since a second would overwrite it.
@@ -179,7 +184,9 @@ std::string PickApartByFacing(const ShaderFeatures& f)
   fragOutput0 = vec4()glsl") +
     (f.KaTexture ? "shadelabKa * shadelabTexel * shadelabIa" : "shadelabKa * shadelabIa") +
     (f.KdTexture ? " + shadelabTexel * shadelabDiffuse" : " + shadelabDiffuse") +
-    " + shadelabSpecular, 1.0); // shadelab: ambient, diffuse, specular\n";
+    (f.KsTexture ? std::string(" + (") + TexelKsSource + ") * shadelabSpecular"
+                 : std::string(" + shadelabSpecular")) +
+    ", 1.0); // shadelab: ambient, diffuse, specular\n";
 }
 
 // Flat and Gouraud: lit per vertex (flat by the face normal attribute), the
@@ -212,7 +219,7 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   {
     r.push_back({ false, "//VTK::Light::Dec",
       ApartOutputs(qualifier, "in") + "uniform vec3 shadelabKa;\nuniform vec3 shadelabIa;\n" +
-        "//VTK::Light::Dec" });
+        (f.KsTexture ? TexelKsUniformsSource : "") + "//VTK::Light::Dec" });
     r.push_back({ false, "//VTK::Light::Impl", PickApartByFacing(f) });
     return;
   }
@@ -243,6 +250,10 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   {
     shade = "  shadelabKa = shadelabKaFactor * shadelabTexel;\n" + shade;
   }
+  if (f.KsTexture)
+  {
+    shade = std::string("  shadelabKs = ") + TexelKsSource + ";\n" + shade;
+  }
   r.push_back({ false, "//VTK::Light::Dec", declarations });
   r.push_back({ false, "//VTK::UniformFlow::Impl", GeometricNormalSource });
   r.push_back({ false, "//VTK::Light::Impl", shade });
@@ -254,8 +265,9 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   ShaderFeatures f = features;
   if (f.AllFeatures)
   {
-    f.KdTexture = f.KaTexture = false; // the measuring baseline has no texture code
+    f.KdTexture = f.KaTexture = f.KsTexture = false; // the measuring baseline has no texture code
   }
+  f.KsTexture = f.KsTexture && f.Specular; // no specular code, no ks to texture
   std::vector<ShaderReplacement> r;
   // The fragment stage never uses VTK's normal code or its derivative
   // normals: each rule below says what it needs instead.

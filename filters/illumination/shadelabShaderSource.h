@@ -34,16 +34,23 @@ struct ShaderFeatures
   // texel (shadelabTriangleFragment.h says why that is the equation).
   bool KdTexture = false;
   bool KaTexture = false;
+  // ks = shadelabKsFactor + shadelabKsScale * (texel - 1) (SurfaceTexture),
+  // only with Specular: phong lights with it; flat and gouraud light their
+  // vertices with ks = 1 and the fragment multiplies the specular sum by it.
+  bool KsTexture = false;
   // The baseline that per-scene generation is measured against: one program
   // with every light kind, specular, and both reflection models, chosen by
   // uniforms at run time, for up to AllFeaturesMaxLights lights.
   // It has no texture code.
   bool AllFeatures = false;
 
-  bool Textured() const { return this->KdTexture || this->KaTexture; }
+  bool Textured() const
+  {
+    return this->KdTexture || this->KaTexture || (this->KsTexture && this->Specular);
+  }
   /**
    * The code looks a texel up (and reads the texture coordinates): a
-   * texture for kd, or for ka under a rule that lights; never AllFeatures.
+   * texture for kd, or for ka or ks under a rule that lights; never AllFeatures.
    */
   bool ReadsTexel() const
   {

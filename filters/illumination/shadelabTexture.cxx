@@ -48,6 +48,16 @@ Rgb TextureImage::Texel(int i, int j) const
   return { p[0], p[1], p[2] };
 }
 
+Rgb SurfaceTexture::TexelKs(const Rgb& ks, const Rgb& texel) const
+{
+  Rgb result = ks;
+  for (int c = 0; this->Ks && c < 3; ++c)
+  {
+    result[c] += this->KsScale[c] * (texel[c] - 1);
+  }
+  return result;
+}
+
 Rgb SampleTexture(const TextureMap& map, double s, double t)
 {
   const TextureImage& image = *map.Image;

@@ -1,9 +1,10 @@
-// Texture maps for the lecture's kd and ka (DESIGN.md, "Meshes in"): an
+// Texture maps for the lecture's kd, ka and ks (DESIGN.md, "Meshes in"): an
 // image of linear RGB, how it wraps and filters, and its lookup as OpenGL
 // defines it (texel centres at (i + 0.5)/size, GL_REPEAT, GL_CLAMP_TO_EDGE
 // and GL_MIRRORED_REPEAT, GL_NEAREST and GL_LINEAR without mipmaps), in
-// double: what the oracle multiplies kd and ka by, and what the shaders are
-// given as a float texture with the same sampler settings.
+// double: what the oracle multiplies kd and ka by (and ks, SurfaceTexture),
+// and what the shaders are given as a float texture with the same sampler
+// settings.
 #ifndef shadelabTexture_h
 #define shadelabTexture_h
 
@@ -72,15 +73,24 @@ struct TextureMap
   TextureFilter Filter = TextureFilter::Bilinear;
 };
 
-/** What a surface's texture map stands for: kd, ka or both are factor x texel. */
+/**
+ * What a surface's texture map stands for: kd, ka or both are factor x
+ * texel; ks, where Ks is set, is ks + KsScale x (texel - 1), the part
+ * KsScale of ks times the texel (a glTF metal's m B of its ks, README
+ * "Materials from glTF").
+ */
 struct SurfaceTexture
 {
   TextureMap Map;
   bool Kd = false;
   bool Ka = false;
+  bool Ks = false;
+  Rgb KsScale{};
 
-  /** Whether it changes anything: an image for kd or ka. */
-  bool Used() const { return this->Map.Image && (this->Kd || this->Ka); }
+  /** Whether it changes anything: an image for kd, ka or ks. */
+  bool Used() const { return this->Map.Image && (this->Kd || this->Ka || this->Ks); }
+  /** ks at a texel: ks + KsScale (texel - 1) where the texture is ks's, else ks. */
+  Rgb TexelKs(const Rgb& ks, const Rgb& texel) const;
 };
 
 /** The map's value at texture coordinates (s, t), as OpenGL samples it. */

@@ -13,8 +13,10 @@ T Mix(const std::array<double, 3>& w, Get get)
 }
 
 // The terms of a vertex-lit rule with ka and kd times the texel: the
-// ambient term and every light's diffuse term.
-void MultiplyByTexel(IlluminationTerms& terms, const SurfaceTexture& texture, const Rgb& texel)
+// ambient term and every light's diffuse term; with a ks texture, every
+// light's specular term (lit with ks = 1) times the texel's ks.
+void MultiplyByTexel(
+  IlluminationTerms& terms, const SurfaceTexture& texture, const Rgb& texel, const Rgb& ks)
 {
   if (texture.Ka)
   {
@@ -25,6 +27,10 @@ void MultiplyByTexel(IlluminationTerms& terms, const SurfaceTexture& texture, co
     if (texture.Kd)
     {
       light.DiffuseTerm = light.DiffuseTerm * texel;
+    }
+    if (texture.Ks)
+    {
+      light.SpecularTerm = light.SpecularTerm * ks;
     }
   }
 }
@@ -68,10 +74,25 @@ ShadedFragment ShadeTriangleFragment(
   ShadedFragment s;
   s.Point = Mix<Vec3>(w, [&](int k) { return P[k]; });
   s.FaceNormal = normalize(cross(P[1] - P[0], P[2] - P[0]));
-  // The inputs with vertex k's kd (the material's without VertexKd).
+  const SurfaceTexture& texture = material.Texture;
+  if (texture.Used())
+  {
+    const auto& st = f.TexCoords;
+    s.TexCoord = { Mix<double>(w, [&](int k) { return st[k][0]; }),
+      Mix<double>(w, [&](int k) { return st[k][1]; }) };
+    s.Texel = SampleTexture(texture.Map, (*s.TexCoord)[0], (*s.TexCoord)[1]);
+    s.Ks = texture.TexelKs(material.Surface.Ks, *s.Texel);
+  }
+  const bool vertexLit = rule == Shading::Flat || rule == Shading::Gouraud;
+  // The inputs with vertex k's kd (the material's without VertexKd), and
+  // ks = 1 where a vertex-lit rule's fragment multiplies by the texel's ks.
   const auto atVertex = [&](int k)
   {
     IlluminationInputs in = material;
+    if (s.Texel && texture.Ks && vertexLit)
+    {
+      in.Surface.Ks = { 1, 1, 1 };
+    }
     if (f.VertexKd)
     {
       in.Surface.Kd = (*f.VertexKd)[k];
@@ -83,19 +104,12 @@ ShadedFragment ShadeTriangleFragment(
   {
     in.Surface.Kd = Mix<Rgb>(w, [&](int k) { return (*f.VertexKd)[k]; });
   }
-  const SurfaceTexture& texture = material.Texture;
-  if (texture.Used())
-  {
-    const auto& st = f.TexCoords;
-    s.TexCoord = { Mix<double>(w, [&](int k) { return st[k][0]; }),
-      Mix<double>(w, [&](int k) { return st[k][1]; }) };
-    s.Texel = SampleTexture(texture.Map, (*s.TexCoord)[0], (*s.TexCoord)[1]);
-  }
   const Rgb factorKd = in.Surface.Kd;
-  if (s.Texel && rule != Shading::Flat && rule != Shading::Gouraud)
+  if (s.Texel && !vertexLit)
   {
     in.Surface.Kd = texture.Kd ? in.Surface.Kd * *s.Texel : in.Surface.Kd;
     in.Surface.Ka = texture.Ka ? in.Surface.Ka * *s.Texel : in.Surface.Ka;
+    in.Surface.Ks = *s.Ks;
   }
   s.Kd = s.Texel && texture.Kd ? factorKd * *s.Texel : factorKd;
   switch (rule)
@@ -107,7 +121,7 @@ ShadedFragment ShadeTriangleFragment(
       s.Terms = ShadeFlat(in, P[0], P[1], P[2], f.Front);
       if (s.Texel)
       {
-        MultiplyByTexel(s.Terms, texture, *s.Texel);
+        MultiplyByTexel(s.Terms, texture, *s.Texel, *s.Ks);
       }
       break;
     case Shading::Gouraud:
@@ -118,7 +132,7 @@ ShadedFragment ShadeTriangleFragment(
       s.Terms = MixTerms(s.Vertices, w);
       if (s.Texel)
       {
-        MultiplyByTexel(s.Terms, texture, *s.Texel);
+        MultiplyByTexel(s.Terms, texture, *s.Texel, *s.Ks);
         s.Color = s.Terms.Total();
         return s;
       }

@@ -39,8 +39,9 @@ struct ShadedFragment
   // mix) and the texel there, which kd and/or ka are multiplied by.
   std::optional<std::array<double, 2>> TexCoord;
   std::optional<Rgb> Texel;
-  Vec3 Point{};      // the fragment on the surface: the weights' mix of the positions
-  Vec3 FaceNormal{}; // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
+  std::optional<Rgb> Ks; // with a texture: the ks that lit (the texel's where it is ks's)
+  Vec3 Point{};          // the fragment on the surface: the weights' mix of the positions
+  Vec3 FaceNormal{};     // normalize((P1 - P0) x (P2 - P0)) as drawn, 0 for no area
   // phong: the interpolated normal was too short, so the face normal lit.
   bool FaceNormalFallback = false;
   // How the rule lit: flat at the provoking vertex with the face normal,
@@ -61,8 +62,10 @@ struct ShadedFragment
  * it up per fragment, at the weights' mix of the texture coordinates: none
  * and phong light with kd and ka times the texel; flat and gouraud light
  * their vertices with the factors alone and multiply the ambient and the
- * diffuse terms they give (mixed, for gouraud) by the texel. The equation is
- * linear in kd and ka, so that is the equation with kd and ka textured
+ * diffuse terms they give (mixed, for gouraud) by the texel. A ks texture
+ * likewise: phong lights with the texel's ks (SurfaceTexture::TexelKs),
+ * flat and gouraud light with ks = 1 and multiply the specular terms by
+ * it. The equation is linear in kd, ka and ks, so that is the equation with kd and ka textured
  * where the rule evaluates it, the texture itself seen per fragment.
  */
 ShadedFragment ShadeTriangleFragment(

@@ -5,28 +5,55 @@
 
 namespace shadelab::gltf
 {
-Material LectureMaterial(const Json& material, const std::string& where)
+namespace
+{
+// pbrMetallicRoughness's factors, with the specification's defaults.
+struct MetallicRoughness
+{
+  std::vector<double> Base; // r g b a
+  double Metallic = 1;
+  double Roughness = 1;
+};
+
+MetallicRoughness Factors(const Json& material, const std::string& where)
 {
   static const Json none = Json::object();
   const Json& pbr =
     material.contains("pbrMetallicRoughness") ? material["pbrMetallicRoughness"] : none;
   const std::string at = where + " pbrMetallicRoughness";
-  const std::vector<double> base = Numbers(pbr, "baseColorFactor", at, 4, { 1, 1, 1, 1 });
-  const double metallic = std::clamp(Number(pbr, "metallicFactor", at, 1), 0.0, 1.0);
-  const double roughness = std::clamp(Number(pbr, "roughnessFactor", at, 1), 0.0, 1.0);
+  return { Numbers(pbr, "baseColorFactor", at, 4, { 1, 1, 1, 1 }),
+    std::clamp(Number(pbr, "metallicFactor", at, 1), 0.0, 1.0),
+    std::clamp(Number(pbr, "roughnessFactor", at, 1), 0.0, 1.0) };
+}
+}
+
+Material LectureMaterial(const Json& material, const std::string& where)
+{
+  const MetallicRoughness f = Factors(material, where);
   constexpr double MaxNs = 10000;
   Material m;
   m.Name = String(material, "name", where);
   for (int c = 0; c < 3; ++c)
   {
-    const double b = std::clamp(base[c], 0.0, 1.0);
-    m.Kd[c] = b * (1 - metallic);
-    m.Ks[c] = 0.04 * (1 - metallic) + b * metallic;
+    const double b = std::clamp(f.Base[c], 0.0, 1.0);
+    m.Kd[c] = b * (1 - f.Metallic);
+    m.Ks[c] = 0.04 * (1 - f.Metallic) + b * f.Metallic;
   }
   m.Ka = m.Kd;
-  const double r4 = std::pow(roughness, 4);
+  const double r4 = std::pow(f.Roughness, 4);
   m.Ns = r4 > 2 / (MaxNs + 2) ? 2 / r4 - 2 : MaxNs;
-  m.Translucency = base[3];
+  m.Translucency = f.Base[3];
   return m;
+}
+
+Rgb KsTextureScale(const Json& material, const std::string& where)
+{
+  const MetallicRoughness f = Factors(material, where);
+  Rgb scale{};
+  for (int c = 0; c < 3; ++c)
+  {
+    scale[c] = std::clamp(f.Base[c], 0.0, 1.0) * f.Metallic;
+  }
+  return scale;
 }
 }

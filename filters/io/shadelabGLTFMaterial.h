@@ -13,8 +13,9 @@
  *     ns = 2 / r^4 - 2            Blinn-Phong's exponent for GGX's alpha = r^2,
  *                                 clamped to [0, 10000]
  *
- * baseColorTexture multiplies kd and ka (shadelabGLTFTexture.h), as it
- * multiplies baseColorFactor in glTF.
+ * baseColorTexture T multiplies kd and ka (shadelabGLTFTexture.h), as it
+ * multiplies baseColorFactor in glTF; in ks it multiplies B m, the metal's
+ * part: ks = 0.04 (1 - m) + B m T (KsTextureScale).
  */
 #ifndef shadelabGLTFMaterial_h
 #define shadelabGLTFMaterial_h
@@ -28,6 +29,8 @@ namespace shadelab::gltf
 {
 /** materials[k] (`material`) as the lecture's coefficients; `where` names it in messages. */
 Material LectureMaterial(const Json& material, const std::string& where);
+/** The part of LectureMaterial's ks that baseColorTexture multiplies: B m. */
+Rgb KsTextureScale(const Json& material, const std::string& where);
 }
 
 #endif

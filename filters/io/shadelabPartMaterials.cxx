@@ -60,6 +60,7 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto indices = IntArray(PartMaterialIndicesArrayName, count);
   auto kdTextures = IntArray(PartKdTextureArrayName, count);
   auto kaTextures = IntArray(PartKaTextureArrayName, count);
+  auto ksTextures = IntArray(PartKsTextureArrayName, count);
   const auto coefficients = [count](const char* name, int components)
   {
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
@@ -73,6 +74,7 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto kd = coefficients(PartKdArrayName, 3);
   auto ks = coefficients(PartKsArrayName, 3);
   auto ns = coefficients(PartNsArrayName, 1);
+  auto ksScales = coefficients(PartKsTextureScaleArrayName, 3);
   for (vtkIdType part = 0; part < count; ++part)
   {
     const PartMaterial& p = parts[part];
@@ -80,6 +82,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
     indices->SetValue(part, p.Index);
     kdTextures->SetValue(part, p.KdTexture);
     kaTextures->SetValue(part, p.KaTexture);
+    ksTextures->SetValue(part, p.KsTexture);
+    ksScales->SetTuple(part, p.KsTextureScale.data());
     if (p.Index >= 0)
     {
       ka->SetTuple(part, p.Coefficients.Ka.data());
@@ -88,7 +92,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
       ns->SetTuple(part, &p.Coefficients.Ns);
     }
   }
-  AddArrays(triangles, { names, indices, ka, kd, ks, ns, kdTextures, kaTextures });
+  AddArrays(
+    triangles, { names, indices, ka, kd, ks, ns, kdTextures, kaTextures, ksTextures, ksScales });
 }
 
 void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles)

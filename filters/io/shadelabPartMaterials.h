@@ -43,6 +43,15 @@ constexpr const char* PartNsArrayName = "PartNs";
 constexpr const char* PartKdTextureArrayName = "PartKdTexture";
 constexpr const char* PartKaTextureArrayName = "PartKaTexture";
 /**
+ * Field data, one per part: the texture of its ks (int, -1 for none) and the
+ * part of ks that it multiplies (3 floats, zeros without): ks at a texel T
+ * is Ks + PartKsTextureScale (T - 1). glTF: baseColorTexture with m B, a
+ * metal's base colour (shadelabGLTFMaterial.h); a dielectric (m = 0) and OBJ
+ * have none.
+ */
+constexpr const char* PartKsTextureArrayName = "PartKsTexture";
+constexpr const char* PartKsTextureScaleArrayName = "PartKsTextureScale";
+/**
  * Field data, one per texture (string): its image file's path, resolved
  * against the folder of the file that names it (the MTL, the glTF), or ""
  * for an image that the mesh file holds (a GLB's bufferView, a data URI).
@@ -81,6 +90,8 @@ struct PartMaterial
   Material Coefficients; // where Index >= 0
   int KdTexture = -1;    // index into the mesh's textures, -1 for none
   int KaTexture = -1;
+  int KsTexture = -1;
+  Rgb KsTextureScale{}; // the part of ks that KsTexture multiplies
 };
 
 /** A texture: an image and how it is sampled. */
@@ -104,7 +115,8 @@ int AddTexture(std::vector<Texture>& textures, Texture texture);
 /**
  * Adds the parts' materials to `triangles` as field data: PartMaterials,
  * PartMaterialIndices, PartKa, PartKd, PartKs, PartNs (zeros where the
- * index is -1), PartKdTexture and PartKaTexture.
+ * index is -1), PartKdTexture, PartKaTexture, PartKsTexture and
+ * PartKsTextureScale.
  */
 void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* triangles);
 

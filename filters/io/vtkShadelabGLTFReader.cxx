@@ -337,7 +337,11 @@ private:
     {
       this->Warnings.push_back(warning);
     }
-    this->Materials.push_back({ m.Name, static_cast<int>(index), m, texture, texture });
+    // In ks it multiplies the metal's part (KsTextureScale): none for a dielectric.
+    const shadelab::Rgb ksScale = KsTextureScale(material, name);
+    const bool ksTextured = texture >= 0 && ksScale != shadelab::Rgb{};
+    this->Materials.push_back({ m.Name, static_cast<int>(index), m, texture, texture,
+      ksTextured ? texture : -1, ksTextured ? ksScale : shadelab::Rgb{} });
   }
 
   const Document& Doc;

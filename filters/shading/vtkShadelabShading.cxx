@@ -155,6 +155,7 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Texture = texture;
   this->Features.KdTexture = texture.Used() && texture.Kd;
   this->Features.KaTexture = texture.Used() && texture.Ka;
+  this->Features.KsTexture = texture.Used() && texture.Ks;
   this->Modified();
 }
 
@@ -271,6 +272,8 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   {
     program->SetUniform3f("shadelabKaFactor", toFloat(this->Surface.Ka).data());
     program->SetUniform3f("shadelabKdFactor", toFloat(this->Surface.Kd).data());
+    program->SetUniform3f("shadelabKsFactor", toFloat(this->Surface.Ks).data());
+    program->SetUniform3f("shadelabKsScale", toFloat(this->Texture.KsScale).data());
     this->BindTexture(program);
   }
   program->SetUniform3f("shadelabKs", toFloat(this->Surface.Ks).data());
@@ -380,4 +383,5 @@ void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VertexKd: " << this->Features.VertexKd << "\n";
   os << indent << "KdTexture: " << this->Features.KdTexture << "\n";
   os << indent << "KaTexture: " << this->Features.KaTexture << "\n";
+  os << indent << "KsTexture: " << this->Features.KsTexture << "\n";
 }

@@ -58,8 +58,8 @@ public:
    * kd and/or ka times a texel of texture.Map at the mesh's texture
    * coordinates (point data "TextureCoordinates"), per fragment under every
    * rule (ShaderFeatures::KdTexture, KaTexture); the material's kd and ka are
-   * the factors. The image goes to OpenGL as a float texture with the map's
-   * wrap and filter, once per image and render window.
+   * the factors; ks likewise where texture.Ks (KsTexture, SurfaceTexture::TexelKs). The image goes
+   * to OpenGL as a float texture with the map's wrap and filter, once per image and render window.
    */
   void SetTexture(const shadelab::SurfaceTexture& texture);
 

@@ -110,14 +110,16 @@ std::vector<json> ProbeGrid(const std::filesystem::path& mesh, const char* rule)
 // the oracle tests' standard bound (1e-4 relative, floor 0.01;
 // oracle_scene.h's Standard says why) plus `texelSlack` absolute; each
 // kd a texel's (kd_from "texture"), and not all the same texel (so the
-// image is looked up, not one colour of it).
+// image is looked up, not one colour of it); ks the texel's too where
+// ksTextured (not all the same, nor all the pictures' pixels), else the
+// material's alone.
 void ExpectTexturedAsTheOracle(
-  const std::filesystem::path& mesh, double texelSlack, std::size_t atLeast)
+  const std::filesystem::path& mesh, double texelSlack, std::size_t atLeast, bool ksTextured)
 {
   for (const char* rule : { "none", "flat", "gouraud", "phong" })
   {
     std::size_t compared = 0;
-    std::set<std::vector<double>> texels;
+    std::set<std::vector<double>> texels, ks, rendered;
     for (const json& p : ProbeGrid(mesh, rule))
     {
       if (!p.at("hit") || p.at("edge_distance").get<double>() < 0.5)
@@ -127,15 +129,21 @@ void ExpectTexturedAsTheOracle(
       ++compared;
       ASSERT_EQ(p.at("kd_from"), "texture") << rule << " " << p.at("pixel");
       texels.insert(p.at("texel").get<std::vector<double>>());
-      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
+      ks.insert(p.at("ks").get<std::vector<double>>());
+      rendered.insert(p.at("rendered").get<std::vector<double>>());
+      const Rgb pixel = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
       for (int c = 0; c < 3; ++c)
       {
-        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01) + texelSlack)
+        EXPECT_NEAR(pixel[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01) + texelSlack)
           << mesh.filename() << ", " << rule << ", pixel " << p.at("pixel") << ", channel " << c;
       }
     }
     EXPECT_GE(compared, atLeast) << mesh.filename() << ", " << rule;
     EXPECT_GT(texels.size(), 1u) << mesh.filename() << ", " << rule;
+    // The picture shows the texture, but for none on a metal (kd = 0: black).
+    const bool unlitMetal = ksTextured && std::string(rule) == "none";
+    EXPECT_EQ(rendered.size() > 1, !unlitMetal) << mesh.filename() << ", " << rule;
+    EXPECT_EQ(ks.size() > 1, ksTextured) << mesh.filename() << ", " << rule;
   }
 }
 }
@@ -143,7 +151,7 @@ void ExpectTexturedAsTheOracle(
 // spot's texture coordinates lie in [0, 1]: the standard bound alone.
 TEST(FileTextures, SpotTexturedObjMatchesTheOracleUnderEveryRule)
 {
-  ExpectTexturedAsTheOracle(TestMesh("spot-textured.obj"), 0, 20);
+  ExpectTexturedAsTheOracle(TestMesh("spot-textured.obj"), 0, 20, false);
 }
 
 // The box's texture coordinates reach s = 6, where a float's ulp is 4.8e-7:
@@ -152,12 +160,23 @@ TEST(FileTextures, SpotTexturedObjMatchesTheOracleUnderEveryRule)
 // is off moves the texel by up to 1e-4 and the pixel by that times
 // ka Ia + kd Il (1.2 here): 6e-4 allows about five ulps. The largest
 // deviation measured was 7e-5; a wrong texel (another image, wrap, filter
-// or orientation) is off by tenths.
+// or orientation) is off by tenths. The files themselves are a metal
+// (metallic 1, kd = ka = 0): the texel is in ks alone, ks = texel, and
+// the pixel moves by up to ks's texel times the specular sum (1 here, ns 0):
+// the same bound holds. Under none a metal is black (kd = 0).
 TEST(FileTextures, BoxTexturedGltfAndGlbMatchTheOracleUnderEveryRule)
 {
   const TempDir dir;
-  ExpectTexturedAsTheOracle(DielectricGltf(dir), 6e-4, 100);
-  ExpectTexturedAsTheOracle(DielectricGlb(dir), 6e-4, 100);
+  ExpectTexturedAsTheOracle(DielectricGltf(dir), 6e-4, 100, false);
+  ExpectTexturedAsTheOracle(DielectricGlb(dir), 6e-4, 100, false);
+}
+
+TEST(FileTextures, BoxTexturedMetalShowsItsTextureThroughKs)
+{
+  for (const char* name : { "box-textured.gltf", "box-textured.glb" })
+  {
+    ExpectTexturedAsTheOracle(TestMesh(name), 6e-4, 100, true);
+  }
 }
 
 namespace
@@ -321,4 +340,28 @@ TEST(FileTextures, OverridesDropOrReplaceTheFilesTextures)
   }
   ExpectRgb(At(other, InPart0), { 0.5, 0.5, 0.5 }, "--texture: part 0");
   ExpectRgb(At(other, InPart1), { 0.5, 0.5, 0.5 }, "--texture: part 1");
+}
+
+// A metal's ks texture (BoxTextured) follows the overrides as kd's and ka's
+// do: --ks drops it, --kd keeps it (and ka's), --material drops all, and
+// --texture is kd's and ka's only.
+TEST(FileTextures, OverridesOfAMetalsKsTexture)
+{
+  const TempDir dir;
+  const auto maps = [&](const std::vector<std::string>& options)
+  {
+    const auto out = dir / "box.exr";
+    std::vector<std::string> args{ "render", TestMesh("box-textured.glb").string(), "-o",
+      out.string(), "--size", "32x32", "--pixel-type", "float" };
+    args.insert(args.end(), options.begin(), options.end());
+    const RunResult r = RunShadelab(args);
+    EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+    const json part = PartsOf(ReadImage(out)).at(0);
+    return part.contains("texture") ? part.at("texture").at("maps") : json::array();
+  };
+  EXPECT_EQ(maps({}), json({ "kd", "ka", "ks" }));
+  EXPECT_EQ(maps({ "--ks", "0.5,0.5,0.5" }), json({ "kd", "ka" }));
+  EXPECT_EQ(maps({ "--kd", "0.5,0.5,0.5" }), json({ "ka", "ks" }));
+  EXPECT_EQ(maps({ "--material", "gold" }), json::array());
+  EXPECT_EQ(maps({ "--texture", TestMesh("CesiumLogoFlat.png").string() }), json({ "kd", "ka" }));
 }

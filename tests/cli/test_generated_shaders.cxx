@@ -124,3 +124,40 @@ TEST(GeneratedShaders, TextureCodeOnlyWithATexture)
     EXPECT_EQ(Contains(textured.Fragment, "shadelabTexel * shadelabDiffuse"), vertexLit);
   }
 }
+
+// A glTF metal's base colour texture colours ks (BoxTextured: metallic 1):
+// phong's ks per fragment, flat's and gouraud's vertices lit with ks = 1 for
+// the fragment to multiply; none has no specular. --ks drops the ks
+// texture, and --texture is kd's and ka's only.
+TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
+{
+  TempDir dir;
+  const auto metal = TestMesh("box-textured.glb");
+  WriteImage8(dir / "one.png", 1, 1, { 200, 100, 50 });
+  for (const char* rule : { "none", "flat", "gouraud", "phong" })
+  {
+    SCOPED_TRACE(rule);
+    const std::string name = std::string(rule) + "-blinn";
+    const Dumped textured = Render(dir, name, { "--shading", rule }, metal);
+    const std::string r = rule;
+    EXPECT_EQ(Contains(textured.Fragment, "uniform vec3 shadelabKsScale;"), r != "none");
+    EXPECT_EQ(Contains(textured.Fragment,
+                "  shadelabKs = shadelabKsFactor + shadelabKsScale * (shadelabTexel - 1.0);"),
+      r == "phong");
+    EXPECT_EQ(Contains(textured.Vertex, "const vec3 shadelabKs = vec3(1.0);"),
+      r == "flat" || r == "gouraud");
+    EXPECT_EQ(Contains(textured.Fragment,
+                "(shadelabKsFactor + shadelabKsScale * (shadelabTexel - 1.0)) * shadelabSpecular"),
+      r == "flat" || r == "gouraud");
+    for (const std::vector<std::string>& extra :
+      { std::vector<std::string>{ "--ks", "0.5,0.5,0.5" },
+        std::vector<std::string>{ "--texture", (dir / "one.png").string() } })
+    {
+      std::vector<std::string> args{ "--shading", rule };
+      args.insert(args.end(), extra.begin(), extra.end());
+      const Dumped other = Render(dir, name, args, metal);
+      EXPECT_FALSE(Contains(other.Fragment + other.Vertex, "shadelabKsScale")) << extra[0];
+      EXPECT_FALSE(Contains(other.Vertex, "vec3(1.0);")) << extra[0];
+    }
+  }
+}

@@ -292,6 +292,7 @@ TEST_F(MeshReaders, SpotsTextureCoordinatesAndTexture)
     (std::vector<std::string>{ (TestMeshes / "spot_texture.png").lexically_normal().string() }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0 }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ 0 }));
+  EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ -1 }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::TextureWrapSArrayName),
     (std::vector<int>{ shadelab::gl::Repeat }));
 }
@@ -324,6 +325,8 @@ TEST_F(MeshReaders, BoxTexturedsTextureInBothForms)
     }
     EXPECT_EQ(Ints(result.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ 0 }));
+    // Metallic 1 by glTF's default: the texture colours ks too.
+    EXPECT_EQ(Ints(result.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ 0 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapSArrayName), (std::vector<int>{ 10497 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapTArrayName), (std::vector<int>{ 10497 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::TextureMagFilterArrayName), (std::vector<int>{ 9729 }));
@@ -365,6 +368,36 @@ protected:
     this->ExpectError("bad.gltf", doc.dump(), keyWords);
   }
 };
+
+// baseColorTexture colours a metal's ks by the metal's part of it, m B
+// (shadelabGLTFMaterial.h): part 0 metallic 0.5 with B (0.5, 0.25, 1), part
+// 1 the same but a dielectric (m = 0), whose ks has no texture.
+TEST_F(GltfTextures, AMetalsBaseColourTextureColoursItsKs)
+{
+  const ReadResult result = this->ReadEdited(
+    [](Json& doc)
+    {
+      Json& pbr = doc["materials"][0]["pbrMetallicRoughness"];
+      pbr["baseColorFactor"] = { 0.5, 0.25, 1, 1 };
+      pbr["metallicFactor"] = 0.5;
+      doc["materials"].push_back(doc["materials"][0]);
+      doc["materials"][1]["pbrMetallicRoughness"]["metallicFactor"] = 0;
+      doc["meshes"][0]["primitives"].push_back(doc["meshes"][0]["primitives"][0]);
+      doc["meshes"][0]["primitives"][1]["material"] = 1;
+    });
+  ASSERT_TRUE(result.Ok) << result.Error;
+  EXPECT_EQ(Ints(result.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0, 0 }));
+  EXPECT_EQ(Ints(result.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ 0, -1 }));
+  vtkDataArray* scale =
+    result.Mesh->GetFieldData()->GetArray(shadelab::PartKsTextureScaleArrayName);
+  ASSERT_NE(scale, nullptr);
+  ASSERT_EQ(scale->GetNumberOfTuples(), 2);
+  ASSERT_EQ(scale->GetNumberOfComponents(), 3);
+  const double* metal = scale->GetTuple3(0);
+  EXPECT_EQ(std::vector<double>(metal, metal + 3), (std::vector<double>{ 0.25, 0.125, 0.5 }));
+  const double* dielectric = scale->GetTuple3(1);
+  EXPECT_EQ(std::vector<double>(dielectric, dielectric + 3), (std::vector<double>{ 0, 0, 0 }));
+}
 
 TEST_F(GltfTextures, SamplerDefaultsDataUrisAndSharedTextures)
 {

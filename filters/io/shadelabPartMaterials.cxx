@@ -1,7 +1,7 @@
 #include "shadelabPartMaterials.h"
 
-#include <vtkFieldData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>

@@ -44,10 +44,10 @@ constexpr const char* PartKdTextureArrayName = "PartKdTexture";
 constexpr const char* PartKaTextureArrayName = "PartKaTexture";
 /**
  * Field data, one per part: the texture of its ks (int, -1 for none) and the
- * part of ks that it multiplies (3 components, double as the others, zeros without): ks at a texel T
- * is Ks + PartKsTextureScale (T - 1). glTF: baseColorTexture with m B, a
- * metal's base colour (shadelabGLTFMaterial.h); a dielectric (m = 0) and OBJ
- * have none.
+ * part of ks that it multiplies (3 components, double as the others, zeros
+ * without): ks at a texel T is Ks + PartKsTextureScale (T - 1). glTF:
+ * baseColorTexture with m B, a metal's base colour (shadelabGLTFMaterial.h);
+ * a dielectric (m = 0) and OBJ have none.
  */
 constexpr const char* PartKsTextureArrayName = "PartKsTexture";
 constexpr const char* PartKsTextureScaleArrayName = "PartKsTextureScale";

@@ -4,6 +4,7 @@
 // mesh of a textured and an untextured part; which options keep or drop the
 // file's textures, as the picture's metadata lists them.
 #include "cli_test_support.h"
+#include "probe_oracle_check.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,11 +27,6 @@ using nlohmann::json;
 namespace
 {
 using Rgb = std::array<double, 3>;
-
-Rgb Triple(const json& j)
-{
-  return { j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>() };
-}
 
 std::string ReadBytes(const std::filesystem::path& path)
 {
@@ -131,12 +127,8 @@ void ExpectTexturedAsTheOracle(
       texels.insert(p.at("texel").get<std::vector<double>>());
       ks.insert(p.at("ks").get<std::vector<double>>());
       rendered.insert(p.at("rendered").get<std::vector<double>>());
-      const Rgb pixel = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
-      for (int c = 0; c < 3; ++c)
-      {
-        EXPECT_NEAR(pixel[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01) + texelSlack)
-          << mesh.filename() << ", " << rule << ", pixel " << p.at("pixel") << ", channel " << c;
-      }
+      ExpectRenderedIsOracle(
+        p, mesh.filename().string() + ", " + rule + ", pixel " + p.at("pixel").dump(), texelSlack);
     }
     EXPECT_GE(compared, atLeast) << mesh.filename() << ", " << rule;
     EXPECT_GT(texels.size(), 1u) << mesh.filename() << ", " << rule;
@@ -278,12 +270,7 @@ TEST(FileTextures, TexturedAndUntexturedPartsOfOneMesh)
       const json p = json::parse(line);
       EXPECT_EQ(p.at("part"), part) << rule;
       EXPECT_EQ(p.at("kd_from"), part == 0 ? "texture" : "material") << rule;
-      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
-      for (int c = 0; c < 3; ++c)
-      {
-        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01))
-          << rule << ", part " << part << ", channel " << c;
-      }
+      ExpectRenderedIsOracle(p, std::string(rule) + ", part " + std::to_string(part));
     }
     EXPECT_EQ(part, 2) << r.Stdout;
   }

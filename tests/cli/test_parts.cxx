@@ -4,6 +4,7 @@
 // written here (an OBJ with its MTL, a glTF with two materials) and on the
 // real box-assimp.gltf.
 #include "cli_test_support.h"
+#include "probe_oracle_check.h"
 #include "shadelabIllumination.h"
 
 #include <gtest/gtest.h>
@@ -308,12 +309,7 @@ TEST(Parts, VertexColorsAreEveryPartsKdUnderEveryRule)
       EXPECT_EQ(p.at("part"), part) << rule;
       EXPECT_EQ(p.at("kd_from"), "vertex colors") << rule;
       EXPECT_EQ(p.at("material").at("name"), part == 0 ? "left" : "right") << rule;
-      const Rgb rendered = Triple(p.at("rendered")), oracle = Triple(p.at("oracle"));
-      for (int c = 0; c < 3; ++c)
-      {
-        EXPECT_NEAR(rendered[c], oracle[c], 1e-4 * std::max(std::abs(oracle[c]), 0.01))
-          << rule << ", part " << part << ", channel " << c;
-      }
+      ExpectRenderedIsOracle(p, std::string(rule) + ", part " + std::to_string(part));
     }
     EXPECT_EQ(part, 2) << r.Stdout;
   }

@@ -1,6 +1,7 @@
 #include "shadelabTriangleMesh.h"
 
 #include "shadelabMeshReadError.h"
+#include "shadelabTriangulation.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -8,14 +9,12 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
-#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkPolygon.h>
 
 #include <algorithm>
 #include <cmath>
@@ -191,104 +190,6 @@ void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtk
       }
     }
   }
-}
-
-// Ear cutting keeps the polygon's orientation and handles concave polygons;
-// where it gives up (zero area, repeated or collinear vertices) a fan keeps
-// the face's vertices connected, with degenerate triangles as the face was.
-void AddPolygon(vtkIdType size, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
-  vtkIdList* local, vtkCellArray* triangles)
-{
-  polygon->GetPointIds()->SetNumberOfIds(size);
-  polygon->GetPoints()->SetNumberOfPoints(size);
-  for (vtkIdType k = 0; k < size; ++k)
-  {
-    polygon->GetPointIds()->SetId(k, ids[k]);
-    polygon->GetPoints()->SetPoint(k, points->GetPoint(ids[k]));
-  }
-  if (polygon->Triangulate(local) && local->GetNumberOfIds() >= 3)
-  {
-    for (vtkIdType t = 0; t + 2 < local->GetNumberOfIds(); t += 3)
-    {
-      triangles->InsertNextCell(
-        { ids[local->GetId(t)], ids[local->GetId(t + 1)], ids[local->GetId(t + 2)] });
-    }
-    return;
-  }
-  for (vtkIdType k = 1; k + 1 < size; ++k)
-  {
-    triangles->InsertNextCell({ ids[0], ids[k], ids[k + 1] });
-  }
-}
-
-// Every other triangle of a strip runs the other way round; flipping its
-// first two vertices gives all of them the orientation of the first.
-void AddStrip(vtkIdType size, const vtkIdType* ids, vtkCellArray* triangles)
-{
-  for (vtkIdType k = 0; k + 2 < size; ++k)
-  {
-    vtkIdType a = ids[k], b = ids[k + 1];
-    const vtkIdType c = ids[k + 2];
-    if (k % 2)
-    {
-      std::swap(a, b);
-    }
-    if (a != b && b != c && a != c)
-    {
-      triangles->InsertNextCell({ a, b, c });
-    }
-  }
-}
-
-// The triangles of the faces, then of the strips; `sources` gets the cell
-// (in VTK's numbering: faces, then strips) that each triangle comes from,
-// and stays empty where the faces are all triangles already.
-vtkSmartPointer<vtkCellArray> Triangulate(
-  vtkPolyData* polygons, vtkPoints* points, std::vector<vtkIdType>& sources)
-{
-  vtkCellArray* faces = polygons->GetPolys();
-  vtkCellArray* strips = polygons->GetStrips();
-  const bool hasStrips = strips && strips->GetNumberOfCells() > 0;
-  const vtkIdType faceCount = faces ? faces->GetNumberOfCells() : 0;
-  if (!hasStrips && faces && faces->IsHomogeneous() == 3)
-  {
-    return faces; // already triangles: the common case, shared as it is
-  }
-  auto triangles = vtkSmartPointer<vtkCellArray>::New();
-  vtkNew<vtkPolygon> polygon;
-  vtkNew<vtkIdList> local;
-  vtkIdType size;
-  const vtkIdType* ids;
-  const auto addSources = [&](vtkIdType cell)
-  { sources.resize(triangles->GetNumberOfCells(), cell); };
-  if (faces)
-  {
-    auto cell = vtk::TakeSmartPointer(faces->NewIterator());
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-    {
-      cell->GetCurrentCell(size, ids);
-      if (size == 3)
-      {
-        triangles->InsertNextCell(3, ids);
-      }
-      else
-      {
-        AddPolygon(size, ids, points, polygon, local, triangles);
-      }
-      addSources(cell->GetCurrentCellId());
-    }
-  }
-  if (hasStrips)
-  {
-    auto cell = vtk::TakeSmartPointer(strips->NewIterator());
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-    {
-      cell->GetCurrentCell(size, ids);
-      AddStrip(size, ids, triangles);
-      addSources(faceCount + cell->GetCurrentCellId());
-    }
-  }
-  return triangles;
 }
 
 // The part of each triangle from that of its face or strip; null where the

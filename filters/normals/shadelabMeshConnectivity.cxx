@@ -46,7 +46,7 @@ MeshConnectivity::MeshConnectivity() = default;
 MeshConnectivity::~MeshConnectivity() = default;
 
 void MeshConnectivity::Build(
-  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting)
+  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect)
 {
   this->Points = input->GetNumberOfPoints();
   this->Triangles = std::move(triangles);
@@ -58,21 +58,35 @@ void MeshConnectivity::Build(
     this->XYZ = vtkSmartPointer<vtkDoubleArray>::New();
     this->XYZ->DeepCopy(input->GetPoints()->GetData());
   }
-  // The face geometry needs no connectivity: it is computed on a second
-  // thread while OpenMesh builds hers (add_face is most of the time). A
-  // future, so that it is waited for even if the build throws.
-  auto faceGeometry = std::async(std::launch::async,
-    [this, weighting]
+  const auto faceGeometry = [this, weighting](bool parallel)
+  {
+    this->ComputeFaceNormals(parallel);
+    if (HasCornerWeights(weighting))
     {
-      this->ComputeFaceNormals();
-      if (HasCornerWeights(weighting))
-      {
-        // One core: the other is busy with add_face.
-        this->CornerWeights(weighting, false);
-      }
-    });
-  this->AddFaces();
-  faceGeometry.get();
+      this->CornerWeights(weighting, parallel);
+    }
+  };
+  if (!connect)
+  {
+    faceGeometry(true);
+    return;
+  }
+  // The face geometry needs no connectivity: it is computed on a second
+  // thread while OpenMesh builds hers (add_face is most of the time), on
+  // one core, as the other is busy with add_face. A future, so that it is
+  // waited for even if the build throws.
+  auto computed = std::async(std::launch::async, faceGeometry, false);
+  this->Connect();
+  computed.get();
+}
+
+void MeshConnectivity::Connect()
+{
+  if (!this->Connected)
+  {
+    this->AddFaces();
+    this->Connected = true;
+  }
 }
 
 // The input's points as OpenMesh's first vertices, then its faces, with
@@ -121,7 +135,7 @@ void MeshConnectivity::AddFaces()
   }
 }
 
-void MeshConnectivity::ComputeFaceNormals()
+void MeshConnectivity::ComputeFaceNormals(bool parallel)
 {
   const double* xyz = this->XYZ->GetPointer(0);
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
@@ -133,20 +147,34 @@ void MeshConnectivity::ComputeFaceNormals()
   this->CellNormals->SetNumberOfTuples(faces);
   float* out = this->CellNormals->GetPointer(0);
   const Id* tri = this->Triangles.data();
-  for (vtkIdType f = 0; f < faces; ++f)
+  Vec3* faceNormal = this->FaceNormal.data();
+  double* doubleArea = this->DoubleArea.data();
+  // Independent per face, so cores can share it.
+  const auto compute = [=](vtkIdType begin, vtkIdType end)
   {
-    const Vec3 p0 = PointAt(xyz, tri[3 * f]);
-    const Vec3 n =
-      OpenMesh::cross(PointAt(xyz, tri[3 * f + 1]) - p0, PointAt(xyz, tri[3 * f + 2]) - p0);
-    const double length = n.norm();
-    // Zero (or overflowing) cross products give no direction: no weight.
-    const bool usable = length > 0 && std::isfinite(length);
-    this->FaceNormal[f] = usable ? n / length : Vec3(0, 0, 0);
-    this->DoubleArea[f] = usable ? length : 0;
-    for (int c = 0; c < 3; ++c)
+    for (vtkIdType f = begin; f < end; ++f)
     {
-      out[3 * f + c] = static_cast<float>(this->FaceNormal[f][c]);
+      const Vec3 p0 = PointAt(xyz, tri[3 * f]);
+      const Vec3 n =
+        OpenMesh::cross(PointAt(xyz, tri[3 * f + 1]) - p0, PointAt(xyz, tri[3 * f + 2]) - p0);
+      const double length = n.norm();
+      // Zero (or overflowing) cross products give no direction: no weight.
+      const bool usable = length > 0 && std::isfinite(length);
+      faceNormal[f] = usable ? n / length : Vec3(0, 0, 0);
+      doubleArea[f] = usable ? length : 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        out[3 * f + c] = static_cast<float>(faceNormal[f][c]);
+      }
     }
+  };
+  if (parallel)
+  {
+    vtkSMPTools::For(0, faces, compute);
+  }
+  else
+  {
+    compute(0, faces);
   }
 }
 

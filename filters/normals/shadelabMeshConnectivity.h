@@ -3,10 +3,14 @@
  *
  * What vtkShadelabMeshNormals keeps between updates of the same input: a
  * change of weighting or of feature angle recomputes normals from it
- * without rebuilding it. OpenMesh vertex i < Points is input point i, and
- * OpenMesh face f is input face f. Faces that OpenMesh refuses (they would
- * make a non-manifold edge or vertex, or they repeat a vertex) get copies of
- * their vertices, appended after the input's points.
+ * without rebuilding it. The face geometry (normals, areas, corner
+ * weights) needs no connectivity and is all that summed vertex normals
+ * read; OpenMesh's mesh is built only when splitting or Loop normals ask
+ * for it (Connect), so it never changes a summed normal. OpenMesh vertex
+ * i < Points is input point i, and OpenMesh face f is input face f. Faces
+ * that OpenMesh refuses (they would make a non-manifold edge or vertex, or
+ * they repeat a vertex) get copies of their vertices, appended after the
+ * input's points.
  */
 #ifndef shadelabMeshConnectivity_h
 #define shadelabMeshConnectivity_h
@@ -32,6 +36,7 @@ public:
   vtkIdType Points = 0;               // OpenMesh vertex i < Points is input point i
   std::vector<Id> Triangles;          // 3 input point ids a face, as oriented
   bool Reversed = false;              // Consistency reversed some faces
+  bool Connected = false;             // Mesh, CopyOf and the rest below are built
   TriMesh Mesh;                       // face f is input face f
   std::vector<Id> CopyOf;             // OpenMesh vertex Points + i copies CopyOf[i]
   std::vector<bool> InDuplicatedFace; // per input point
@@ -43,11 +48,16 @@ public:
   vtkSmartPointer<vtkFloatArray> CellNormals; // FaceNormal as the output stores it
 
   /**
-   * Builds it all from the input's points and its `triangles` (3 point ids
-   * a face; oriented consistently first if `consistency`), with the corner
-   * weights of `weighting` ready.
+   * Builds the face geometry from the input's points and its `triangles` (3
+   * point ids a face; oriented consistently first if `consistency`), with
+   * the corner weights of `weighting` ready, and OpenMesh's connectivity
+   * too if `connect` (on a second thread meanwhile).
    */
-  void Build(vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting);
+  void Build(
+    vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect);
+
+  /** Builds OpenMesh's connectivity unless Build or an earlier call did. */
+  void Connect();
 
   /**
    * The weight of each face corner (3 a face) for the Angle or Max
@@ -60,7 +70,7 @@ private:
   MeshConnectivity(const MeshConnectivity&) = delete;
   void operator=(const MeshConnectivity&) = delete;
 
-  void ComputeFaceNormals();
+  void ComputeFaceNormals(bool parallel);
   void AddFaces();
 
   int WeightsOf = -1;               // the weighting CornerWeight is for

@@ -337,6 +337,9 @@ int vtkShadelabMeshNormals::RequestData(
     return 1; // nothing to compute normals for: an empty output, as vtkPolyDataNormals gives
   }
 
+  // Only splitting and Loop normals walk OpenMesh's connectivity; summed
+  // normals read the face geometry alone, so they are the same without it.
+  const bool connect = this->Splitting || this->Weighting == Loop;
   if (!this->Cached || this->Cached->Input != input ||
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)
   {
@@ -363,7 +366,7 @@ int vtkShadelabMeshNormals::RequestData(
     cache->InputTime = input->GetMTime();
     cache->Consistency = this->Consistency;
     cache->Mesh.Build(input, this->Consistency, std::move(triangles),
-      shadelab::normals::SummedWeighting(this->Weighting));
+      shadelab::normals::SummedWeighting(this->Weighting), connect);
     if (cache->Files.Active() && cache->Mesh.Reversed)
     {
       cache->Files.FollowOrientation(cache->Mesh.Triangles);
@@ -372,7 +375,11 @@ int vtkShadelabMeshNormals::RequestData(
     ++this->NumberOfConnectivityBuilds;
   }
   MeshConnectivity& mesh = this->Cached->Mesh;
-  this->NumberOfDuplicatedFaces = mesh.DuplicatedFaces;
+  if (connect)
+  {
+    mesh.Connect();
+  }
+  this->NumberOfDuplicatedFaces = connect ? mesh.DuplicatedFaces : 0;
 
   OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
   std::vector<Sum> sum =

@@ -41,13 +41,16 @@
  * each further run. A FileVertex that is not one point number per point is
  * an error.
  *
- * OpenMesh's connectivity is built once per input (by its modification time)
- * and kept with the face normals and the last corner weights, so that
- * changing the weighting or the feature angle recomputes normals without
- * rebuilding it. Faces that OpenMesh refuses (they would make a non-manifold
- * edge or vertex, or they repeat a vertex) still get normals, through copies
- * of their vertices (with splitting, they keep those as points of their
- * own); GetNumberOfDuplicatedFaces() reports how many. Zero-area faces add
+ * The face normals and the last corner weights are computed once per input
+ * (by its modification time) and kept, with OpenMesh's connectivity where
+ * splitting or Loop normals need it (only they do: without them the vertex
+ * normals are the same sums without it, at a fraction of the time and
+ * memory), so that changing the weighting or the feature angle recomputes
+ * normals without rebuilding them. Faces that OpenMesh refuses (they would
+ * make a non-manifold edge or vertex, or they repeat a vertex) still get
+ * normals, through copies of their vertices (with splitting, they keep
+ * those as points of their own); GetNumberOfDuplicatedFaces() reports how
+ * many where the connectivity was used. Zero-area faces add
  * no weight and no NaN; a vertex with no face of positive area, or whose
  * faces' weighted normals cancel (a face and its reverse: the sum shorter
  * than 1e-12 of the weights' sum, rounding in no direction), gets
@@ -59,8 +62,8 @@
  * orientation).
  *
  * Both cores are used: the face geometry is computed while OpenMesh builds
- * the connectivity, and the weights, the splitting and Loop normals run
- * through vtkSMPTools.
+ * the connectivity (or through vtkSMPTools without it), and the weights,
+ * the splitting and Loop normals run through vtkSMPTools.
  */
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h
@@ -103,13 +106,16 @@ public:
   vtkGetMacro(Consistency, bool);
   vtkBooleanMacro(Consistency, bool);
 
-  /** Faces that needed duplicated vertices in the last update. */
+  /**
+   * Faces that needed duplicated vertices in the last update; 0 unless it
+   * used OpenMesh's connectivity (Splitting or Loop).
+   */
   vtkGetMacro(NumberOfDuplicatedFaces, vtkIdType);
 
   /**
-   * How often the OpenMesh connectivity has been built: once per new input
-   * (or Consistency change), not when only the weighting or the feature
-   * angle changed.
+   * How often the face geometry (and the OpenMesh connectivity, where
+   * needed) has been built: once per new input (or Consistency change), not
+   * when only the weighting or the feature angle changed.
    */
   vtkGetMacro(NumberOfConnectivityBuilds, int);
 

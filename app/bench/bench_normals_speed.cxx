@@ -4,6 +4,7 @@
 #include "bench/bench_normals.h"
 
 #include "core/milliseconds.h"
+#include "core/process_memory.h"
 #include "core/report_text.h"
 
 #include <vtkPolyData.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -26,21 +26,6 @@ namespace bench_normals
 namespace
 {
 using N = vtkShadelabMeshNormals;
-
-// A field of /proc/self/status ("VmRSS:", "VmHWM:") in MiB.
-double StatusMiB(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind(field, 0) == 0)
-    {
-      return std::stod(line.substr(std::strlen(field))) / 1024;
-    }
-  }
-  return std::numeric_limits<double>::quiet_NaN();
-}
 
 // Resets VmHWM to the current resident size; false where the kernel refuses.
 bool ResetPeak()

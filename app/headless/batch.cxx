@@ -1,7 +1,7 @@
 #include "headless/batch.h"
 
 #include "core/errors.h"
-#include "core/milliseconds.h"
+#include "core/phase_timer.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
 #include "headless/shader_dump.h"
@@ -20,7 +20,6 @@
 
 #include <signal.h>
 
-#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -55,28 +54,6 @@ public:
 
 private:
   struct sigaction OldInt = {}, OldTerm = {};
-};
-
-class PhaseTimer
-{
-public:
-  explicit PhaseTimer(bool enabled)
-    : Enabled(enabled)
-  {
-  }
-  void Lap(const char* phase)
-  {
-    const auto now = std::chrono::steady_clock::now();
-    if (this->Enabled)
-    {
-      std::cerr << "shadelab: " << phase << " " << Milliseconds(this->Last, now) << " ms\n";
-    }
-    this->Last = now;
-  }
-
-private:
-  bool Enabled;
-  std::chrono::steady_clock::time_point Last = std::chrono::steady_clock::now();
 };
 
 // Where a shot's pictures go in its file: every frame of an animation, or one.
@@ -123,8 +100,7 @@ public:
     {
       return;
     }
-    const LoadedMesh& loaded = this->Meshes.Get(shot.Scene);
-    this->Timer.Lap("mesh");
+    const LoadedMesh& loaded = this->Meshes.Get(shot.Scene); // times "read" and "normals"
     if (!loaded.Mesh)
     {
       this->Fail(shot, shot.Scene.Mesh, loaded.Error);
@@ -302,7 +278,7 @@ private:
   PhaseTimer Timer;
   ImageWriterProcess Writer;     // started first: it binds OpenImageIO while we render
   const Shot* Writing = nullptr; // submitted to the writer, not yet collected
-  MeshCache Meshes{ DecodingThrough(this->Writer) };
+  MeshCache Meshes{ DecodingThrough(this->Writer), &this->Timer };
   std::map<std::tuple<int, int, int>, Context> Contexts; // width, height, supersampling
 };
 

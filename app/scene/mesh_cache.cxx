@@ -10,7 +10,7 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
   auto cached = this->Meshes.find(key);
   if (cached == this->Meshes.end())
   {
-    cached = this->Meshes.emplace(key, LoadMesh(o)).first;
+    cached = this->Meshes.emplace(key, LoadMesh(o, this->Timer)).first;
   }
   return cached->second;
 }

@@ -34,8 +34,10 @@ struct LoadedTexture
 class MeshCache
 {
 public:
-  explicit MeshCache(ImageDecoder decoder)
+  /** `timer` (if given) times each mesh's reading and normals (LoadMesh). */
+  explicit MeshCache(ImageDecoder decoder, PhaseTimer* timer = nullptr)
     : Decoder(std::move(decoder))
+    , Timer(timer)
   {
   }
 
@@ -56,6 +58,7 @@ public:
 
 private:
   ImageDecoder Decoder;
+  PhaseTimer* Timer;
   std::map<std::string, LoadedTexture> Textures;
   // What makes two meshes the same: the file and how its normals are got
   // (LoadMesh computes them only for the lit rules).

@@ -59,8 +59,15 @@ vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
   return result;
 }
 
-LoadedMesh LoadMesh(const SceneOptions& options)
+LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer)
 {
+  const auto lap = [timer](const char* phase)
+  {
+    if (timer)
+    {
+      timer->Lap(phase);
+    }
+  };
   LoadedMesh result;
   auto reader = vtkSmartPointer<vtkShadelabMeshReader>::New();
   reader->SetFileName(options.Mesh.c_str());
@@ -78,6 +85,7 @@ LoadedMesh LoadMesh(const SceneOptions& options)
       return result;
     }
   }
+  lap("read");
   vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
   result.NormalsFromFile = mesh->GetPointData()->GetNormals() != nullptr;
 
@@ -102,6 +110,7 @@ LoadedMesh LoadMesh(const SceneOptions& options)
     result.DuplicatedFaces = normals.DuplicatedFaces;
     result.NormalsFromFile = false;
   }
+  lap("normals");
   result.Mesh = mesh;
   return result;
 }

@@ -4,6 +4,7 @@
 #define shadelab_mesh_input_h
 
 #include "core/options.h"
+#include "core/phase_timer.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -23,8 +24,11 @@ struct LoadedMesh
   vtkIdType DuplicatedFaces = 0; // ComputedNormals's, when they were computed
 };
 
-/** Reads options.Mesh and computes its normals as asked; warnings are reported. */
-LoadedMesh LoadMesh(const SceneOptions& options);
+/**
+ * Reads options.Mesh and computes its normals as asked; warnings are
+ * reported. `timer` (if given) times the phases "read" and "normals".
+ */
+LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer = nullptr);
 
 struct ComputedNormals
 {

@@ -8,6 +8,10 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
 
 using namespace shadelab_test;
 
@@ -119,6 +123,36 @@ TEST(Render, IsDeterministic)
     }
     EXPECT_TRUE(first == Bytes(dir / name)) << name << " differs between two runs";
   }
+}
+
+// -v: one line a phase, `shadelab: PHASE MS ms, peak MIB MiB` (benchmark
+// scripts parse it), the mesh's reading and normals apart, and the peak
+// resident memory (VmHWM) never falling.
+TEST(Render, VerboseTimesEachPhaseWithItsPeakMemory)
+{
+  TempDir dir;
+  const RunResult r = RunShadelab({ "render", TestMesh("stanford-bunny.ply").string(), "-o",
+    (dir / "out.png").string(), "--size", "64x48", "-v" });
+  ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  const std::regex line(R"(shadelab: (\w+) ([0-9.]+) ms, peak ([0-9]+) MiB)");
+  std::vector<std::string> phases;
+  long lastPeak = 0;
+  std::istringstream lines(r.Stderr);
+  for (std::string text; std::getline(lines, text);)
+  {
+    std::smatch m;
+    if (!std::regex_match(text, m, line))
+    {
+      continue; // VTK's messages, if any
+    }
+    phases.push_back(m[1]);
+    const long peak = std::stol(m[3]);
+    EXPECT_GE(peak, lastPeak) << text;
+    EXPECT_GT(peak, 0) << text;
+    lastPeak = peak;
+  }
+  EXPECT_EQ(phases, (std::vector<std::string>{ "read", "normals", "context", "frame", "write" }))
+    << r.Stderr;
 }
 
 // With --shading none every covered pixel is kd exactly, which pins the

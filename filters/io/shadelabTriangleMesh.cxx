@@ -15,39 +15,71 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace shadelab
 {
 namespace
 {
-vtkSmartPointer<vtkCellArray> MakeCells(
-  const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& ids)
+// Frees a parser's array once VTK's has its values: a large mesh is then
+// never held twice over.
+template <typename Value>
+void Release(std::vector<Value>& values)
 {
-  vtkNew<vtkIdTypeArray> offsetArray;
-  offsetArray->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
-  std::copy(offsets.begin(), offsets.end(), offsetArray->GetPointer(0));
-  vtkNew<vtkIdTypeArray> idArray;
-  idArray->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
-  std::copy(ids.begin(), ids.end(), idArray->GetPointer(0));
+  std::vector<Value>().swap(values);
+}
+
+// The values as a VTK array of type Array, the vector freed.
+template <typename Array, typename Value>
+vtkSmartPointer<Array> TakeValues(std::vector<Value>& values)
+{
+  auto array = vtkSmartPointer<Array>::New();
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  Release(values);
+  return array;
+}
+
+// A parser's cells, taken over: 32-bit storage (half the memory) where
+// every offset and id fits in it, even those out of range (checked later,
+// and named in their error as the file has them); 64-bit otherwise.
+vtkSmartPointer<vtkCellArray> TakeCells(
+  std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids)
+{
+  const auto [low, high] = std::minmax_element(ids.begin(), ids.end());
+  const bool fits = offsets.back() <= std::numeric_limits<vtkTypeInt32>::max() &&
+    (ids.empty() ||
+      (*low >= std::numeric_limits<vtkTypeInt32>::min() &&
+        *high <= std::numeric_limits<vtkTypeInt32>::max()));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsetArray, idArray);
+  if (fits)
+  {
+    cells->SetData(TakeValues<vtkTypeInt32Array>(offsets), TakeValues<vtkTypeInt32Array>(ids));
+  }
+  else
+  {
+    cells->SetData(TakeValues<vtkIdTypeArray>(offsets), TakeValues<vtkIdTypeArray>(ids));
+  }
   return cells;
 }
 
-// A parser's values as a VTK array of that type (vtkFloatArray for float...).
+// A parser's values as a VTK array of that type (vtkFloatArray for float...),
+// the vector freed.
 template <typename Array, typename Value>
-vtkSmartPointer<Array> MakeArray(const char* name, int components, const std::vector<Value>& values)
+vtkSmartPointer<Array> MakeArray(const char* name, int components, std::vector<Value>& values)
 {
   auto array = vtkSmartPointer<Array>::New();
   array->SetName(name);
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
   std::copy(values.begin(), values.end(), array->GetPointer(0));
+  Release(values);
   return array;
 }
 
@@ -220,14 +252,10 @@ vtkSmartPointer<vtkIntArray> TriangleParts(
 }
 }
 
-vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh)
+vtkSmartPointer<vtkPolyData> ToPolyData(PolygonMesh&& mesh)
 {
-  vtkNew<vtkDoubleArray> xyz;
-  xyz->SetNumberOfComponents(3);
-  xyz->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size() / 3));
-  std::copy(mesh.Points.begin(), mesh.Points.end(), xyz->GetPointer(0));
   vtkNew<vtkPoints> points;
-  points->SetData(xyz);
+  points->SetData(MakeArray<vtkDoubleArray>(nullptr, 3, mesh.Points));
 
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
@@ -249,8 +277,8 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh)
     data->GetPointData()->AddArray(
       MakeArray<vtkIdTypeArray>(FileVertexArrayName, 1, mesh.FileVertices));
   }
-  data->SetPolys(MakeCells(mesh.FaceOffsets, mesh.FaceIds));
-  data->SetStrips(MakeCells(mesh.StripOffsets, mesh.StripIds));
+  data->SetPolys(TakeCells(mesh.FaceOffsets, mesh.FaceIds));
+  data->SetStrips(TakeCells(mesh.StripOffsets, mesh.StripIds));
   if (!mesh.Parts.empty())
   {
     data->GetCellData()->AddArray(MakeArray<vtkIntArray>(PartArrayName, 1, mesh.Parts));

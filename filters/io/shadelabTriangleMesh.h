@@ -62,8 +62,12 @@ struct PolygonMesh
   std::vector<int> Parts;
 };
 
-/** The parser's arrays as vtkPolyData: points, point and cell attributes, polys and strips. */
-vtkSmartPointer<vtkPolyData> ToPolyData(const PolygonMesh& mesh);
+/**
+ * The parser's arrays as vtkPolyData: points, point and cell attributes,
+ * polys and strips (in 32-bit storage where their numbers fit). Each array
+ * of `mesh` is freed as soon as it is copied.
+ */
+vtkSmartPointer<vtkPolyData> ToPolyData(PolygonMesh&& mesh);
 
 /**
  * Checks `polygons` and writes the triangle mesh into `triangles`. Throws

@@ -8,6 +8,8 @@
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
 
+#include <limits>
+
 namespace shadelab
 {
 namespace
@@ -72,6 +74,16 @@ vtkSmartPointer<vtkCellArray> Triangulate(
     return faces; // already triangles: the common case, shared as it is
   }
   auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  // 32-bit storage where the input's is and the triangles' corners (at
+  // most 3 per input corner) still fit in it.
+  const auto corners = [](vtkCellArray* cells)
+  { return cells ? cells->GetNumberOfConnectivityIds() : 0; };
+  const bool narrow =
+    (!faces || !faces->IsStorage64Bit()) && (!strips || !strips->IsStorage64Bit());
+  if (narrow && 3 * (corners(faces) + corners(strips)) < std::numeric_limits<vtkTypeInt32>::max())
+  {
+    triangles->Use32BitStorage();
+  }
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> local;
   vtkIdType size;

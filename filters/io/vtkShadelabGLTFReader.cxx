@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabGLTFReader);
@@ -370,7 +371,7 @@ void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   {
     vtkWarningMacro(<< "some primitives have no NORMAL, so the file's normals are ignored");
   }
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(builder.Finish()), triangles);
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(builder.Finish())), triangles);
 
   for (const std::string& warning : builder.Warnings)
   {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabOBJReader);
@@ -303,7 +304,7 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   mesh.FaceOffsets = std::move(obj.FaceOffsets);
   mesh.FaceIds = std::move(obj.Corners.VertexIds);
   mesh.Parts = std::move(obj.FaceParts);
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles, 1);
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh)), triangles, 1);
   if (!obj.MaterialNames.empty())
   {
     std::vector<shadelab::Texture> textures;

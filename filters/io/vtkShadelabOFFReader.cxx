@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabOFFReader);
@@ -351,5 +352,5 @@ void vtkShadelabOFFReader::ReadMesh(const char* fileName, vtkPolyData* triangles
     scanner.Fail("more than the " + std::to_string(header.Faces) + " faces the header declares");
   }
   ScaleColors(parsed);
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles);
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh)), triangles);
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabPLYReader);
@@ -44,6 +45,8 @@ public:
     else
     {
       this->Offsets.reserve(this->Offsets.size() + element.Count);
+      // Triangles, most often: the ids then never move while they grow.
+      this->Ids.reserve(this->Ids.size() + (this->Role == Kind::Face ? 3 * element.Count : 0));
     }
   }
 
@@ -221,21 +224,23 @@ void ReadBody(Source&& source, const Header& header, shadelab::PolygonMesh& mesh
 
 void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
-  const std::string bytes = ReadFileBytes(fileName);
-  shadelab::TextScanner scanner(bytes);
-  Header header = ReadHeader(bytes, scanner);
-  AssignRoles(header);
-  CheckCounts(header, bytes.size());
-
   shadelab::PolygonMesh mesh;
-  if (header.Format == Encoding::Ascii)
   {
-    ReadBody(AsciiSource(scanner), header, mesh);
+    // The file's bytes go before the mesh is converted: not held beside it.
+    const std::string bytes = ReadFileBytes(fileName);
+    shadelab::TextScanner scanner(bytes);
+    Header header = ReadHeader(bytes, scanner);
+    AssignRoles(header);
+    CheckCounts(header, bytes.size());
+    if (header.Format == Encoding::Ascii)
+    {
+      ReadBody(AsciiSource(scanner), header, mesh);
+    }
+    else
+    {
+      const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
+      ReadBody(BinarySource(body, header.Format == Encoding::BigEndian), header, mesh);
+    }
   }
-  else
-  {
-    const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
-    ReadBody(BinarySource(body, header.Format == Encoding::BigEndian), header, mesh);
-  }
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles);
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh)), triangles);
 }

@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 vtkStandardNewMacro(vtkShadelabSTLReader);
 
@@ -249,5 +250,5 @@ void vtkShadelabSTLReader::ReadMesh(const char* fileName, vtkPolyData* triangles
       " triangles, which take " + std::to_string(HeaderBytes + TriangleBytes * count) +
       " bytes, but the file has " + std::to_string(bytes.size()) + " bytes");
   }
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(mesh), triangles);
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh)), triangles);
 }

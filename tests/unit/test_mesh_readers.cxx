@@ -94,6 +94,8 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_EQ(result.Mesh->GetNumberOfPolys(), triangles);
     ExpectTriangleMesh(result.Mesh);
+    // Ids that fit are stored in 32 bits: half the memory of a large mesh.
+    EXPECT_FALSE(result.Mesh->GetPolys()->IsStorage64Bit());
     covered.insert(name);
   }
   for (const auto& entry : fs::directory_iterator(TestMeshes))
@@ -889,6 +891,9 @@ TEST_F(MeshReaders, BadPly)
     { "face 1 refers to vertex 7, but only 4 vertices are defined" });
   this->ExpectError("negative.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 -2 3\n",
     { "face 1 refers to vertex -2" });
+  // Beyond 32 bits: the cells stay 64-bit, so the error names the file's number.
+  this->ExpectError("far.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 3000000000 3\n",
+    { "face 1 refers to vertex 3000000000" });
   this->ExpectError(
     "two.ply", AsciiPlyHeader + AsciiPlyVertices + "2 0 1\n3 0 2 3\n", { "face 0 has 2 vertices" });
   this->ExpectError("number.ply", AsciiPlyHeader + "0 0 0\n1 0 0\n1 1 zero\n",

@@ -16,7 +16,7 @@ void ComputeCornerWeights(int weighting, const double* xyz, const Id* tri, const
     const Vec3 p[3] = { PointAt(xyz, tri[3 * f]), PointAt(xyz, tri[3 * f + 1]),
       PointAt(xyz, tri[3 * f + 2]) };
     const Vec3 e[3] = { p[1] - p[0], p[2] - p[1], p[0] - p[2] };
-    double* corner = w + 3 * f;
+    double* corner = w + 3 * (f - begin);
     if (area2 == 0)
     {
       corner[0] = corner[1] = corner[2] = 0; // a face of no area has no weight

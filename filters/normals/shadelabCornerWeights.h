@@ -30,8 +30,9 @@ inline bool HasCornerWeights(int weighting)
 
 /**
  * Angle's or Max's weights of the corners of faces begin to end - 1 (3 a
- * face, into `weights`), from the points `xyz`, the faces' 3 point ids
- * each and their doubled areas (zero for faces of no area, which weigh 0).
+ * face, into `weights`, face begin's first), from the points `xyz`, the
+ * faces' 3 point ids each and their doubled areas (zero for faces of no
+ * area, which weigh 0).
  */
 void ComputeCornerWeights(int weighting, const double* xyz, const Id* triangles,
   const double* doubleArea, vtkIdType begin, vtkIdType end, double* weights);

@@ -58,24 +58,24 @@ void MeshConnectivity::Build(
     this->XYZ = vtkSmartPointer<vtkDoubleArray>::New();
     this->XYZ->DeepCopy(input->GetPoints()->GetData());
   }
-  const auto faceGeometry = [this, weighting](bool parallel)
-  {
-    this->ComputeFaceNormals(parallel);
-    if (HasCornerWeights(weighting))
-    {
-      this->CornerWeights(weighting, parallel);
-    }
-  };
   if (!connect)
   {
-    faceGeometry(true);
+    this->ComputeFaceNormals(true);
     return;
   }
   // The face geometry needs no connectivity: it is computed on a second
   // thread while OpenMesh builds hers (add_face is most of the time), on
   // one core, as the other is busy with add_face. A future, so that it is
   // waited for even if the build throws.
-  auto computed = std::async(std::launch::async, faceGeometry, false);
+  auto computed = std::async(std::launch::async,
+    [this, weighting]
+    {
+      this->ComputeFaceNormals(false);
+      if (HasCornerWeights(weighting))
+      {
+        this->StoreCornerWeights(weighting);
+      }
+    });
   this->Connect();
   computed.get();
 }
@@ -178,31 +178,13 @@ void MeshConnectivity::ComputeFaceNormals(bool parallel)
   }
 }
 
-const std::vector<double>& MeshConnectivity::CornerWeights(int weighting, bool parallel)
+void MeshConnectivity::StoreCornerWeights(int weighting)
 {
-  if (this->WeightsOf == weighting)
-  {
-    return this->CornerWeight;
-  }
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
   this->CornerWeight.resize(3 * faces);
   // The input's points: OpenMesh's may grow meanwhile (Build).
-  const double* xyz = this->XYZ->GetPointer(0);
-  const Id* tri = this->Triangles.data();
-  const double* doubleArea = this->DoubleArea.data();
-  double* w = this->CornerWeight.data();
-  // Independent per face, so cores can share it.
-  auto weigh = [=](vtkIdType begin, vtkIdType end)
-  { ComputeCornerWeights(weighting, xyz, tri, doubleArea, begin, end, w); };
-  if (parallel)
-  {
-    vtkSMPTools::For(0, faces, weigh);
-  }
-  else
-  {
-    weigh(0, faces);
-  }
+  ComputeCornerWeights(weighting, this->XYZ->GetPointer(0), this->Triangles.data(),
+    this->DoubleArea.data(), 0, faces, this->CornerWeight.data());
   this->WeightsOf = weighting;
-  return this->CornerWeight;
 }
 }

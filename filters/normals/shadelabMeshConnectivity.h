@@ -61,10 +61,14 @@ public:
 
   /**
    * The weight of each face corner (3 a face) for the Angle or Max
-   * weighting, on both cores unless `parallel` is false; kept for the
-   * next call with the same weighting.
+   * weighting where Build computed them beside OpenMesh's build (the time
+   * is free there); null otherwise: the sum then weighs each face as it
+   * adds it, which keeps a large mesh's 3 doubles a face out of memory.
    */
-  const std::vector<double>& CornerWeights(int weighting, bool parallel = true);
+  const double* StoredCornerWeights(int weighting) const
+  {
+    return this->WeightsOf == weighting ? this->CornerWeight.data() : nullptr;
+  }
 
 private:
   MeshConnectivity(const MeshConnectivity&) = delete;
@@ -72,6 +76,8 @@ private:
 
   void ComputeFaceNormals(bool parallel);
   void AddFaces();
+
+  void StoreCornerWeights(int weighting);
 
   int WeightsOf = -1;               // the weighting CornerWeight is for
   std::vector<double> CornerWeight; // 3 a face

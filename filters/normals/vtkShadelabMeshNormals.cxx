@@ -149,13 +149,16 @@ struct Sum
   double Weight = 0; // beside the normal: one cache line for both
 };
 
-// Each face's weighted unit normal, summed into its corners' points.
-std::vector<Sum> SumFaceNormals(MeshConnectivity& c, const OutputTopology& topology, int weighting)
+// Each face's weighted unit normal, summed into its corners' points, face
+// by face in the input's order (the order fixes the sums' bits).
+std::vector<Sum> SumFaceNormals(
+  const MeshConnectivity& c, const OutputTopology& topology, int weighting)
 {
   const Id* corners =
     topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.Triangles.data();
-  const double* cornerWeight =
-    shadelab::normals::HasCornerWeights(weighting) ? c.CornerWeights(weighting).data() : nullptr;
+  const bool cornerWeights = shadelab::normals::HasCornerWeights(weighting);
+  const double* stored = c.StoredCornerWeights(weighting);
+  const double* xyz = c.XYZ->GetPointer(0);
   const vtkIdType faces = static_cast<vtkIdType>(c.Triangles.size() / 3);
   std::vector<Sum> sum(topology.Points);
   for (vtkIdType f = 0; f < faces; ++f)
@@ -165,9 +168,23 @@ std::vector<Sum> SumFaceNormals(MeshConnectivity& c, const OutputTopology& topol
     {
       continue; // a face of no area adds nothing
     }
+    // The face's own weights where none are stored: the same function on
+    // the same values, so the same bits.
+    double own[3];
+    const double* weights = nullptr;
+    if (cornerWeights && stored)
+    {
+      weights = stored + 3 * f;
+    }
+    else if (cornerWeights)
+    {
+      shadelab::normals::ComputeCornerWeights(
+        weighting, xyz, c.Triangles.data(), c.DoubleArea.data(), f, f + 1, own);
+      weights = own;
+    }
     for (int k = 0; k < 3; ++k)
     {
-      const double w = shadelab::normals::CornerWeight(weighting, area2, cornerWeight, 3 * f + k);
+      const double w = shadelab::normals::CornerWeight(weighting, area2, weights, k);
       Sum& s = sum[corners[3 * f + k]];
       s.Normal += w * c.FaceNormal[f];
       s.Weight += w;

@@ -41,8 +41,9 @@
  * each further run. A FileVertex that is not one point number per point is
  * an error.
  *
- * The face normals and the last corner weights are computed once per input
- * (by its modification time) and kept, with OpenMesh's connectivity where
+ * The face normals are computed once per input (by its modification time)
+ * and kept, with OpenMesh's connectivity (and the corner weights, computed
+ * beside it) where
  * splitting or Loop normals need it (only they do: without them the vertex
  * normals are the same sums without it, at a fraction of the time and
  * memory), so that changing the weighting or the feature angle recomputes
@@ -62,8 +63,10 @@
  * orientation).
  *
  * Both cores are used: the face geometry is computed while OpenMesh builds
- * the connectivity (or through vtkSMPTools without it), and the weights,
- * the splitting and Loop normals run through vtkSMPTools.
+ * the connectivity (or through vtkSMPTools without it), and the splitting
+ * and Loop normals run through vtkSMPTools. Without the connectivity the
+ * sum weighs each face as it adds it, in the same order and with the same
+ * arithmetic: no stored weights (3 doubles a face) at the same bits.
  */
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h

@@ -27,7 +27,11 @@ ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& setting
   ComputedNormals result;
   if (normals->GetExecutive()->Update())
   {
-    result.Mesh = normals->GetOutput();
+    // A copy of the output's arrays without its pipeline information: that
+    // refers to the filter, whose cache (3 ids, 4 doubles a face) would
+    // otherwise live as long as the mesh.
+    result.Mesh = vtkSmartPointer<vtkPolyData>::New();
+    result.Mesh->ShallowCopy(normals->GetOutput());
     result.DuplicatedFaces = normals->GetNumberOfDuplicatedFaces();
   }
   else

@@ -11,7 +11,7 @@ void ComputeCornerWeights(int weighting, const double* xyz, const Id* tri, const
 {
   for (vtkIdType f = begin; f < end; ++f)
   {
-    const double area2 = doubleArea[f];
+    const double area2 = doubleArea[f - begin];
     // Edge k runs from corner k to corner k + 1.
     const Vec3 p[3] = { PointAt(xyz, tri[3 * f]), PointAt(xyz, tri[3 * f + 1]),
       PointAt(xyz, tri[3 * f + 2]) };

@@ -31,8 +31,9 @@ inline bool HasCornerWeights(int weighting)
 /**
  * Angle's or Max's weights of the corners of faces begin to end - 1 (3 a
  * face, into `weights`, face begin's first), from the points `xyz`, the
- * faces' 3 point ids each and their doubled areas (zero for faces of no
- * area, which weigh 0).
+ * faces' 3 point ids each and the doubled areas of faces begin to end - 1
+ * (`doubleArea`, face begin's first; zero for faces of no area, which
+ * weigh 0).
  */
 void ComputeCornerWeights(int weighting, const double* xyz, const Id* triangles,
   const double* doubleArea, vtkIdType begin, vtkIdType end, double* weights);

@@ -60,7 +60,7 @@ void MeshConnectivity::Build(
   }
   if (!connect)
   {
-    this->ComputeFaceNormals(true);
+    this->ComputeFaceNormals(true, false);
     return;
   }
   // The face geometry needs no connectivity: it is computed on a second
@@ -70,20 +70,22 @@ void MeshConnectivity::Build(
   auto computed = std::async(std::launch::async,
     [this, weighting]
     {
-      this->ComputeFaceNormals(false);
+      this->ComputeFaceNormals(false, true);
       if (HasCornerWeights(weighting))
       {
         this->StoreCornerWeights(weighting);
       }
     });
-  this->Connect();
+  this->AddFaces();
   computed.get();
+  this->Connected = true;
 }
 
 void MeshConnectivity::Connect()
 {
   if (!this->Connected)
   {
+    this->ComputeFaceNormals(true, true);
     this->AddFaces();
     this->Connected = true;
   }
@@ -135,12 +137,12 @@ void MeshConnectivity::AddFaces()
   }
 }
 
-void MeshConnectivity::ComputeFaceNormals(bool parallel)
+void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
 {
   const double* xyz = this->XYZ->GetPointer(0);
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
-  this->FaceNormal.resize(faces);
-  this->DoubleArea.resize(faces);
+  this->FaceNormal.resize(store ? faces : 0);
+  this->DoubleArea.resize(store ? faces : 0);
   this->CellNormals = vtkSmartPointer<vtkFloatArray>::New();
   this->CellNormals->SetName("Normals");
   this->CellNormals->SetNumberOfComponents(3);
@@ -154,17 +156,16 @@ void MeshConnectivity::ComputeFaceNormals(bool parallel)
   {
     for (vtkIdType f = begin; f < end; ++f)
     {
-      const Vec3 p0 = PointAt(xyz, tri[3 * f]);
-      const Vec3 n =
-        OpenMesh::cross(PointAt(xyz, tri[3 * f + 1]) - p0, PointAt(xyz, tri[3 * f + 2]) - p0);
-      const double length = n.norm();
-      // Zero (or overflowing) cross products give no direction: no weight.
-      const bool usable = length > 0 && std::isfinite(length);
-      faceNormal[f] = usable ? n / length : Vec3(0, 0, 0);
-      doubleArea[f] = usable ? length : 0;
+      Vec3 n;
+      const double area2 = FaceGeometry(xyz, tri, f, n);
+      if (store)
+      {
+        faceNormal[f] = n;
+        doubleArea[f] = area2;
+      }
       for (int c = 0; c < 3; ++c)
       {
-        out[3 * f + c] = static_cast<float>(faceNormal[f][c]);
+        out[3 * f + c] = static_cast<float>(n[c]);
       }
     }
   };

@@ -21,12 +21,31 @@
 #include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
 
+#include <cmath>
 #include <vector>
 
 class vtkPolyData;
 
 namespace shadelab::normals
 {
+/**
+ * Face f's unit normal (zero if it has no area) and its doubled area
+ * |e1 x e2| (zero for no area, or an overflowing cross product), from the
+ * points `xyz` and the faces' 3 point ids each `triangles`: the one
+ * computation of both, stored or not.
+ */
+inline double FaceGeometry(const double* xyz, const Id* triangles, vtkIdType f, Vec3& unitNormal)
+{
+  const Vec3 p0 = PointAt(xyz, triangles[3 * f]);
+  const Vec3 n = OpenMesh::cross(
+    PointAt(xyz, triangles[3 * f + 1]) - p0, PointAt(xyz, triangles[3 * f + 2]) - p0);
+  const double length = n.norm();
+  // Zero (or overflowing) cross products give no direction: no weight.
+  const bool usable = length > 0 && std::isfinite(length);
+  unitNormal = usable ? n / length : Vec3(0, 0, 0);
+  return usable ? length : 0;
+}
+
 class MeshConnectivity
 {
 public:
@@ -42,21 +61,24 @@ public:
   std::vector<bool> InDuplicatedFace; // per input point
   vtkIdType DuplicatedFaces = 0;
 
-  vtkSmartPointer<vtkDoubleArray> XYZ;        // the input's points, in double
-  std::vector<Vec3> FaceNormal;               // unit; zero for faces of no area
-  std::vector<double> DoubleArea;             // |e1 x e2|; zero for faces of no area
-  vtkSmartPointer<vtkFloatArray> CellNormals; // FaceNormal as the output stores it
+  vtkSmartPointer<vtkDoubleArray> XYZ; // the input's points, in double
+  // Per face (FaceGeometry), stored with the connectivity only (splitting
+  // reads them there); without it the sum computes each face's as it adds
+  // it, which keeps a large mesh's 4 doubles a face out of memory.
+  std::vector<Vec3> FaceNormal;
+  std::vector<double> DoubleArea;
+  vtkSmartPointer<vtkFloatArray> CellNormals; // the unit face normals as the output stores them
 
   /**
-   * Builds the face geometry from the input's points and its `triangles` (3
-   * point ids a face; oriented consistently first if `consistency`), with
-   * the corner weights of `weighting` ready, and OpenMesh's connectivity
-   * too if `connect` (on a second thread meanwhile).
+   * Takes the input's points and its `triangles` (3 point ids a face;
+   * oriented consistently first if `consistency`) and computes CellNormals;
+   * if `connect`, also OpenMesh's connectivity with the stored face geometry
+   * and the corner weights of `weighting` (on a second thread meanwhile).
    */
   void Build(
     vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect);
 
-  /** Builds OpenMesh's connectivity unless Build or an earlier call did. */
+  /** Builds OpenMesh's connectivity and stores the face geometry, unless done. */
   void Connect();
 
   /**
@@ -74,7 +96,7 @@ private:
   MeshConnectivity(const MeshConnectivity&) = delete;
   void operator=(const MeshConnectivity&) = delete;
 
-  void ComputeFaceNormals(bool parallel);
+  void ComputeFaceNormals(bool parallel, bool store);
   void AddFaces();
 
   void StoreCornerWeights(int weighting);

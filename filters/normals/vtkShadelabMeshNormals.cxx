@@ -150,7 +150,9 @@ struct Sum
 };
 
 // Each face's weighted unit normal, summed into its corners' points, face
-// by face in the input's order (the order fixes the sums' bits).
+// by face in the input's order (the order fixes the sums' bits). Where the
+// face geometry and the weights are not stored, each face's are computed as
+// it is added: the same functions on the same values, so the same bits.
 std::vector<Sum> SumFaceNormals(
   const MeshConnectivity& c, const OutputTopology& topology, int weighting)
 {
@@ -158,18 +160,28 @@ std::vector<Sum> SumFaceNormals(
     topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.Triangles.data();
   const bool cornerWeights = shadelab::normals::HasCornerWeights(weighting);
   const double* stored = c.StoredCornerWeights(weighting);
+  const bool storedGeometry = !c.FaceNormal.empty();
   const double* xyz = c.XYZ->GetPointer(0);
+  const Id* triangles = c.Triangles.data();
   const vtkIdType faces = static_cast<vtkIdType>(c.Triangles.size() / 3);
   std::vector<Sum> sum(topology.Points);
   for (vtkIdType f = 0; f < faces; ++f)
   {
-    const double area2 = c.DoubleArea[f];
+    Vec3 normal;
+    double area2;
+    if (storedGeometry)
+    {
+      normal = c.FaceNormal[f];
+      area2 = c.DoubleArea[f];
+    }
+    else
+    {
+      area2 = shadelab::normals::FaceGeometry(xyz, triangles, f, normal);
+    }
     if (area2 == 0)
     {
       continue; // a face of no area adds nothing
     }
-    // The face's own weights where none are stored: the same function on
-    // the same values, so the same bits.
     double own[3];
     const double* weights = nullptr;
     if (cornerWeights && stored)
@@ -178,15 +190,14 @@ std::vector<Sum> SumFaceNormals(
     }
     else if (cornerWeights)
     {
-      shadelab::normals::ComputeCornerWeights(
-        weighting, xyz, c.Triangles.data(), c.DoubleArea.data(), f, f + 1, own);
+      shadelab::normals::ComputeCornerWeights(weighting, xyz, triangles, &area2, f, f + 1, own);
       weights = own;
     }
     for (int k = 0; k < 3; ++k)
     {
       const double w = shadelab::normals::CornerWeight(weighting, area2, weights, k);
       Sum& s = sum[corners[3 * f + k]];
-      s.Normal += w * c.FaceNormal[f];
+      s.Normal += w * normal;
       s.Weight += w;
     }
   }

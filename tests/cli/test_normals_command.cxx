@@ -104,11 +104,20 @@ TEST(NormalsCommand, NonManifoldFacesAreKeptAndReported)
   WriteText(dir / "fin.obj",
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
     "f 1 2 3\nf 2 1 4\nf 1 2 5\n");
+  // Splitting gives the refused face points of its own, and says so; plain
+  // sums need no connectivity, so the output's points are the file's and
+  // there is nothing to report.
+  const RunResult split = RunShadelab({ "normals", (dir / "fin.obj").string(), "-o",
+    (dir / "split.vtp").string(), "--feature-angle", "30" });
+  ASSERT_EQ(split.ExitCode, 0) << split.Stderr;
+  EXPECT_NE(split.Stderr.find("non-manifold"), std::string::npos) << split.Stderr;
+  EXPECT_EQ(ReadBack(dir / "split.vtp")->GetNumberOfPolys(), 3);
   const RunResult r =
     RunShadelab({ "normals", (dir / "fin.obj").string(), "-o", (dir / "fin.vtp").string() });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
-  EXPECT_NE(r.Stderr.find("non-manifold"), std::string::npos) << r.Stderr;
+  EXPECT_EQ(r.Stderr.find("non-manifold"), std::string::npos) << r.Stderr;
   vtkSmartPointer<vtkPolyData> mesh = ReadBack(dir / "fin.vtp");
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 5);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 3);
   vtkDataArray* normals = mesh->GetPointData()->GetNormals();
   ASSERT_NE(normals, nullptr);

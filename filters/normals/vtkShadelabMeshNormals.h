@@ -41,18 +41,17 @@
  * each further run. A FileVertex that is not one point number per point is
  * an error.
  *
- * The face normals are computed once per input (by its modification time)
- * and kept, with OpenMesh's connectivity (and the corner weights, computed
- * beside it) where
- * splitting or Loop normals need it (only they do: without them the vertex
- * normals are the same sums without it, at a fraction of the time and
- * memory), so that changing the weighting or the feature angle recomputes
- * normals without rebuilding them. Faces that OpenMesh refuses (they would
- * make a non-manifold edge or vertex, or they repeat a vertex) still get
- * normals, through copies of their vertices (with splitting, they keep
- * those as points of their own); GetNumberOfDuplicatedFaces() reports how
- * many where the connectivity was used. Zero-area faces add
- * no weight and no NaN; a vertex with no face of positive area, or whose
+ * OpenMesh's connectivity is built only where splitting or Loop normals
+ * need it: the other normals are sums over each vertex's faces, which need
+ * none (the same bits without it, at a fraction of the time and memory).
+ * Once built for an input (by its modification time) it is kept, with the
+ * face normals and corner weights computed beside it, so that changing the
+ * weighting or the feature angle recomputes normals without rebuilding it.
+ * Faces that OpenMesh refuses (they would make a non-manifold edge or
+ * vertex, or they repeat a vertex) still get normals, through copies of
+ * their vertices (with splitting, they keep those as points of their own);
+ * GetNumberOfDuplicatedFaces() reports how many where the connectivity was
+ * used. Zero-area faces add no weight and no NaN; a vertex with no face of positive area, or whose
  * faces' weighted normals cancel (a face and its reverse: the sum shorter
  * than 1e-12 of the weights' sum, rounding in no direction), gets
  * (0,0,0), which shadelab's shaders treat as "no normal". Consistency on
@@ -65,8 +64,9 @@
  * Both cores are used: the face geometry is computed while OpenMesh builds
  * the connectivity (or through vtkSMPTools without it), and the splitting
  * and Loop normals run through vtkSMPTools. Without the connectivity the
- * sum weighs each face as it adds it, in the same order and with the same
- * arithmetic: no stored weights (3 doubles a face) at the same bits.
+ * sum computes each face's normal, area and weights as it adds it, in the
+ * same order and with the same arithmetic: nothing stored per face (7
+ * doubles a face) at the same bits.
  */
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h

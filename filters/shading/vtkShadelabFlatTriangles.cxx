@@ -11,7 +11,6 @@
 #include <vtkDataArrayRange.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
-#include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
@@ -20,6 +19,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
 
 vtkStandardNewMacro(vtkShadelabFlatTriangles);
 
@@ -28,10 +29,11 @@ namespace
 // The output's connectivity (`out`, 3 ids a triangle) and, for each output
 // point, the input point it copies (`sources`): the used input points first,
 // in their order, then one copy for each triangle whose last vertex an
-// earlier triangle took. Returns the number of copies.
-template <typename Id>
+// earlier triangle took, in the triangles' order. Returns the number of
+// copies.
+template <typename InId, typename OutId>
 vtkIdType AssignProvokingPoints(
-  const Id* in, vtkIdType triangles, vtkIdType inputPoints, vtkIdType* out, vtkIdList* sources)
+  const InId* in, vtkIdType triangles, vtkIdType inputPoints, OutId* out, vtkIdList* sources)
 {
   std::vector<vtkIdType> kept(inputPoints, -1);
   for (vtkIdType i = 0; i < 3 * triangles; ++i)
@@ -46,25 +48,15 @@ vtkIdType AssignProvokingPoints(
       k = used++;
     }
   }
+  // Counted first, so that the sources are allocated once, at their size.
   std::vector<bool> owned(inputPoints, false);
-  std::vector<vtkIdType> copied; // the input point of each copy
+  vtkIdType copies = 0;
   for (vtkIdType t = 0; t < triangles; ++t)
   {
-    const Id* ids = in + 3 * t;
-    out[3 * t] = kept[ids[0]];
-    out[3 * t + 1] = kept[ids[1]];
-    if (!owned[ids[2]])
-    {
-      owned[ids[2]] = true;
-      out[3 * t + 2] = kept[ids[2]];
-    }
-    else
-    {
-      out[3 * t + 2] = used + static_cast<vtkIdType>(copied.size());
-      copied.push_back(ids[2]);
-    }
+    copies += owned[in[3 * t + 2]] ? 1 : 0;
+    owned[in[3 * t + 2]] = true;
   }
-  sources->SetNumberOfIds(used + static_cast<vtkIdType>(copied.size()));
+  sources->SetNumberOfIds(used + copies);
   vtkIdType* source = sources->GetPointer(0);
   for (vtkIdType p = 0; p < inputPoints; ++p)
   {
@@ -73,26 +65,45 @@ vtkIdType AssignProvokingPoints(
       source[kept[p]] = p;
     }
   }
-  std::copy(copied.begin(), copied.end(), source + used);
-  return static_cast<vtkIdType>(copied.size());
+  std::fill(owned.begin(), owned.end(), false);
+  vtkIdType next = used;
+  for (vtkIdType t = 0; t < triangles; ++t)
+  {
+    const InId* ids = in + 3 * t;
+    out[3 * t] = static_cast<OutId>(kept[ids[0]]);
+    out[3 * t + 1] = static_cast<OutId>(kept[ids[1]]);
+    if (!owned[ids[2]])
+    {
+      owned[ids[2]] = true;
+      out[3 * t + 2] = static_cast<OutId>(kept[ids[2]]);
+    }
+    else
+    {
+      source[next] = ids[2];
+      out[3 * t + 2] = static_cast<OutId>(next++);
+    }
+  }
+  return copies;
 }
 
-// Each triangle's unit normal of (p1 - p0) x (p2 - p0), in double, cast to
-// float, at its provoking (last) point; normals must hold zeros.
+// Each triangle's unit normal of (p1 - p0) x (p2 - p0), in double from the
+// input's points, cast to float, at its provoking (last) output point;
+// normals must hold zeros.
 struct FaceNormalsAtProvokingPoints
 {
-  template <typename PointArray>
-  void operator()(PointArray* points, const vtkIdType* ids, vtkIdType triangles, float* normals)
+  template <typename PointArray, typename InId, typename OutId>
+  void operator()(
+    PointArray* points, const InId* in, const OutId* out, vtkIdType triangles, float* normals) const
   {
     const auto xyz = vtk::DataArrayTupleRange<3>(points);
-    for (vtkIdType t = 0; t < triangles; ++t, ids += 3)
+    for (vtkIdType t = 0; t < triangles; ++t)
     {
       double p[3][3];
       for (int k = 0; k < 3; ++k)
       {
         for (int c = 0; c < 3; ++c)
         {
-          p[k][c] = static_cast<double>(xyz[ids[k]][c]);
+          p[k][c] = static_cast<double>(xyz[in[3 * t + k]][c]);
         }
       }
       double e1[3], e2[3], n[3];
@@ -100,7 +111,7 @@ struct FaceNormalsAtProvokingPoints
       vtkMath::Subtract(p[2], p[0], e2);
       vtkMath::Cross(e1, e2, n);
       vtkMath::Normalize(n); // leaves (0,0,0) as it is
-      float* provoking = normals + 3 * ids[2];
+      float* provoking = normals + 3 * static_cast<vtkIdType>(out[3 * t + 2]);
       for (int c = 0; c < 3; ++c)
       {
         provoking[c] = static_cast<float>(n[c]);
@@ -120,6 +131,62 @@ vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* array, vtkIdList* sources)
   array->GetTuples(sources, gathered);
   return gathered;
 }
+
+// input's triangles (`in`, its connectivity) with provoking points of their
+// own into output, its connectivity in OutIds; returns the number of copies.
+template <typename OutIds, typename InId>
+vtkIdType Build(vtkPolyData* input, const InId* in, vtkPolyData* output)
+{
+  using OutId = typename OutIds::ValueType;
+  const vtkIdType triangles = input->GetPolys()->GetNumberOfCells();
+  auto offsets = vtkSmartPointer<OutIds>::New();
+  auto connectivity = vtkSmartPointer<OutIds>::New();
+  offsets->SetNumberOfValues(triangles + 1);
+  connectivity->SetNumberOfValues(3 * triangles);
+  OutId* offset = offsets->GetPointer(0);
+  for (vtkIdType i = 0; i <= triangles; ++i)
+  {
+    offset[i] = static_cast<OutId>(3 * i);
+  }
+  OutId* out = connectivity->GetPointer(0);
+  auto sources = vtkSmartPointer<vtkIdList>::New();
+  const vtkIdType copies =
+    AssignProvokingPoints(in, triangles, input->GetNumberOfPoints(), out, sources.Get());
+  const vtkIdType points = sources->GetNumberOfIds();
+
+  auto positions = vtkSmartPointer<vtkPoints>::New();
+  positions->SetData(Gathered(input->GetPoints()->GetData(), sources));
+  output->SetPoints(positions);
+  // What the rules read per vertex besides the normal: kd from the colours,
+  // the texture coordinates; a copy takes its input point's, which the
+  // fragments interpolate as before.
+  for (const char* name : { shadelab::ColorsArrayName, shadelab::TextureCoordinatesArrayName })
+  {
+    if (vtkDataArray* array = input->GetPointData()->GetArray(name))
+    {
+      output->GetPointData()->AddArray(Gathered(array, sources));
+    }
+  }
+  sources = nullptr; // freed before the normals take their memory
+
+  auto normals = vtkSmartPointer<vtkFloatArray>::New();
+  normals->SetName(shadelab::FaceNormalArrayName);
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(points);
+  std::fill_n(normals->GetPointer(0), 3 * points, 0.0f);
+  const FaceNormalsAtProvokingPoints faceNormals;
+  vtkDataArray* xyz = input->GetPoints()->GetData();
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+        xyz, faceNormals, in, out, triangles, normals->GetPointer(0)))
+  {
+    faceNormals(xyz, in, out, triangles, normals->GetPointer(0));
+  }
+  output->GetPointData()->AddArray(normals);
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  output->SetPolys(cells);
+  return copies;
+}
 }
 
 int vtkShadelabFlatTriangles::RequestData(
@@ -137,53 +204,16 @@ int vtkShadelabFlatTriangles::RequestData(
     vtkErrorMacro("flat shading needs triangles only");
     return 0;
   }
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(triangles + 1);
-  connectivity->SetNumberOfValues(3 * triangles);
-  vtkIdType* offset = offsets->GetPointer(0);
-  for (vtkIdType i = 0; i <= triangles; ++i)
+  // 32-bit ids where they fit (the output has fewer than 3T points): half
+  // the memory of VTK's default 64-bit ids, the same index buffer.
+  auto build = [&](const auto* in)
   {
-    offset[i] = 3 * i;
-  }
-  auto sources = vtkSmartPointer<vtkIdList>::New();
-  const vtkIdType inputPoints = input->GetNumberOfPoints();
-  vtkIdType* ids = connectivity->GetPointer(0);
+    return 3 * triangles <= VTK_TYPE_INT32_MAX ? Build<vtkTypeInt32Array>(input, in, output)
+                                               : Build<vtkTypeInt64Array>(input, in, output);
+  };
   this->NumberOfCopies = polys->IsStorage64Bit()
-    ? AssignProvokingPoints(
-        polys->GetConnectivityArray64()->GetPointer(0), triangles, inputPoints, ids, sources)
-    : AssignProvokingPoints(
-        polys->GetConnectivityArray32()->GetPointer(0), triangles, inputPoints, ids, sources);
-
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetData(Gathered(input->GetPoints()->GetData(), sources));
-  auto normals = vtkSmartPointer<vtkFloatArray>::New();
-  normals->SetName(shadelab::FaceNormalArrayName);
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(sources->GetNumberOfIds());
-  std::fill_n(normals->GetPointer(0), 3 * sources->GetNumberOfIds(), 0.0f);
-  FaceNormalsAtProvokingPoints faceNormals;
-  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
-        points->GetData(), faceNormals, ids, triangles, normals->GetPointer(0)))
-  {
-    faceNormals(points->GetData(), ids, triangles, normals->GetPointer(0));
-  }
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-
-  output->SetPoints(points);
-  output->SetPolys(cells);
-  output->GetPointData()->AddArray(normals);
-  // What the rules read per vertex besides the normal: kd from the colours,
-  // the texture coordinates; a copy takes its input point's, which the
-  // fragments interpolate as before.
-  for (const char* name : { shadelab::ColorsArrayName, shadelab::TextureCoordinatesArrayName })
-  {
-    if (vtkDataArray* array = input->GetPointData()->GetArray(name))
-    {
-      output->GetPointData()->AddArray(Gathered(array, sources));
-    }
-  }
+    ? build(polys->GetConnectivityArray64()->GetPointer(0))
+    : build(polys->GetConnectivityArray32()->GetPointer(0));
   return 1;
 }
 

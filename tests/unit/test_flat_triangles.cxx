@@ -43,10 +43,10 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& name)
   return reader->GetOutput();
 }
 
-// mesh with its points in `type`, a point that no triangle uses (far off,
-// so that it would show in the bounds), and colours and texture
-// coordinates that differ from point to point.
-vtkSmartPointer<vtkPolyData> WithUnusedPointAndArrays(vtkPolyData* mesh, int type)
+// mesh with its points in `type`, its cells' ids in 32 or 64 bits, a point
+// that no triangle uses (far off, so that it would show in the bounds), and
+// colours and texture coordinates that differ from point to point.
+vtkSmartPointer<vtkPolyData> WithUnusedPointAndArrays(vtkPolyData* mesh, int type, bool ids32)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataType(type);
@@ -69,7 +69,10 @@ vtkSmartPointer<vtkPolyData> WithUnusedPointAndArrays(vtkPolyData* mesh, int typ
   }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(points);
-  out->SetPolys(mesh->GetPolys());
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->DeepCopy(mesh->GetPolys());
+  EXPECT_TRUE(ids32 ? polys->ConvertTo32BitStorage() : polys->ConvertTo64BitStorage());
+  out->SetPolys(polys);
   out->GetPointData()->AddArray(colors);
   out->GetPointData()->AddArray(coordinates);
   return out;
@@ -84,7 +87,8 @@ std::vector<double> Tuple(vtkDataArray* array, vtkIdType i)
 
 void ExpectProvokingPointsOfTheirOwn(vtkPolyData* mesh)
 {
-  SCOPED_TRACE(mesh->GetPoints()->GetData()->GetDataTypeAsString());
+  SCOPED_TRACE(std::string(mesh->GetPoints()->GetData()->GetDataTypeAsString()) +
+    (mesh->GetPolys()->IsStorage64Bit() ? " points, 64-bit ids" : " points, 32-bit ids"));
   vtkNew<vtkShadelabFlatTriangles> flat;
   flat->SetInputData(mesh);
   ASSERT_TRUE(flat->GetExecutive()->Update());
@@ -146,12 +150,12 @@ void ExpectProvokingPointsOfTheirOwn(vtkPolyData* mesh)
   EXPECT_LT(out->GetNumberOfPoints(), 2 * triangles);
 }
 
-TEST(FlatTriangles, ProvokingPointsOfTheirOwnFloatAndDouble)
+TEST(FlatTriangles, ProvokingPointsOfTheirOwnWhateverThePointAndIdTypes)
 {
   const vtkSmartPointer<vtkPolyData> bunny = Read("stanford-bunny.obj");
   ASSERT_GT(bunny->GetNumberOfPolys(), 60000);
-  ExpectProvokingPointsOfTheirOwn(WithUnusedPointAndArrays(bunny, VTK_FLOAT));
-  ExpectProvokingPointsOfTheirOwn(WithUnusedPointAndArrays(bunny, VTK_DOUBLE));
+  ExpectProvokingPointsOfTheirOwn(WithUnusedPointAndArrays(bunny, VTK_FLOAT, false));
+  ExpectProvokingPointsOfTheirOwn(WithUnusedPointAndArrays(bunny, VTK_DOUBLE, true));
 }
 
 TEST(FlatTriangles, RejectsCellsOtherThanTriangles)

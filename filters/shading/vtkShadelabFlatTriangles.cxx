@@ -30,7 +30,7 @@ namespace
 // point, the input point it copies (`sources`): the used input points first,
 // in their order, then one copy for each triangle whose last vertex an
 // earlier triangle took, in the triangles' order. Returns the number of
-// copies.
+// copies, or -1 (and nothing assigned) when an id names no input point.
 template <typename InId, typename OutId>
 vtkIdType AssignProvokingPoints(
   const InId* in, vtkIdType triangles, vtkIdType inputPoints, OutId* out, vtkIdList* sources)
@@ -38,6 +38,10 @@ vtkIdType AssignProvokingPoints(
   std::vector<vtkIdType> kept(inputPoints, -1);
   for (vtkIdType i = 0; i < 3 * triangles; ++i)
   {
+    if (in[i] < 0 || static_cast<vtkIdType>(in[i]) >= inputPoints)
+    {
+      return -1;
+    }
     kept[in[i]] = 0;
   }
   vtkIdType used = 0;
@@ -133,7 +137,8 @@ vtkSmartPointer<vtkDataArray> Gathered(vtkDataArray* array, vtkIdList* sources)
 }
 
 // input's triangles (`in`, its connectivity) with provoking points of their
-// own into output, its connectivity in OutIds; returns the number of copies.
+// own into output, its connectivity in OutIds; returns the number of copies,
+// or -1 (and output untouched) when a triangle names no input point.
 template <typename OutIds, typename InId>
 vtkIdType Build(vtkPolyData* input, const InId* in, vtkPolyData* output)
 {
@@ -152,6 +157,10 @@ vtkIdType Build(vtkPolyData* input, const InId* in, vtkPolyData* output)
   auto sources = vtkSmartPointer<vtkIdList>::New();
   const vtkIdType copies =
     AssignProvokingPoints(in, triangles, input->GetNumberOfPoints(), out, sources.Get());
+  if (copies < 0)
+  {
+    return copies;
+  }
   const vtkIdType points = sources->GetNumberOfIds();
 
   auto positions = vtkSmartPointer<vtkPoints>::New();
@@ -214,6 +223,12 @@ int vtkShadelabFlatTriangles::RequestData(
   this->NumberOfCopies = polys->IsStorage64Bit()
     ? build(polys->GetConnectivityArray64()->GetPointer(0))
     : build(polys->GetConnectivityArray32()->GetPointer(0));
+  if (this->NumberOfCopies < 0)
+  {
+    this->NumberOfCopies = 0;
+    vtkErrorMacro("a triangle names a point that the mesh does not have");
+    return 0;
+  }
   return 1;
 }
 

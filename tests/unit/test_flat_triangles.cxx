@@ -158,7 +158,7 @@ TEST(FlatTriangles, ProvokingPointsOfTheirOwnWhateverThePointAndIdTypes)
   ExpectProvokingPointsOfTheirOwn(WithUnusedPointAndArrays(bunny, VTK_DOUBLE, true));
 }
 
-TEST(FlatTriangles, RejectsCellsOtherThanTriangles)
+TEST(FlatTriangles, RejectsCellsOtherThanTrianglesAndPointsNotThere)
 {
   vtkShadelabOutputWindow::Install();
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -176,5 +176,18 @@ TEST(FlatTriangles, RejectsCellsOtherThanTriangles)
   vtkNew<vtkShadelabFlatTriangles> flat;
   flat->SetInputData(mesh);
   EXPECT_FALSE(flat->GetExecutive()->Update());
+
+  // Triangles, but one names a point past the last.
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType first[3] = { 0, 1, 2 }, past[3] = { 3, 4, 6 };
+  triangles->InsertNextCell(3, first);
+  triangles->InsertNextCell(3, past);
+  mesh->SetPolys(triangles);
+  flat->Modified();
+  EXPECT_FALSE(flat->GetExecutive()->Update());
+  triangles->ReplaceCellAtId(1, 3, first);
+  triangles->Modified();
+  flat->Modified();
+  EXPECT_TRUE(flat->GetExecutive()->Update());
 }
 }

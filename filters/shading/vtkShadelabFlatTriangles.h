@@ -15,9 +15,10 @@
  * never reads. Only the points that the triangles use are kept, so the
  * output's bounds are the triangles'. The vertex colours ("Colors", per-vertex
  * kd) and the texture coordinates ("TextureCoordinates", looked up per
- * fragment) go along; no other arrays. A mesh has about half as many points
- * as triangles, so about T - V points are copies (GetNumberOfCopies()),
- * against 3T points if every triangle had three of its own.
+ * fragment) go along; no other arrays. The copies (GetNumberOfCopies()) are
+ * T minus the number of distinct last vertices, the least that keeps each
+ * triangle's provoking vertex: 0.54T on the bunny, 0.66T on its 2-level Loop
+ * subdivision, against 3T points if every triangle had three of its own.
  */
 #ifndef vtkShadelabFlatTriangles_h
 #define vtkShadelabFlatTriangles_h

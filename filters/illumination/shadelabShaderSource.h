@@ -72,7 +72,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
 
 /**
  * The vertex attribute with each triangle's face normal that flat shading
- * reads (set on an exploded mesh, see vtkShadelabFlatTriangles), and the
+ * reads (set at each triangle's provoking point, see vtkShadelabFlatTriangles), and the
  * shaders' uniforms (set by vtkShadelabShading).
  */
 constexpr int AllFeaturesMaxLights = 8;

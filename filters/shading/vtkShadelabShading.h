@@ -90,8 +90,9 @@ public:
   void SetAllFeatures(bool all);
 
   /**
-   * The mesh as the rule reads it: flat gets its triangles exploded with face
-   * normals (vtkShadelabFlatTriangles), none and flat lose the point normals
+   * The mesh as the rule reads it: flat gets a provoking point of its own
+   * for each triangle, with the face normal (vtkShadelabFlatTriangles), none
+   * and flat lose the point normals
    * they do not use; gouraud and phong keep the mesh as it is. Not wrapped
    * (VTK 9.1's Python cannot return a vtkSmartPointer): Python puts
    * vtkShadelabFlatTriangles in its pipeline for flat.

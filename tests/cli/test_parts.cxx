@@ -285,7 +285,7 @@ TEST(Parts, ProbeReportsThePartUnderThePixel)
 }
 
 // Vertex colours stay each part's kd under every rule, the rest of each
-// part's material its own (flat: each part's triangles exploded apart): the
+// part's material its own (flat: each part's provoking points its own): the
 // rendered pixel in each part against the oracle's value that probe gives,
 // within the oracle tests' standard bound (1e-4 relative, floor 0.01;
 // test_shading_oracle's Tolerance Standard says why).

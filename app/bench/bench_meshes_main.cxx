@@ -146,13 +146,14 @@ int main(int argc, char** argv)
     }
     if (!bunny)
     {
+      const MessageScope messages;
       auto reader = vtkSmartPointer<vtkPLYReader>::New();
       reader->SetFileName(bunnyPath.c_str());
       reader->Update();
       bunny = reader->GetOutput();
       if (bunny->GetNumberOfPolys() == 0)
       {
-        return ReportError(bunnyPath, "no triangles read");
+        return ReportError(bunnyPath, messages.ErrorOr("no triangles read"));
       }
     }
     const vtkSmartPointer<vtkPolyData> mesh = Made(bunny, *recipe);

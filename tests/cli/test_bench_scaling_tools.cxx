@@ -85,6 +85,19 @@ TEST(BenchMeshes, AnUnknownSizeIsAUsageErrorAndWritesNothing)
   EXPECT_TRUE(out.Files().empty());
 }
 
+TEST(BenchMeshes, AnUnreadableBunnyGetsOneLineAndNoFile)
+{
+  TempDir out;
+  WriteText(out / "not-a-mesh.ply", "ply\nformat nonsense\n");
+  const RunResult r = RunProgram(SHADELAB_BENCH_MESHES,
+    { (out / "not-a-mesh.ply").string(), "--out", (out / "meshes").string(), "--sizes", "69k" });
+  EXPECT_EQ(r.ExitCode, 1);
+  EXPECT_EQ(r.Stderr.rfind("shadelab: error: " + (out / "not-a-mesh.ply").string() + ": ", 0), 0u)
+    << r.Stderr;
+  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 1) << r.Stderr;
+  EXPECT_TRUE(FilesIn(out / "meshes").empty());
+}
+
 TEST(BenchVtkPipeline, PrintsItsPhasesInOrderAndWritesThePicture)
 {
   TempDir out;

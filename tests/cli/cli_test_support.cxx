@@ -64,13 +64,19 @@ std::string Slurp(const std::filesystem::path& path)
 RunResult RunShadelab(
   const std::vector<std::string>& args, const std::vector<std::string>& environment)
 {
+  return RunProgram(SHADELAB_BINARY, args, environment);
+}
+
+RunResult RunProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
+  const std::vector<std::string>& environment)
+{
   TempDir capture;
   std::string command = "env -u DISPLAY";
   for (const std::string& setting : environment)
   {
     command += " " + Quote(setting);
   }
-  command += " " + Quote(SHADELAB_BINARY);
+  command += " " + Quote(program.string());
   for (const std::string& a : args)
   {
     command += " " + Quote(a);

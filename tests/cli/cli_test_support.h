@@ -24,6 +24,10 @@ struct RunResult
 RunResult RunShadelab(
   const std::vector<std::string>& args, const std::vector<std::string>& environment = {});
 
+/** Runs another program of the build (a bench executable) as RunShadelab runs shadelab. */
+RunResult RunProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
+  const std::vector<std::string>& environment = {});
+
 /**
  * Starts `shadelab ARGS...` as RunShadelab does, without waiting, its
  * stdout and stderr into the given files; returns its process id.

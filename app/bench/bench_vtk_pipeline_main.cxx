@@ -20,9 +20,9 @@
 // tell upload from drawing from outside the mapper; it costs this process
 // one vertex pass more than a single Render would.
 #include "core/errors.h"
-#include "core/milliseconds.h"
 #include "core/options.h"
 #include "core/output_file.h"
+#include "core/phase_timer.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
 #include "vtkShadelabOutputWindow.h"
 
@@ -42,9 +42,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <sys/resource.h>
-
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -56,23 +53,6 @@ using namespace shadelab;
 namespace
 {
 constexpr const char* Name = "shadelab-bench-vtk-pipeline";
-
-// Prints each phase's milliseconds and the peak resident memory so far.
-class PhaseTimer
-{
-public:
-  void Lap(const char* phase)
-  {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    std::fprintf(stderr, "%s: %s %.1f ms, peak %.1f MiB\n", Name, phase, Milliseconds(this->Last),
-      static_cast<double>(usage.ru_maxrss) / 1024.0);
-    this->Last = Clock::now();
-  }
-
-private:
-  Clock::time_point Last = Clock::now();
-};
 }
 
 int main(int argc, char** argv)
@@ -96,7 +76,7 @@ int main(int argc, char** argv)
     return ExitUsage;
   }
 
-  PhaseTimer timer;
+  PhaseTimer timer(true, Name);
   const MessageScope messages;
   auto reader = vtkSmartPointer<vtkPLYReader>::New();
   reader->SetFileName(meshPath.c_str());

@@ -13,8 +13,8 @@ void PhaseTimer::Lap(const char* phase)
   if (this->Enabled)
   {
     // VmHWM: the peak resident size, in whole MiB as the kernel has it in kB.
-    std::cerr << "shadelab: " << phase << " " << Milliseconds(this->Last, now) << " ms, peak "
-              << std::lround(StatusMiB("VmHWM:")) << " MiB\n";
+    std::cerr << this->Program << ": " << phase << " " << Milliseconds(this->Last, now)
+              << " ms, peak " << std::lround(StatusMiB("VmHWM:")) << " MiB\n";
   }
   this->Last = now;
 }

@@ -1,6 +1,7 @@
 // `-v`'s phase times: each phase's wall-clock time since the one before and
 // the process's peak resident memory so far, one line a phase on stderr,
-// exactly `shadelab: PHASE MS ms, peak MIB MiB` (benchmark scripts parse it).
+// exactly `PROGRAM: PHASE MS ms, peak MIB MiB` (benchmark scripts parse it;
+// the benchmarks' own programs print their phases the same way).
 #ifndef shadelab_phase_timer_h
 #define shadelab_phase_timer_h
 
@@ -11,9 +12,10 @@ namespace shadelab
 class PhaseTimer
 {
 public:
-  /** Times phases from now; prints them only if `enabled`. */
-  explicit PhaseTimer(bool enabled)
+  /** Times phases from now; prints them, as `program`'s, only if `enabled`. */
+  explicit PhaseTimer(bool enabled, const char* program = "shadelab")
     : Enabled(enabled)
+    , Program(program)
   {
   }
 
@@ -22,6 +24,7 @@ public:
 
 private:
   bool Enabled;
+  const char* Program;
   Clock::time_point Last = Clock::now();
 };
 }

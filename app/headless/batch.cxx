@@ -1,6 +1,7 @@
 #include "headless/batch.h"
 
 #include "core/errors.h"
+#include "core/exit_without_teardown.h"
 #include "core/milliseconds.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
@@ -367,6 +368,11 @@ int RenderShots(
     std::cerr << "shadelab: " << batch.Failed << " of " << mine.size() << " shots failed"
               << std::endl;
   }
-  return batch.Failed > 0 ? ExitFailure : 0;
+  if (batch.Failed > 0)
+  {
+    return ExitFailure;
+  }
+  // Every picture is on disk and answered for: nothing is left but freeing.
+  return ExitWithoutTeardown(0);
 }
 }

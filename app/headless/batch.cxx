@@ -19,6 +19,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include <malloc.h>
 #include <signal.h>
 
 #include <chrono>
@@ -354,6 +355,13 @@ int RenderShots(
       return ReportError(shot->Output, error);
     }
   }
+  // Each picture's buffers (the float read-back, 33 MB at 1080p, its copy,
+  // the 8-bit pixels sent) are larger than glibc's largest mmap threshold,
+  // so each came from fresh pages, faulted in and zeroed, and went back on
+  // free: a fifth of a 1080p batch's CPU time in the kernel. Kept in the
+  // heap instead, the next picture reuses them (BENCHMARKS.md, "Many shots").
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);

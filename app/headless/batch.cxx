@@ -355,11 +355,11 @@ int RenderShots(
       return ReportError(shot->Output, error);
     }
   }
-  // Each picture's buffers (the float read-back, 33 MB at 1080p, its copy,
-  // the 8-bit pixels sent) are larger than glibc's largest mmap threshold,
-  // so each came from fresh pages, faulted in and zeroed, and went back on
-  // free: a fifth of a 1080p batch's CPU time in the kernel. Kept in the
-  // heap instead, the next picture reuses them (BENCHMARKS.md, "Many shots").
+  // A picture's float read-back (33 MB at 1080p) is larger than glibc's
+  // largest mmap threshold, so each came from fresh pages, faulted in and
+  // zeroed, and went back on free: with the 8-bit pixels sent, a quarter of
+  // a 1080p batch's CPU time in the kernel. Kept in the heap instead, the
+  // next picture reuses them (BENCHMARKS.md, "Many shots").
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const InterruptCatcher catcher;

@@ -1,10 +1,10 @@
 // shadelab-image-writer: writes the pictures that shadelab sends on
-// standard input (image_writer_protocol.h) and answers
-// each on standard output with one line: empty when it was written (or, for
-// an animation's frame, taken), else the error. Images to decode for
-// textures are answered the same way, an empty line followed by the image.
-// Pictures are encoded in parallel and answered in order (writer_replies.h).
-// See image_writer_process.h.
+// standard input (image_writer_protocol.h) and answers each on standard
+// output with one line: empty when it was written (or, for an animation's
+// frame, taken), else the error. Images to decode for textures are answered
+// the same way, an empty line followed by the image. Pictures are encoded in
+// parallel and answered in order (writer_replies.h). See
+// image_writer_process.h.
 #include "image/image_writer_protocol.h"
 #include "image/picture_files.h"
 #include "image/texture_decoding.h"

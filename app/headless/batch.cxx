@@ -1,6 +1,7 @@
 #include "headless/batch.h"
 
 #include "core/errors.h"
+#include "core/exit_without_teardown.h"
 #include "core/phase_timer.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
@@ -18,9 +19,11 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include <malloc.h>
 #include <signal.h>
 
 #include <csignal>
+#include <deque>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -55,6 +58,12 @@ public:
 private:
   struct sigaction OldInt = {}, OldTerm = {};
 };
+
+// How many pictures may be with the writer, submitted and not collected:
+// enough that encoding (one thread a picture in the writer) keeps pace with
+// rendering on two cores; each holds its pixels, so few (BENCHMARKS.md,
+// "Many shots").
+constexpr std::size_t PicturesInFlight = 3;
 
 // Where a shot's pictures go in its file: every frame of an animation, or one.
 FramePlace FramesOf(const Shot& shot)
@@ -137,8 +146,8 @@ public:
     }
   }
 
-  // The last picture, written.
-  void Finish() { (void)this->Collect(); }
+  // The last pictures, written.
+  void Finish() { (void)this->CollectUntil(0); }
 
   std::size_t Failed = 0, Skipped = 0;
 
@@ -155,7 +164,7 @@ private:
   void FailFrame(
     const Shot& shot, const FramePlace& frame, const std::string& input, const std::string& problem)
   {
-    if (frame.Index == 0 || this->Collect())
+    if (frame.Index == 0 || this->CollectUntil(0))
     {
       this->Fail(shot, input, problem);
     }
@@ -238,9 +247,12 @@ private:
     }
     const auto metadata = DescribePicture(this->CommandLine, options,
       renderer.GetRenderer()->GetActiveCamera(), scene.Mesh, shot.Label);
-    // The previous picture, encoded while this one rendered: this shot's
-    // previous frame, whose failure ends the shot, or another shot's.
-    if (!this->Collect() && frame.Index > 0)
+    // Pictures encoded while this one rendered. An animation's frames go
+    // one at a time: its previous frame's failure ends the shot. Other
+    // pictures are encoded beside each other, a few at a time.
+    const bool collected =
+      this->CollectUntil(frame.Count > 1 ? 0 : PicturesInFlight - 1) || frame.Index == 0;
+    if (!collected)
     {
       return false;
     }
@@ -251,33 +263,35 @@ private:
       this->Fail(shot, shot.Output, error);
       return false;
     }
-    this->Writing = &shot;
+    this->Writing.push_back(&shot);
     return true;
   }
 
-  // The picture submitted before, once the writer has written it (or taken
-  // it, an animation's frame); false when it failed (and was reported).
-  bool Collect()
+  // The pictures submitted before, oldest first, once the writer has
+  // written them (or taken them, an animation's frames), until at most
+  // `left` are in flight; false when the last one collected failed (and was
+  // reported), each failure for its own shot.
+  bool CollectUntil(std::size_t left)
   {
-    if (!this->Writing)
+    bool written = true;
+    for (; this->Writing.size() > left; this->Writing.pop_front())
     {
-      return true;
+      const std::string error = this->Writer.Collect();
+      if (!error.empty())
+      {
+        this->Fail(*this->Writing.front(), this->Writing.front()->Output, error);
+      }
+      written = error.empty();
+      this->Timer.Lap("write");
     }
-    const std::string error = this->Writer.Collect();
-    if (!error.empty())
-    {
-      this->Fail(*this->Writing, this->Writing->Output, error);
-    }
-    this->Writing = nullptr;
-    this->Timer.Lap("write");
-    return error.empty();
+    return written;
   }
 
   const BatchOptions& Options;
   const std::string& CommandLine;
   PhaseTimer Timer;
-  ImageWriterProcess Writer;     // started first: it binds OpenImageIO while we render
-  const Shot* Writing = nullptr; // submitted to the writer, not yet collected
+  ImageWriterProcess Writer;       // started first: it binds OpenImageIO while we render
+  std::deque<const Shot*> Writing; // submitted to the writer, not yet collected, oldest first
   MeshCache Meshes{ DecodingThrough(this->Writer), &this->Timer };
   std::map<std::tuple<int, int, int>, Context> Contexts; // width, height, supersampling
 };
@@ -317,6 +331,13 @@ int RenderShots(
       return ReportError(shot->Output, error);
     }
   }
+  // A picture's float read-back (33 MB at 1080p) is larger than glibc's
+  // largest mmap threshold, so each came from fresh pages, faulted in and
+  // zeroed, and went back on free: with the 8-bit pixels sent, a quarter of
+  // a 1080p batch's CPU time in the kernel. Kept in the heap instead, the
+  // next picture reuses them (BENCHMARKS.md, "Many shots").
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
@@ -343,6 +364,11 @@ int RenderShots(
     std::cerr << "shadelab: " << batch.Failed << " of " << mine.size() << " shots failed"
               << std::endl;
   }
-  return batch.Failed > 0 ? ExitFailure : 0;
+  if (batch.Failed > 0)
+  {
+    return ExitFailure;
+  }
+  // Every picture is on disk and answered for: nothing is left but freeing.
+  return ExitWithoutTeardown(0);
 }
 }

@@ -25,10 +25,12 @@ struct BatchOptions
 
 /**
  * Renders shots (this shard's), writing each to its Output through a
- * temporary name. Returns 0 when every one was written, else ExitFailure,
- * each failure reported as one line on stderr. SIGINT or SIGTERM stops it
- * between shots: the picture being written is finished, it says how far it
- * got, and returns 128 + the signal's number.
+ * temporary name. Returns ExitFailure when one was not, each failure
+ * reported as one line on stderr. SIGINT or SIGTERM stops it between shots:
+ * the pictures being written are finished, it says how far it got, and
+ * returns 128 + the signal's number. When every one was written it does not
+ * return: the process ends with 0, without teardown (exit_without_teardown.h;
+ * in the sanitizer build it returns 0).
  */
 int RenderShots(
   const std::vector<Shot>& shots, const BatchOptions& options, const std::string& commandLine);

@@ -52,7 +52,7 @@ FloatImage HeadlessRenderer::Render()
   this->Error = messages.FirstError();
   ReportWarnings("render", messages.Warnings());
   FloatImage samples{ this->Capture->GetWidth(), this->Capture->GetHeight(),
-    this->Capture->GetPixels() };
+    this->Capture->TakePixels() };
   return this->Samples > 1 ? BoxAverage(samples, this->Samples) : samples;
 }
 }

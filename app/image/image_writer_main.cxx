@@ -1,17 +1,19 @@
 // shadelab-image-writer: writes the pictures that shadelab sends on
-// standard input (image_writer_protocol.h), one after another, and answers
-// each on standard output with one line: empty when it was written (or, for
-// an animation's frame, taken), else the error. Images to decode for
-// textures are answered the same way, an empty line followed by the image.
-// See image_writer_process.h.
+// standard input (image_writer_protocol.h) and answers each on standard
+// output with one line: empty when it was written (or, for an animation's
+// frame, taken), else the error. Images to decode for textures are answered
+// the same way, an empty line followed by the image. Pictures are encoded in
+// parallel and answered in order (writer_replies.h). See
+// image_writer_process.h.
 #include "image/image_writer_protocol.h"
 #include "image/picture_files.h"
 #include "image/texture_decoding.h"
+#include "image/writer_replies.h"
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <csignal>
+#include <memory>
 #include <string>
 
 int main()
@@ -24,39 +26,45 @@ int main()
   // ffmpeg that died makes the next frame's fail with EPIPE: reported.
   std::signal(SIGXFSZ, SIG_IGN);
   std::signal(SIGPIPE, SIG_IGN);
-  // Until shadelab closes the pipe (or sends something malformed).
-  shadelab::PictureFiles files;
-  shadelab::ImageRequest request;
-  shadelab::DecodeRequest decode;
+  // Until shadelab closes the pipe (or sends something malformed); then
+  // every picture in flight is finished and answered.
+  shadelab::WriterReplies replies(STDOUT_FILENO);
+  shadelab::PictureFiles animations; // an --orbit's frames, into one file in order
   shadelab::RequestKind kind;
   while (shadelab::ReceiveRequestKind(STDIN_FILENO, kind))
   {
-    std::string reply;
-    shadelab::TextureImage image;
     if (kind == shadelab::RequestKind::Picture)
     {
-      if (!shadelab::ReceiveImageRequest(STDIN_FILENO, request))
+      auto request = std::make_shared<shadelab::ImageRequest>();
+      if (!shadelab::ReceiveImageRequest(STDIN_FILENO, *request))
       {
-        return 0;
+        break;
       }
-      reply = files.Write(request);
+      if (request->Frame.Count > 1)
+      {
+        replies.Answer(request->Path, { animations.Write(*request), {} });
+      }
+      else
+      {
+        replies.Encode(
+          request->Path, [request] { return shadelab::PictureFiles().Write(*request); });
+      }
     }
     else
     {
+      shadelab::DecodeRequest decode;
       if (!shadelab::ReceiveDecodeRequest(STDIN_FILENO, decode))
       {
-        return 0;
+        break;
       }
-      reply = shadelab::DecodeTexture(decode, image);
-    }
-    std::replace(reply.begin(), reply.end(), '\n', ' ');
-    const bool decoded = kind == shadelab::RequestKind::Decode && reply.empty();
-    reply += '\n';
-    if (write(STDOUT_FILENO, reply.data(), reply.size()) != static_cast<ssize_t>(reply.size()) ||
-      (decoded && !shadelab::SendTextureImage(STDOUT_FILENO, image)))
-    {
-      return 1;
+      auto image = std::make_unique<shadelab::TextureImage>();
+      std::string problem = shadelab::DecodeTexture(decode, *image);
+      if (!problem.empty())
+      {
+        image.reset();
+      }
+      replies.Answer(decode.Path, { std::move(problem), std::move(image) });
     }
   }
-  return 0;
+  return replies.Finish() ? 0 : 1;
 }

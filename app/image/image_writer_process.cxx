@@ -165,9 +165,18 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
   {
     request.Image.Rgba = image.Rgba;
   }
-  this->Pending = SendImageRequest(this->ToChild, request);
+  if (SendImageRequest(this->ToChild, request))
+  {
+    ++this->Unanswered;
+    return {};
+  }
+  // The writer ended: its last words, unless they are an earlier picture's answer.
+  if (this->InFlight() > 0)
+  {
+    return "the image writer has stopped";
+  }
   bool broke = false;
-  return this->Pending ? std::string() : this->ReadReply(broke);
+  return this->ReadReply(broke);
 }
 
 std::string ImageWriterProcess::ReadReply(bool& broke)
@@ -200,16 +209,17 @@ std::string ImageWriterProcess::ReadReply(bool& broke)
 
 std::string ImageWriterProcess::Collect()
 {
-  if (this->Answered)
+  if (!this->Early.empty())
   {
-    this->Answered = false;
-    return this->Answer;
+    std::string answer = std::move(this->Early.front());
+    this->Early.pop_front();
+    return answer;
   }
-  if (!this->Pending)
+  if (this->Unanswered == 0)
   {
     return "the image writer has stopped";
   }
-  this->Pending = false;
+  --this->Unanswered;
   bool broke = false;
   return this->ReadReply(broke);
 }
@@ -220,10 +230,10 @@ std::string ImageWriterProcess::Decode(const DecodeRequest& request, TextureImag
   {
     return this->StartError;
   }
-  if (this->Pending)
+  for (; this->Unanswered > 0; --this->Unanswered)
   {
-    this->Answer = this->Collect();
-    this->Answered = true;
+    bool broke = false;
+    this->Early.push_back(this->ReadReply(broke));
   }
   if (this->ToChild < 0 || !SendDecodeRequest(this->ToChild, request))
   {

@@ -16,6 +16,7 @@
 
 #include <sys/types.h>
 
+#include <deque>
 #include <memory>
 #include <string>
 #include <utility>
@@ -51,21 +52,27 @@ public:
 
   /**
    * Hands the picture over and returns once the writer has it, so that the
-   * caller renders the next while this one is encoded. Each Submit must be
-   * followed by one Collect (before the next Submit); "" or an error text.
+   * caller renders the next while this one is encoded: "" or an error text.
+   * Pictures may be submitted before earlier ones are collected (the writer
+   * encodes them in parallel); each is collected once, in the order
+   * submitted, and InFlight() says how many wait, for the caller to bound.
    * An animation's frames are submitted in order, each with its place; its
    * file is written when the last is in (its Collect says so).
    */
   std::string Submit(const std::string& path, const FloatImage& image, PixelType type,
     const std::vector<std::pair<std::string, std::string>>& metadata, const FramePlace& frame = {});
 
-  /** Waits until the submitted picture is written: "" or an error text. */
+  /** Waits until the oldest picture submitted and not collected is written: "" or an error text. */
   std::string Collect();
+
+  /** Pictures submitted and not yet collected. */
+  std::size_t InFlight() const { return this->Early.size() + this->Unanswered; }
 
   /**
    * Has the writer decode an image for a texture (texture_decoding.h) and
    * waits for it: "" or the problem. May come between a Submit and its
-   * Collect: the picture's answer is kept for the Collect.
+   * Collect: the pictures' answers, which come first, are kept for their
+   * Collects.
    */
   std::string Decode(const DecodeRequest& request, TextureImage& image);
 
@@ -81,10 +88,9 @@ private:
   int ToChild = -1;
   int FromChild = -1;
   std::string StartError;
-  bool Written = false;  // a picture was handed over: let the writer finish
-  bool Pending = false;  // submitted, not yet collected
-  bool Answered = false; // the submitted picture's answer came before a decode's: Answer
-  std::string Answer;
+  bool Written = false;          // a picture was handed over: let the writer finish
+  std::size_t Unanswered = 0;    // submitted, their answers not yet read
+  std::deque<std::string> Early; // answers read before a decode's, not yet collected
 };
 
 /** A MeshCache's decoder through writer. */

@@ -190,6 +190,41 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
   EXPECT_EQ(png.Pixels[centre + 2], 255); // clamped
 }
 
+// The PNG writer's zlib level and row filter are chosen for speed: PNG is
+// lossless, so whatever they are, every pixel of a detailed picture (a
+// texture, flat-shaded facets, a specular highlight) must decode to
+// round(255*clamp(I)) of the same render stored as float. Exact: no bound.
+TEST(Render, PngStoresEveryPixelAsTheFloatRenderQuantised)
+{
+  TempDir dir;
+  for (const char* name : { "spot.exr", "spot.png" })
+  {
+    const RunResult r = RunShadelab({ "render", TestMesh("spot-textured.obj").string(), "-o",
+      (dir / name).string(), "--size", "480x270", "--shading", "flat", "--zoom", "1.6" });
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  }
+  const Image exr = ReadImage(dir / "spot.exr");
+  const Image png = ReadImage(dir / "spot.png");
+  ASSERT_EQ(png.Format, "uint8");
+  ASSERT_EQ(exr.Pixels.size(), png.Pixels.size());
+  size_t differing = 0, distinct = 0;
+  std::vector<bool> seen(256 * 256 * 256);
+  for (size_t i = 0; i < png.Pixels.size(); ++i)
+  {
+    const double clamped = std::clamp(static_cast<double>(exr.Pixels[i]), 0.0, 1.0);
+    differing += png.Pixels[i] != std::floor(255 * clamped + 0.5);
+  }
+  for (size_t i = 0; i + 2 < png.Pixels.size(); i += 3)
+  {
+    const size_t colour = static_cast<size_t>(png.Pixels[i]) * 65536 +
+      static_cast<size_t>(png.Pixels[i + 1]) * 256 + static_cast<size_t>(png.Pixels[i + 2]);
+    distinct += !seen[colour];
+    seen[colour] = true;
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(distinct, 1000u) << "the picture is meant to have detail for the encoder to work on";
+}
+
 TEST(Render, LitFloatPictureExceedsOneWhereTheLightIsStrong)
 {
   TempDir dir;

@@ -107,8 +107,7 @@ TEST(BenchVtkPipeline, PrintsItsPhasesInOrderAndWritesThePicture)
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   // The lines scripts/bench-scaling parses, every phase once, in order, the
   // peak never falling.
-  const std::regex line(
-    "shadelab-bench-vtk-pipeline: ([a-z]+) [0-9]+\\.[0-9] ms, peak ([0-9]+\\.[0-9]) MiB");
+  const std::regex line("shadelab-bench-vtk-pipeline: ([a-z]+) [0-9.]+ ms, peak ([0-9]+) MiB");
   std::istringstream lines(r.Stderr);
   std::vector<std::string> phases;
   double peak = 0;

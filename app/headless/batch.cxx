@@ -22,6 +22,8 @@
 #include <malloc.h>
 #include <signal.h>
 
+#include <algorithm>
+#include <climits>
 #include <csignal>
 #include <deque>
 #include <filesystem>
@@ -335,9 +337,21 @@ int RenderShots(
   // largest mmap threshold, so each came from fresh pages, faulted in and
   // zeroed, and went back on free: with the 8-bit pixels sent, a quarter of
   // a 1080p batch's CPU time in the kernel. Kept in the heap instead, the
-  // next picture reuses them (BENCHMARKS.md, "Many shots").
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  // next picture reuses them (BENCHMARKS.md, "Many shots"). Only up to the
+  // largest picture: a large mesh's arrays stay mapped, so that each goes
+  // back to the system when freed rather than raising the heap's peak.
+  std::size_t largestPicture = 0;
+  for (const Shot* shot : mine)
+  {
+    if (ImageSize rendered; RenderedSize(shot->Scene, rendered).empty())
+    {
+      largestPicture = std::max(largestPicture,
+        static_cast<std::size_t>(rendered.Width) * rendered.Height * 4 * sizeof(float));
+    }
+  }
+  const std::size_t heapBlock = largestPicture + (std::size_t{ 1 } << 20);
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(heapBlock));
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(std::min<std::size_t>(2 * heapBlock, INT_MAX)));
   const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);

@@ -23,7 +23,6 @@
 #include <signal.h>
 
 #include <algorithm>
-#include <climits>
 #include <csignal>
 #include <deque>
 #include <filesystem>
@@ -351,7 +350,7 @@ int RenderShots(
   }
   const std::size_t heapBlock = largestPicture + (std::size_t{ 1 } << 20);
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(heapBlock));
-  mallopt(M_TRIM_THRESHOLD, static_cast<int>(std::min<std::size_t>(2 * heapBlock, INT_MAX)));
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);

@@ -73,7 +73,7 @@ ShadedFragment ShadeTriangleFragment(
   const auto& w = f.Weights;
   ShadedFragment s;
   s.Point = Mix<Vec3>(w, [&](int k) { return P[k]; });
-  s.FaceNormal = normalize(cross(P[1] - P[0], P[2] - P[0]));
+  FaceNormal(P[0], P[1], P[2], s.FaceNormal);
   const SurfaceTexture& texture = material.Texture;
   if (texture.Used())
   {

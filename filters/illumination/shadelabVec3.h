@@ -49,6 +49,21 @@ inline Vec3 normalize(const Vec3& a)
   const double l = length(a);
   return l > 0 ? (1 / l) * a : a;
 }
+/**
+ * The unit normal of the triangle p0 p1 p2, (p1 - p0) x (p2 - p0) divided by
+ * its length, into `unit`; returns that length, the doubled area. A cross
+ * product of no usable length (zero, or overflowing) gives (0, 0, 0) and 0.
+ * The one face normal: flat shading's, the oracle's and the summed vertex
+ * normals' weights.
+ */
+inline double FaceNormal(const Vec3& p0, const Vec3& p1, const Vec3& p2, Vec3& unit)
+{
+  const Vec3 n = cross(p1 - p0, p2 - p0);
+  const double l = length(n);
+  const bool usable = l > 0 && std::isfinite(l);
+  unit = usable ? Vec3{ n[0] / l, n[1] / l, n[2] / l } : Vec3{ 0, 0, 0 };
+  return usable ? l : 0;
+}
 
 /**
  * Vec3 is a std::array, so these are not found by argument-dependent lookup

@@ -15,7 +15,7 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
   {
     LoadedMesh loaded = LoadMesh(o, this->Timer);
     // No picture draws the face normals that the normals filter or a file
-    // gives (flat computes its own in vtkShadelabFlatTriangles, and VTK would
+    // gives (flat computes its own as it uploads them, and VTK would
     // upload them for a rule without point normals): 12 bytes a triangle
     // freed, 203 MiB of a 17.8M-triangle mesh.
     if (loaded.Mesh)

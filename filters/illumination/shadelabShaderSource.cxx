@@ -6,8 +6,7 @@
 
 namespace shadelab
 {
-const char* const FaceNormalArrayName = "shadelabFaceNormal";
-const char* const FaceNormalAttributeName = "shadelabFaceNormalMC";
+const char* const FaceNormalSamplerName = "shadelabFaceNormals";
 const char* const VertexKdAttributeName = "shadelabVertexKd";
 const char* const TextureCoordinateAttributeName = "shadelabTCoord";
 const char* const TextureSamplerName = "shadelabTexture";
@@ -58,6 +57,32 @@ const char* const VertexLightingApartSource = R"glsl(  {
       shadelabIlluminateApart(
         vertexVCVSOutput.xyz, -n / len, shadelabBackDiffuse, shadelabBackSpecular);
     }
+  }
+)glsl";
+
+// Flat: the face normal of the fragment's triangle, in view coordinates.
+// `$` is the buffer, one RGB float texel a triangle.
+const char* const FaceNormalFetchSource = "  vec3 n = shadelabNormalMatrix * texelFetch($, "
+                                          "gl_PrimitiveID).rgb;\n  float len = length(n);\n";
+
+// Flat: the side the fragment faces, lit at the provoking vertex as the
+// vertex stage lights Gouraud's vertices (VertexLightingSource).
+const char* const FlatLightingSource =
+  R"glsl(  vec3 shadelabLit = shadelabKa * shadelabIa; // shadelab: ambient
+  if (len > shadelabTinyLength && !isinf(len))
+  {
+    shadelabLit = shadelabIlluminate(shadelabProvokingVC.xyz, gl_FrontFacing ? n / len : -n / len);
+  }
+  fragOutput0 = vec4(shadelabLit, 1.0);
+)glsl";
+
+// The same, the sums apart for the texel (VertexLightingApartSource).
+const char* const FlatLightingApartSource = R"glsl(  vec3 shadelabDiffuse = vec3(0.0);
+  vec3 shadelabSpecular = vec3(0.0);
+  if (len > shadelabTinyLength && !isinf(len))
+  {
+    shadelabIlluminateApart(shadelabProvokingVC.xyz, gl_FrontFacing ? n / len : -n / len,
+      shadelabDiffuse, shadelabSpecular);
   }
 )glsl";
 
@@ -166,22 +191,21 @@ void AddUnlit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 // With a texture, the vertex stage's sums apart (VertexLightingApartSource)
 // and the fragment's equation: ka*Ia, the diffuse sum and the specular sum,
 // the first two times the texel where it is ka's and kd's.
-std::string ApartOutputs(const std::string& qualifier, const char* direction)
+std::string ApartOutputs(const char* direction)
 {
   std::string s;
   for (const char* name : { "FrontDiffuse", "FrontSpecular", "BackDiffuse", "BackSpecular" })
   {
-    s += qualifier + direction + " vec3 shadelab" + name + ";\n";
+    s += std::string(direction) + " vec3 shadelab" + name + ";\n";
   }
   return s;
 }
 
-std::string PickApartByFacing(const ShaderFeatures& f)
+// The fragment's colour from the sums apart: ka*Ia, the diffuse sum and the
+// specular sum, each times the texel where it is that coefficient's.
+std::string ApartEquation(const ShaderFeatures& f)
 {
-  return std::string(
-           R"glsl(  vec3 shadelabDiffuse = gl_FrontFacing ? shadelabFrontDiffuse : shadelabBackDiffuse;
-  vec3 shadelabSpecular = gl_FrontFacing ? shadelabFrontSpecular : shadelabBackSpecular;
-  fragOutput0 = vec4()glsl") +
+  return std::string("  fragOutput0 = vec4(") +
     (f.KaTexture ? "shadelabKa * shadelabTexel * shadelabIa" : "shadelabKa * shadelabIa") +
     (f.KdTexture ? " + shadelabTexel * shadelabDiffuse" : " + shadelabDiffuse") +
     (f.KsTexture ? std::string(" + (") + TexelKsSource + ") * shadelabSpecular"
@@ -189,24 +213,23 @@ std::string PickApartByFacing(const ShaderFeatures& f)
     ", 1.0); // shadelab: ambient, diffuse, specular\n";
 }
 
-// Flat and Gouraud: lit per vertex (flat by the face normal attribute), the
-// fragment picks the side it faces.
+std::string PickApartByFacing(const ShaderFeatures& f)
+{
+  return std::string(
+           R"glsl(  vec3 shadelabDiffuse = gl_FrontFacing ? shadelabFrontDiffuse : shadelabBackDiffuse;
+  vec3 shadelabSpecular = gl_FrontFacing ? shadelabFrontSpecular : shadelabBackSpecular;
+)glsl") +
+    ApartEquation(f);
+}
+
+// Gouraud: lit per vertex, the fragment picks the side it faces.
 void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
-  const bool flat = f.Rule == Shading::Flat;
   const bool apart = f.Textured();
-  const std::string qualifier = flat ? "flat " : "";
   std::string declarations = IlluminateSource(f) +
-    (apart ? ApartOutputs(qualifier, "out")
-           : qualifier + "out vec3 shadelabFront;\n" + qualifier + "out vec3 shadelabBack;\n");
-  if (flat)
-  {
-    declarations = std::string("in vec3 ") + FaceNormalAttributeName +
-      ";\nuniform mat3 shadelabNormalMatrix;\n" + declarations;
-  }
-  std::string lighting = FillGlsl(apart ? VertexLightingApartSource : VertexLightingSource,
-    flat ? std::string("shadelabNormalMatrix * ") + FaceNormalAttributeName
-         : std::string("normalVCVSOutput"));
+    (apart ? ApartOutputs("out") : "out vec3 shadelabFront;\nout vec3 shadelabBack;\n");
+  std::string lighting =
+    FillGlsl(apart ? VertexLightingApartSource : VertexLightingSource, "normalVCVSOutput");
   if (f.VertexKd)
   {
     declarations = std::string("in vec4 ") + VertexKdAttributeName + ";\n" + declarations;
@@ -218,15 +241,54 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   if (apart)
   {
     r.push_back({ false, "//VTK::Light::Dec",
-      ApartOutputs(qualifier, "in") + "uniform vec3 shadelabKa;\nuniform vec3 shadelabIa;\n" +
+      ApartOutputs("in") + "uniform vec3 shadelabKa;\nuniform vec3 shadelabIa;\n" +
         (f.KsTexture ? TexelKsUniformsSource : "") + "//VTK::Light::Dec" });
     r.push_back({ false, "//VTK::Light::Impl", PickApartByFacing(f) });
     return;
   }
   r.push_back({ false, "//VTK::Light::Dec",
-    qualifier + "in vec3 shadelabFront;\n" + qualifier +
-      "in vec3 shadelabBack;\n//VTK::Light::Dec" });
+    "in vec3 shadelabFront;\nin vec3 shadelabBack;\n//VTK::Light::Dec" });
   r.push_back({ false, "//VTK::Light::Impl", PickByFacingSource });
+}
+
+// Flat: the equation once per triangle, at its provoking vertex (GL's
+// default, the last), with the face normal. The vertex stage passes the
+// provoking vertex's view position (and kd) on unchanged (`flat`); the
+// fragment reads its triangle's face normal by gl_PrimitiveID from a buffer
+// of three floats a triangle and lights the side it faces. Every fragment of
+// a triangle computes the same value from the same inputs.
+void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
+{
+  const bool apart = f.Textured();
+  std::string vertexDeclarations = "flat out vec4 shadelabProvokingVC;\n";
+  std::string vertexPassing = "  shadelabProvokingVC = vertexVCVSOutput;\n";
+  std::string declarations = IlluminateSource(f) + "uniform samplerBuffer " +
+    FaceNormalSamplerName +
+    ";\nuniform mat3 shadelabNormalMatrix;\nflat in vec4 shadelabProvokingVC;\n";
+  std::string shade;
+  if (f.VertexKd)
+  {
+    vertexDeclarations +=
+      std::string("in vec4 ") + VertexKdAttributeName + ";\nflat out vec3 shadelabKdVSOutput;\n";
+    vertexPassing += std::string("  shadelabKdVSOutput = ") + VertexKdAttributeName + ".rgb;\n";
+    declarations += "flat in vec3 shadelabKdVSOutput;\n";
+    shade += "  shadelabKd = shadelabKdVSOutput;\n";
+  }
+  if (apart && f.KsTexture)
+  {
+    declarations += TexelKsUniformsSource;
+  }
+  shade += FillGlsl(FaceNormalFetchSource, FaceNormalSamplerName) +
+    (apart ? FlatLightingApartSource : FlatLightingSource);
+  if (apart)
+  {
+    shade += ApartEquation(f);
+  }
+  r.push_back({ true, "//VTK::Light::Dec", vertexDeclarations });
+  r.push_back({ true, "//VTK::Light::Impl", vertexPassing });
+  r.push_back({ false, "//VTK::UniformFlow::Impl", "" });
+  r.push_back({ false, "//VTK::Light::Dec", declarations + "//VTK::Light::Dec" });
+  r.push_back({ false, "//VTK::Light::Impl", shade });
 }
 
 // Phong: lit per fragment by the interpolated normal.
@@ -278,6 +340,8 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
       AddUnlit(f, r);
       break;
     case Shading::Flat:
+      AddFlatLit(f, r);
+      break;
     case Shading::Gouraud:
       AddVertexLit(f, r);
       break;

@@ -70,14 +70,12 @@ struct ShaderReplacement
 /** Replacements applied before VTK's own substitutions (replaceFirst). */
 std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& features);
 
-/**
- * The vertex attribute with each triangle's face normal that flat shading
- * reads (set at each triangle's provoking point, see vtkShadelabFlatTriangles), and the
- * shaders' uniforms (set by vtkShadelabShading).
- */
 constexpr int AllFeaturesMaxLights = 8;
-extern const char* const FaceNormalArrayName;
-extern const char* const FaceNormalAttributeName;
+/**
+ * The buffer texture of face normals that flat shading reads, one RGB float
+ * texel a triangle by gl_PrimitiveID (filled by vtkShadelabShading).
+ */
+extern const char* const FaceNormalSamplerName;
 /** The vertex attribute (RGBA, alpha unused) that VertexKd reads. */
 extern const char* const VertexKdAttributeName;
 /** The vertex attribute (s, t) and the sampler that KdTexture and KaTexture read. */

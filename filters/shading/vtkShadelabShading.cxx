@@ -1,16 +1,18 @@
 #include "vtkShadelabShading.h"
 
+#include "shadelabFaceNormals.h"
 #include "shadelabTriangleMesh.h"
-#include "vtkShadelabFlatTriangles.h"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkLight.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
+#include <vtkOpenGLBufferObject.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderProperty.h>
 #include <vtkPointData.h>
@@ -24,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <vector>
 
 vtkStandardNewMacro(vtkShadelabShading);
 
@@ -167,16 +170,9 @@ void vtkShadelabShading::SetAllFeatures(bool all)
 
 vtkSmartPointer<vtkPolyData> vtkShadelabShading::PrepareMesh(vtkPolyData* mesh) const
 {
-  if (this->Features.Rule == Shading::Flat)
-  {
-    auto explode = vtkSmartPointer<vtkShadelabFlatTriangles>::New();
-    explode->SetInputData(mesh);
-    explode->Update();
-    return explode->GetOutput();
-  }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(mesh);
-  if (this->Features.Rule == Shading::None)
+  if (this->Features.Rule == Shading::None || this->Features.Rule == Shading::Flat)
   {
     copy->GetPointData()->SetNormals(nullptr);
   }
@@ -212,11 +208,6 @@ void vtkShadelabShading::Attach(
       }
     }
     mapper->RemoveAllVertexAttributeMappings();
-    if (this->Features.Rule == Shading::Flat)
-    {
-      mapper->MapDataArrayToVertexAttribute(
-        FaceNormalAttributeName, FaceNormalArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-    }
     if (this->Features.VertexKd)
     {
       mapper->MapDataArrayToVertexAttribute(
@@ -337,7 +328,68 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
     // passed: pass the inverse, and the shader gets the inverse transpose.
     normalMatrix->Invert();
     program->SetUniformMatrix("shadelabNormalMatrix", normalMatrix);
+    this->BindFaceNormals(program);
   }
+}
+
+void vtkShadelabShading::BindFaceNormals(vtkShaderProgram* program)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
+  vtkPolyData* mesh = vtkPolyData::SafeDownCast(this->Actor->GetMapper()->GetInput());
+  if (!this->FaceNormalTexture || this->FaceNormalTexture->GetContext() != window ||
+    this->FaceNormalsMesh != mesh || this->FaceNormalsTime < mesh->GetMTime())
+  {
+    // gl_PrimitiveID counts the triangles of the one draw of the polys, so
+    // cell t must be triangle t (VTK would split a polygon, and draw points,
+    // lines and strips apart).
+    vtkCellArray* polys = mesh->GetPolys();
+    const vtkIdType triangles = polys->GetNumberOfCells();
+    if (polys->GetNumberOfConnectivityIds() != 3 * triangles ||
+      (triangles > 0 && polys->GetMaxCellSize() != 3) || mesh->GetNumberOfVerts() > 0 ||
+      mesh->GetNumberOfLines() > 0 || mesh->GetNumberOfStrips() > 0)
+    {
+      vtkErrorMacro("flat shading draws triangles only, and the mesh has other cells");
+      return;
+    }
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+    if (triangles > most)
+    {
+      vtkErrorMacro(<< "flat shading reads one face normal per triangle from a buffer texture, "
+                       "which holds at most "
+                    << most << " here; the mesh has " << triangles << " triangles");
+      return;
+    }
+    // Computed and uploaded a slice at a time, so that the normals are in
+    // memory once (OpenGL's copy) rather than twice.
+    constexpr vtkIdType Slice = 1 << 20;
+    std::vector<float> slice(3 * std::min(triangles, Slice));
+    this->FaceNormalBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->FaceNormalBuffer->GenerateBuffer(vtkOpenGLBufferObject::TextureBuffer);
+    this->FaceNormalBuffer->Bind();
+    const auto bytes = [](vtkIdType n) { return static_cast<GLsizeiptr>(3 * sizeof(float) * n); };
+    glBufferData(
+      GL_TEXTURE_BUFFER, bytes(std::max<vtkIdType>(triangles, 1)), nullptr, GL_STATIC_DRAW);
+    vtkIdType drawn = 0;
+    for (vtkIdType first = 0; first < triangles; first += Slice)
+    {
+      const vtkIdType count =
+        ComputeFaceNormals(mesh, first, std::min(Slice, triangles - first), slice.data());
+      glBufferSubData(GL_TEXTURE_BUFFER, bytes(drawn), bytes(count), slice.data());
+      drawn += count;
+    }
+    this->FaceNormalBuffer->Release();
+    this->FaceNormalTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->FaceNormalTexture->SetContext(window);
+    this->FaceNormalTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(std::max<vtkIdType>(triangles, 1)), 3, VTK_FLOAT,
+      this->FaceNormalBuffer);
+    this->FaceNormalsMesh = mesh;
+    this->FaceNormalsTime.Modified();
+  }
+  // Kept active (its unit reserved) while the shading draws.
+  this->FaceNormalTexture->Activate();
+  program->SetUniformi(FaceNormalSamplerName, this->FaceNormalTexture->GetTextureUnit());
 }
 
 void vtkShadelabShading::BindTexture(vtkShaderProgram* program)

@@ -28,6 +28,7 @@ class vtkCallbackCommand;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkOpenGLBufferObject;
 class vtkTextureObject;
 
 class vtkShadelabShading : public vtkObject
@@ -90,12 +91,11 @@ public:
   void SetAllFeatures(bool all);
 
   /**
-   * The mesh as the rule reads it: flat gets a provoking point of its own
-   * for each triangle, with the face normal (vtkShadelabFlatTriangles), none
-   * and flat lose the point normals
-   * they do not use; gouraud and phong keep the mesh as it is. Not wrapped
-   * (VTK 9.1's Python cannot return a vtkSmartPointer): Python puts
-   * vtkShadelabFlatTriangles in its pipeline for flat.
+   * The mesh as the rule reads it: none and flat lose the point normals
+   * they do not use (flat reads its triangles' face normals, computed as
+   * they are uploaded); gouraud and phong keep the mesh as it is. Not
+   * wrapped (VTK 9.1's Python cannot return a vtkSmartPointer): from Python
+   * the mesh goes to the mapper as it is.
    */
   VTK_WRAPEXCLUDE vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* mesh) const;
 
@@ -117,6 +117,7 @@ private:
 
   void SetUniforms(vtkShaderProgram* program);
   void BindTexture(vtkShaderProgram* program);
+  void BindFaceNormals(vtkShaderProgram* program);
   void AddLight(const shadelab::Light& light);
 
   shadelab::ShaderFeatures Features;
@@ -127,6 +128,12 @@ private:
   // Texture.Map in OpenGL, made at the first draw; a shading that takes over
   // an actor takes this over too when its image and window are the same.
   vtkSmartPointer<vtkTextureObject> TextureObject;
+  // Flat's face normals in OpenGL, a buffer texture read by gl_PrimitiveID,
+  // made at the first draw of FaceNormalsMesh (not owned) for its window.
+  vtkSmartPointer<vtkOpenGLBufferObject> FaceNormalBuffer;
+  vtkSmartPointer<vtkTextureObject> FaceNormalTexture;
+  vtkPolyData* FaceNormalsMesh = nullptr;
+  vtkTimeStamp FaceNormalsTime;
   // Not owned, and either may go first (a Python script drops its actor
   // before its shading): weak, so that neither is used once gone.
   vtkWeakPointer<vtkActor> Actor; // its mapper holds the observer

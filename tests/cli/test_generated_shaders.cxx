@@ -62,21 +62,32 @@ TEST(GeneratedShaders, PhongReflectionUsesTheReflectedVector)
   EXPECT_FALSE(Contains(d.Fragment, "vec3 H ="));
 }
 
-TEST(GeneratedShaders, GouraudAndFlatLightInTheVertexStageOnly)
+TEST(GeneratedShaders, GouraudLightsInTheVertexStageOnly)
 {
-  for (const char* rule : { "gouraud", "flat" })
-  {
-    TempDir dir;
-    const Dumped d = Render(dir, std::string(rule) + "-blinn", { "--shading", rule });
-    EXPECT_TRUE(Contains(d.Vertex, "shadelabFront = shadelabIlluminate(")) << rule;
-    EXPECT_TRUE(Contains(d.Vertex, "shadelabBack = shadelabIlluminate(")) << rule;
-    EXPECT_FALSE(Contains(d.Fragment, "shadelabIlluminate")) << rule;
-    EXPECT_TRUE(Contains(d.Fragment, "gl_FrontFacing ? shadelabFront : shadelabBack")) << rule;
-    // Flat passes the provoking vertex's colour uninterpolated.
-    EXPECT_EQ(Contains(d.Vertex, "flat out vec3 shadelabFront;"), std::string(rule) == "flat");
-    // Flat reads the face normal; VTK's point normals are not uploaded.
-    EXPECT_EQ(Contains(d.Vertex, "in vec3 normalMC;"), std::string(rule) == "gouraud") << rule;
-  }
+  TempDir dir;
+  const Dumped d = Render(dir, "gouraud-blinn", { "--shading", "gouraud" });
+  EXPECT_TRUE(Contains(d.Vertex, "shadelabFront = shadelabIlluminate("));
+  EXPECT_TRUE(Contains(d.Vertex, "shadelabBack = shadelabIlluminate("));
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabIlluminate"));
+  EXPECT_TRUE(Contains(d.Fragment, "gl_FrontFacing ? shadelabFront : shadelabBack"));
+  EXPECT_TRUE(Contains(d.Vertex, "in vec3 normalMC;"));
+}
+
+// Flat: the provoking vertex's view position passed uninterpolated, the face
+// normal read by the triangle's primitive id, the side it faces lit; VTK's
+// point normals are not uploaded.
+TEST(GeneratedShaders, FlatLightsAtTheProvokingVertexWithTheFaceNormal)
+{
+  TempDir dir;
+  const Dumped d = Render(dir, "flat-blinn", { "--shading", "flat" });
+  EXPECT_TRUE(Contains(d.Vertex, "flat out vec4 shadelabProvokingVC;"));
+  EXPECT_TRUE(Contains(d.Vertex, "shadelabProvokingVC = vertexVCVSOutput;"));
+  EXPECT_FALSE(Contains(d.Vertex, "shadelabIlluminate"));
+  EXPECT_FALSE(Contains(d.Vertex, "normalMC"));
+  EXPECT_TRUE(Contains(d.Fragment, "uniform samplerBuffer shadelabFaceNormals;"));
+  EXPECT_TRUE(Contains(d.Fragment, "texelFetch(shadelabFaceNormals, gl_PrimitiveID).rgb"));
+  EXPECT_TRUE(Contains(d.Fragment,
+    "shadelabIlluminate(shadelabProvokingVC.xyz, gl_FrontFacing ? n / len : -n / len)"));
 }
 
 TEST(GeneratedShaders, NoSpecularCodeWhenKsIsZero)
@@ -117,17 +128,20 @@ TEST(GeneratedShaders, TextureCodeOnlyWithATexture)
     EXPECT_TRUE(Contains(textured.Fragment,
       "vec3 shadelabTexel = texture(shadelabTexture, shadelabTCoordVSOutput).rgb;"));
     EXPECT_TRUE(Contains(textured.Vertex, "shadelabTCoordVSOutput = shadelabTCoord;"));
-    // Flat and gouraud light per vertex with the sums apart; the fragment
-    // multiplies by its texel.
-    const bool vertexLit = std::string(rule) == "flat" || std::string(rule) == "gouraud";
-    EXPECT_EQ(Contains(textured.Vertex, "shadelabIlluminateApart("), vertexLit);
-    EXPECT_EQ(Contains(textured.Fragment, "shadelabTexel * shadelabDiffuse"), vertexLit);
+    // Flat and gouraud light with the sums apart (gouraud per vertex, flat
+    // at the provoking vertex); the fragment multiplies by its texel.
+    const std::string r = rule;
+    EXPECT_EQ(Contains(textured.Vertex, "shadelabIlluminateApart("), r == "gouraud");
+    EXPECT_EQ(
+      Contains(textured.Fragment, "shadelabIlluminateApart(shadelabProvokingVC.xyz"), r == "flat");
+    EXPECT_EQ(Contains(textured.Fragment, "shadelabTexel * shadelabDiffuse"),
+      r == "flat" || r == "gouraud");
   }
 }
 
 // A glTF metal's base colour texture colours ks (BoxTextured: metallic 1):
 // phong's ks per fragment, flat's and gouraud's vertices lit with ks = 1 for
-// the fragment to multiply; none has no specular. --ks drops the ks
+// the fragment to multiply (flat's in the fragment stage); none has no specular. --ks drops the ks
 // texture, and --texture is kd's and ka's only.
 TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
 {
@@ -144,8 +158,8 @@ TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
     EXPECT_EQ(Contains(textured.Fragment,
                 "  shadelabKs = shadelabKsFactor + shadelabKsScale * (shadelabTexel - 1.0);"),
       r == "phong");
-    EXPECT_EQ(Contains(textured.Vertex, "const vec3 shadelabKs = vec3(1.0);"),
-      r == "flat" || r == "gouraud");
+    EXPECT_EQ(Contains(textured.Vertex, "const vec3 shadelabKs = vec3(1.0);"), r == "gouraud");
+    EXPECT_EQ(Contains(textured.Fragment, "const vec3 shadelabKs = vec3(1.0);"), r == "flat");
     EXPECT_EQ(Contains(textured.Fragment,
                 "(shadelabKsFactor + shadelabKsScale * (shadelabTexel - 1.0)) * shadelabSpecular"),
       r == "flat" || r == "gouraud");
@@ -157,7 +171,7 @@ TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
       args.insert(args.end(), extra.begin(), extra.end());
       const Dumped other = Render(dir, name, args, metal);
       EXPECT_FALSE(Contains(other.Fragment + other.Vertex, "shadelabKsScale")) << extra[0];
-      EXPECT_FALSE(Contains(other.Vertex, "vec3(1.0);")) << extra[0];
+      EXPECT_FALSE(Contains(other.Vertex + other.Fragment, "shadelabKs = vec3(1.0);")) << extra[0];
     }
   }
 }

@@ -42,7 +42,10 @@ int main()
       }
       if (request->Frame.Count > 1)
       {
-        replies.Answer(request->Path, { animations.Write(*request), {} });
+        replies.Answer(request->Path,
+          [&] {
+            return shadelab::WriterReply{ animations.Write(*request), {} };
+          });
       }
       else
       {
@@ -57,13 +60,17 @@ int main()
       {
         break;
       }
-      auto image = std::make_unique<shadelab::TextureImage>();
-      std::string problem = shadelab::DecodeTexture(decode, *image);
-      if (!problem.empty())
-      {
-        image.reset();
-      }
-      replies.Answer(decode.Path, { std::move(problem), std::move(image) });
+      replies.Answer(decode.Path,
+        [&]
+        {
+          auto image = std::make_unique<shadelab::TextureImage>();
+          std::string problem = shadelab::DecodeTexture(decode, *image);
+          if (!problem.empty())
+          {
+            image.reset();
+          }
+          return shadelab::WriterReply{ std::move(problem), std::move(image) };
+        });
     }
   }
   return replies.Finish() ? 0 : 1;

@@ -74,12 +74,12 @@ void WriterReplies::Encode(const std::string& path, std::function<std::string()>
       .share());
 }
 
-void WriterReplies::Answer(const std::string& path, WriterReply reply)
+void WriterReplies::Answer(const std::string& path, const std::function<WriterReply()>& work)
 {
   const std::string file = SameFile(path);
   this->WaitForFile(file);
   std::promise<WriterReply> done;
-  done.set_value(std::move(reply));
+  done.set_value(work());
   this->Push(file, done.get_future().share());
 }
 

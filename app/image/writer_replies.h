@@ -42,8 +42,11 @@ public:
   /** A picture of one frame for path: encoded (work) on a thread of its own. */
   void Encode(const std::string& path, std::function<std::string()> work);
 
-  /** A request done as it comes, once any picture still being written to path is. */
-  void Answer(const std::string& path, WriterReply reply);
+  /**
+   * A request done (work) as it comes, on the caller's thread, once any
+   * picture still being written to path is.
+   */
+  void Answer(const std::string& path, const std::function<WriterReply()>& work);
 
   /** Waits until every answer is sent; false if one could not be (shadelab is gone). */
   bool Finish();

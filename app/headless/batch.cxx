@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/exit_without_teardown.h"
+#include "core/heap_policy.h"
 #include "core/phase_timer.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
@@ -19,7 +20,6 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
-#include <malloc.h>
 #include <signal.h>
 
 #include <algorithm>
@@ -283,6 +283,7 @@ private:
         this->Fail(*this->Writing.front(), this->Writing.front()->Output, error);
       }
       written = error.empty();
+      // -v's "write": for one shot its writing, in a batch the wait for it.
       this->Timer.Lap("write");
     }
     return written;
@@ -348,9 +349,7 @@ int RenderShots(
         static_cast<std::size_t>(rendered.Width) * rendered.Height * 4 * sizeof(float));
     }
   }
-  const std::size_t heapBlock = largestPicture + (std::size_t{ 1 } << 20);
-  mallopt(M_MMAP_THRESHOLD, static_cast<int>(heapBlock));
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  KeepBlocksInHeapUpTo(largestPicture + (std::size_t{ 1 } << 20));
   const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);

@@ -190,11 +190,12 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
   EXPECT_EQ(png.Pixels[centre + 2], 255); // clamped
 }
 
-// The PNG writer's zlib level and row filter are chosen for speed: PNG is
-// lossless, so whatever they are, every pixel of a detailed picture (a
-// texture, flat-shaded facets, a specular highlight) must decode to
-// round(255*clamp(I)) of the same render stored as float. Exact: no bound.
-TEST(Render, PngStoresEveryPixelAsTheFloatRenderQuantised)
+// The way to an 8-bit file (the read-back, the quantisation, the encoder)
+// must not change a pixel: every pixel of a detailed picture (a texture,
+// flat-shaded facets, a specular highlight) decodes to round(255*clamp(I))
+// of the same render stored as float. Exact: no bound. (The PNG encoder's
+// zlib level and row filter cannot fail this: PNG is lossless.)
+TEST(Render, EightBitPictureIsTheFloatRenderQuantised)
 {
   TempDir dir;
   for (const char* name : { "spot.exr", "spot.png" })

@@ -1,8 +1,9 @@
 // The lecture's equation and shading rules as GLSL, generated for what a
 // scene needs and nothing more (DESIGN.md, "The shading rules"): the number
 // and kinds of lights compiled in, no specular code when ks is zero, lighting
-// in the vertex stage for flat and Gouraud and in the fragment stage for
-// Phong. The code goes into VTK 9.1's polydata shaders as replacements of
+// in the vertex stage for Gouraud, in the fragment stage for Phong, and for
+// flat in the fragment stage with one triangle's inputs (its provoking
+// vertex's position, its face normal by gl_PrimitiveID). The code goes into VTK 9.1's polydata shaders as replacements of
 // their tags; each GLSL function mirrors the function of the same name in
 // shadelabShadingOracle.cxx.
 #ifndef shadelabShaderSource_h

@@ -7,6 +7,7 @@ import os
 import unittest
 
 import shadelab
+from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper,
                                          vtkRenderer, vtkRenderWindow,
@@ -53,7 +54,8 @@ class Normals(unittest.TestCase):
 
 class Shading(unittest.TestCase):
     """The lecture's shading attached to a plain VTK pipeline: a plane facing
-    the camera, orthographic, so V is (0, 0, 1) at every pixel."""
+    the camera, orthographic, so V is (0, 0, 1) at every pixel; in triangles,
+    which flat needs (it reads one face normal per triangle)."""
 
     SIDE = 32
 
@@ -62,8 +64,10 @@ class Shading(unittest.TestCase):
         plane.SetOrigin(-1, -1, 0)
         plane.SetPoint1(1, -1, 0)
         plane.SetPoint2(-1, 1, 0)
+        triangles = vtkTriangleFilter()
+        triangles.SetInputConnection(plane.GetOutputPort())
         mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(plane.GetOutputPort())
+        mapper.SetInputConnection(triangles.GetOutputPort())
         actor = vtkActor()
         actor.SetMapper(mapper)
         renderer = vtkRenderer()
@@ -87,24 +91,27 @@ class Shading(unittest.TestCase):
 
     def test_attached_shading_is_the_lectures_equation(self):
         # Blinn-Phong, bronze, Ia 0.2, a directional light 60 degrees off the
-        # normal: N.L = cos 60, N.H = cos 30, unclamped in every channel.
+        # normal: N.L = cos 60, N.H = cos 30, unclamped in every channel; the
+        # same at every point of the plane, so under phong and flat alike.
         angle = math.radians(60)
-        shading = shadelab.vtkShadelabShading()
-        self.assertTrue(shading.SetShadingRuleByName("phong"))
-        self.assertTrue(shading.SetReflectionModelByName("blinn"))
-        self.assertTrue(shading.SetMaterialByName("bronze"))
-        shading.SetAmbientIntensity(0.2, 0.2, 0.2)
-        shading.AddDirectionalLight(0, -math.sin(angle), -math.cos(angle))
-        shaded = self.render(lambda actor, renderer: shading.Attach(actor, renderer))
-
         with open(os.environ["SHADELAB_MATERIALS"]) as table:
             bronze = json.load(table)["materials"]["bronze"]
         n_dot_h = math.cos(angle / 2)
         expected = [255 * (bronze["ka"][c] * 0.2 + bronze["kd"][c] * math.cos(angle)
                            + bronze["ks"][c] * n_dot_h ** bronze["ns"]) for c in range(3)]
-        for channel, (got, want) in enumerate(zip(shaded, expected)):
-            # One level of 255: the GPU computes in float and rounds once.
-            self.assertLessEqual(abs(got - want), 1, f"channel {channel}: {shaded} vs {expected}")
+        for rule in ("phong", "flat"):
+            with self.subTest(rule=rule):
+                shading = shadelab.vtkShadelabShading()
+                self.assertTrue(shading.SetShadingRuleByName(rule))
+                self.assertTrue(shading.SetReflectionModelByName("blinn"))
+                self.assertTrue(shading.SetMaterialByName("bronze"))
+                shading.SetAmbientIntensity(0.2, 0.2, 0.2)
+                shading.AddDirectionalLight(0, -math.sin(angle), -math.cos(angle))
+                shaded = self.render(lambda actor, renderer: shading.Attach(actor, renderer))
+                for channel, (got, want) in enumerate(zip(shaded, expected)):
+                    # One level of 255: the GPU computes in float and rounds once.
+                    self.assertLessEqual(abs(got - want), 1,
+                                         f"channel {channel}: {shaded} vs {expected}")
 
         # Without the attachment VTK lights the same actor its own way.
         plain = self.render(lambda actor, renderer: None)

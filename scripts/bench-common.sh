@@ -1,8 +1,15 @@
 # shellcheck shell=bash
 # Shared by the benchmark scripts (sourced, not run): messages, Debian
 # packages, an Xvfb server for the tools that need a display, waiting for a
-# quiet machine, and quoting. The sourcing script sets bench_name first.
+# quiet machine, the machine and its load for the reports, timing a process,
+# shadelab's phase lines, medians, the meshes folder and quoting. The
+# sourcing script sets bench_name first.
 : "${bench_name:?set bench_name before sourcing bench-common.sh}"
+
+# The folder of shadelab-bench-meshes' meshes that every script shares (the
+# 17.8M bunny takes minutes to make): made once, kept between runs.
+# shellcheck disable=SC2034 # for the sourcing scripts
+bench_meshes=${BENCH_MESHES:-out/bench-meshes}
 
 die() {
   echo "$bench_name: error: $*" >&2
@@ -87,4 +94,39 @@ quote_cmd() { # the command as one shell-quoted line
     fi
   done
   echo "$out"
+}
+
+machine_line() { # the CPU model, its cores and the memory, for a report
+  printf '%s, %s CPUs, %s GiB memory\n' \
+    "$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo)" "$(nproc)" \
+    "$(awk '/^MemTotal:/ { printf "%.0f", $2 / 1048576 }' /proc/meminfo)"
+}
+
+load_average() { cut -d' ' -f1-3 /proc/loadavg; } # over 1, 5 and 15 minutes
+
+# timed_run LOG CMD...: runs CMD, its output (stdout and stderr) into LOG,
+# under GNU time; sets wall_s (seconds) and peak_kib (the maximum resident
+# set). Returns CMD's failure.
+# shellcheck disable=SC2034 # wall_s and peak_kib are for the caller
+timed_run() {
+  local log=$1 times
+  shift
+  times=$(mktemp "${TMPDIR:-/tmp}/$bench_name-time.XXXXXX")
+  if ! /usr/bin/time -f '%e %M' -o "$times" "$@" >"$log" 2>&1 </dev/null; then
+    rm -f "$times"
+    return 1
+  fi
+  read -r wall_s peak_kib <"$times"
+  rm -f "$times"
+}
+
+# phase_lines LOG: "PHASE MS PEAK_MIB" for each phase line of LOG, as
+# shadelab -v and the benchmark executables print them ("NAME: PHASE MS ms,
+# peak MIB MiB"; PEAK_MIB empty where a line has no peak).
+phase_lines() {
+  sed -nE 's/^[a-z-]+: ([a-z]+) ([0-9.]+) ms(, peak ([0-9.]+) MiB)?$/\1 \2 \4/p' "$1"
+}
+
+median() { # of the numbers on stdin, one a line; of an even count, the mean of the middle two
+  sort -g | awk '{ v[NR] = $1 } END { print NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }

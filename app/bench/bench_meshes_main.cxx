@@ -69,7 +69,10 @@ vtkSmartPointer<vtkPolyData> Made(vtkPolyData* bunny, const Recipe& recipe)
 
 // "" or the problem. vtkPLYWriter opens its file itself, unchecked, and adds
 // ".ply" to a name without it, so it writes through a link named *.ply to
-// the memory file whose bytes then go to path through an OutputFile.
+// the memory file whose bytes then go to path through an OutputFile. Not
+// WriteToOutputStringOn(): VTK 9.1's vtkPLY::ply_open_for_writing_to_string
+// writes into a stream of its own and never copies it back, so
+// GetOutputString() stays empty (checked: a sphere gives 0 bytes).
 std::string WritePly(vtkPolyData* mesh, const std::string& path)
 {
   return WriteFileThroughMemory(path,

@@ -2,22 +2,24 @@
 // filter (scripts/bench-png; BENCHMARKS.md, "PNG encoding"). Each picture's
 // pixels are encoded into memory through OpenImageIO at each level and
 // filter, the median time of ROUNDS and the size printed as a markdown
-// table, and each encoding decoded again to check that its pixels are the
-// picture's: PNG is lossless, whatever the level and filter.
+// table, and each encoding decoded again from memory (as textures are) to
+// check that its pixels are the picture's: PNG is lossless, whatever the
+// level and filter.
+#include "core/milliseconds.h"
+#include "image/texture_decoding.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
+
+using namespace shadelab;
 
 namespace
 {
@@ -56,7 +58,7 @@ std::vector<unsigned char> Encode(const OIIO::ImageSpec& spec,
     {
       out.attribute("png:filter", filter.Flags);
     }
-    const auto start = std::chrono::steady_clock::now();
+    const Clock::time_point start = Clock::now();
     auto writer = OIIO::ImageOutput::create("picture.png", &memory);
     if (!writer || !writer->open("picture.png", out) ||
       !writer->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !writer->close())
@@ -64,28 +66,25 @@ std::vector<unsigned char> Encode(const OIIO::ImageSpec& spec,
       std::fprintf(stderr, "shadelab-bench-png: cannot encode\n");
       std::exit(1);
     }
-    times.push_back(
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(Milliseconds(start));
   }
   std::nth_element(times.begin(), times.begin() + Rounds / 2, times.end());
   ms = times[Rounds / 2];
   return encoded;
 }
 
-// The encoding's pixels, decoded again through a file (OpenImageIO's PNG
-// reader takes a file).
-std::vector<unsigned char> Decoded(const std::vector<unsigned char>& encoded)
+// The picture decoded (a file, or an encoding's bytes) as a texture is: linear
+// RGB floats. sRGB's decoding maps each 8-bit value to a float of its own, so
+// two 8-bit RGB pictures decode alike only if their pixels are equal.
+TextureImage Decoded(DecodeRequest request, const char* what)
 {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() /
-    ("shadelab-bench-png-" + std::to_string(getpid()) + ".png");
-  std::ofstream(path, std::ios::binary)
-    .write(
-      reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
-  auto in = OIIO::ImageInput::open(path.string());
-  std::vector<unsigned char> pixels = in ? Pixels(*in) : std::vector<unsigned char>();
-  in.reset();
-  std::filesystem::remove(path);
-  return pixels;
+  TextureImage image;
+  if (const std::string problem = DecodeTexture(request, image); !problem.empty())
+  {
+    std::fprintf(stderr, "shadelab-bench-png: %s: %s\n", what, problem.c_str());
+    std::exit(1);
+  }
+  return image;
 }
 }
 
@@ -103,6 +102,7 @@ int main(int argc, char** argv)
     }
     const OIIO::ImageSpec spec = in->spec();
     const std::vector<unsigned char> pixels = Pixels(*in);
+    const std::vector<float> picture = Decoded({ argv[i], {} }, argv[i]).Pixels;
     std::printf("\n%s (%dx%d, %d channels), median of %d:\n\n", argv[i], spec.width, spec.height,
       spec.nchannels, Rounds);
     std::printf("| zlib level | filter | ms | bytes |\n|---:|---|---:|---:|\n");
@@ -112,7 +112,7 @@ int main(int argc, char** argv)
       {
         double ms = 0;
         const std::vector<unsigned char> encoded = Encode(spec, pixels, level, filter, ms);
-        if (Decoded(encoded) != pixels)
+        if (Decoded({ "", encoded }, "an encoding").Pixels != picture)
         {
           std::fprintf(
             stderr, "shadelab-bench-png: level %d, filter %s changed pixels\n", level, filter.Name);

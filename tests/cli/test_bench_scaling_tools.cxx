@@ -105,8 +105,8 @@ TEST(BenchVtkPipeline, PrintsItsPhasesInOrderAndWritesThePicture)
     { TestMesh("stanford-bunny.ply").string(), "-o", (out / "vtk.png").string(), "--size",
       "160x90" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
-  // The lines scripts/bench-scaling parses, every phase once, in order, the
-  // peak never falling.
+  // The lines bench-common.sh's phase_lines parses (scripts/bench-scaling),
+  // every phase once, in order, the peak never falling.
   const std::regex line("shadelab-bench-vtk-pipeline: ([a-z]+) [0-9.]+ ms, peak ([0-9]+) MiB");
   std::istringstream lines(r.Stderr);
   std::vector<std::string> phases;

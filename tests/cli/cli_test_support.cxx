@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <fcntl.h>
@@ -13,6 +14,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 
 extern char** environ;
@@ -52,6 +54,8 @@ Point3 Unit(const Point3& v)
   return { v[0] / n, v[1] / n, v[2] / n };
 }
 
+}
+
 std::string Slurp(const std::filesystem::path& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -59,6 +63,27 @@ std::string Slurp(const std::filesystem::path& path)
   s << in.rdbuf();
   return s.str();
 }
+
+std::vector<std::string> VerbosePhases(const std::string& text, const std::string& program)
+{
+  const std::regex line(program + R"(: (\w+) ([0-9.]+) ms, peak ([0-9]+) MiB)");
+  std::vector<std::string> phases;
+  long lastPeak = 0;
+  std::istringstream lines(text);
+  for (std::string one; std::getline(lines, one);)
+  {
+    std::smatch m;
+    if (!std::regex_match(one, m, line))
+    {
+      continue;
+    }
+    phases.push_back(m[1]);
+    const long peak = std::stol(m[3]);
+    EXPECT_GE(peak, lastPeak) << one;
+    EXPECT_GT(peak, 0) << one;
+    lastPeak = peak;
+  }
+  return phases;
 }
 
 RunResult RunShadelab(

@@ -38,6 +38,16 @@ int StartShadelab(const std::vector<std::string>& args, const std::filesystem::p
 /** Waits for a process StartShadelab started; its exit code (128 + signal when killed). */
 int WaitShadelab(int pid);
 
+/** The whole file at path (empty if it cannot be read). */
+std::string Slurp(const std::filesystem::path& path);
+
+/**
+ * The phases of `-v` output (the lines `PROGRAM: PHASE MS ms, peak MIB MiB`
+ * that the benchmark scripts parse), in order; other lines (VTK's messages)
+ * are skipped. Fails the test where a peak is not positive or falls.
+ */
+std::vector<std::string> VerbosePhases(const std::string& text, const std::string& program);
+
 /** The names of the files in folder, sorted. */
 std::vector<std::string> FilesIn(const std::filesystem::path& folder);
 

@@ -34,12 +34,6 @@ std::string TwentyFourShots(const std::string& mesh)
   return scene.str();
 }
 
-std::string Bytes(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-}
-
 std::set<std::string> Names(const std::vector<std::string>& files)
 {
   return { files.begin(), files.end() };
@@ -83,13 +77,13 @@ TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
   std::vector<std::string> first;
   for (int i = 0; i < 24; ++i)
   {
-    first.push_back(Bytes(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")));
+    first.push_back(Slurp(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")));
     ASSERT_GT(first.back().size(), 100u) << i;
   }
   ASSERT_EQ(RunShadelab(args).ExitCode, 0);
   for (int i = 0; i < 24; ++i)
   {
-    EXPECT_EQ(Bytes(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")), first[i])
+    EXPECT_EQ(Slurp(dir / "a" / ((i < 10 ? "0" : "") + std::to_string(i) + ".png")), first[i])
       << "shot " << i << " is not bit-identical";
   }
   const Image shot5 = ReadImage(dir / "a" / "05.png");
@@ -134,7 +128,7 @@ TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
   std::vector<std::string> first;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
   {
-    first.push_back(entry.path().filename().string() + Bytes(entry.path()));
+    first.push_back(entry.path().filename().string() + Slurp(entry.path()));
   }
   ASSERT_EQ(first.size(), 24u);
   std::filesystem::remove_all(dir / "out");
@@ -149,7 +143,7 @@ TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
   std::vector<std::string> sharded;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "out"))
   {
-    sharded.push_back(entry.path().filename().string() + Bytes(entry.path()));
+    sharded.push_back(entry.path().filename().string() + Slurp(entry.path()));
   }
   EXPECT_EQ(std::set<std::string>(sharded.begin(), sharded.end()),
     std::set<std::string>(first.begin(), first.end()));

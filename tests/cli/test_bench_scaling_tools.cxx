@@ -15,14 +15,6 @@ using namespace shadelab_test;
 
 namespace
 {
-std::string Slurp(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The PLY header, up to and including end_header.
 std::string Header(const std::filesystem::path& path)
 {
@@ -107,20 +99,9 @@ TEST(BenchVtkPipeline, PrintsItsPhasesInOrderAndWritesThePicture)
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   // The lines bench-common.sh's phase_lines parses (scripts/bench-scaling),
   // every phase once, in order, the peak never falling.
-  const std::regex line("shadelab-bench-vtk-pipeline: ([a-z]+) [0-9.]+ ms, peak ([0-9]+) MiB");
-  std::istringstream lines(r.Stderr);
-  std::vector<std::string> phases;
-  double peak = 0;
-  for (std::string text; std::getline(lines, text);)
-  {
-    std::smatch m;
-    ASSERT_TRUE(std::regex_match(text, m, line)) << text;
-    phases.push_back(m[1]);
-    EXPECT_GE(std::stod(m[2]), peak) << text;
-    peak = std::stod(m[2]);
-  }
-  EXPECT_EQ(
-    phases, (std::vector<std::string>{ "read", "normals", "context", "upload", "frame", "write" }));
+  EXPECT_EQ(VerbosePhases(r.Stderr, "shadelab-bench-vtk-pipeline"),
+    (std::vector<std::string>{ "read", "normals", "context", "upload", "frame", "write" }))
+    << r.Stderr;
 
   const Image picture = ReadImage(out / "vtk.png");
   ASSERT_EQ(picture.Width, 160);

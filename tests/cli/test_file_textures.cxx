@@ -28,12 +28,6 @@ namespace
 {
 using Rgb = std::array<double, 3>;
 
-std::string ReadBytes(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-}
-
 // BoxTextured's material has glTF's default metallic factor 1, which the
 // glTF mapping makes kd = ka = 0 (README, "Materials from glTF"): its texture
 // would multiply nothing. The copies written here say metallic 0, so that
@@ -49,7 +43,7 @@ std::filesystem::path DielectricGltf(const TempDir& dir)
   {
     std::filesystem::copy_file(TestMesh(file), dir / file);
   }
-  json document = json::parse(ReadBytes(TestMesh("box-textured.gltf")));
+  json document = json::parse(Slurp(TestMesh("box-textured.gltf")));
   SetNotMetallic(document);
   WriteText(dir / "box-textured.gltf", document.dump());
   return dir / "box-textured.gltf";
@@ -60,7 +54,7 @@ std::filesystem::path DielectricGltf(const TempDir& dir)
 // to 4 bytes), the BIN chunk as it was.
 std::filesystem::path DielectricGlb(const TempDir& dir)
 {
-  const std::string glb = ReadBytes(TestMesh("box-textured.glb"));
+  const std::string glb = Slurp(TestMesh("box-textured.glb"));
   std::uint32_t jsonLength = 0;
   std::memcpy(&jsonLength, glb.data() + 12, 4);
   json document = json::parse(glb.substr(20, jsonLength));

@@ -11,12 +11,6 @@ using namespace shadelab_test;
 
 namespace
 {
-std::string Text(const std::filesystem::path& path)
-{
-  std::ifstream in(path);
-  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-}
-
 bool Contains(const std::string& text, const std::string& part)
 {
   return text.find(part) != std::string::npos;
@@ -35,7 +29,7 @@ Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::stri
   args.insert(args.end(), extra.begin(), extra.end());
   const RunResult r = RunShadelab(args);
   EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
-  return { Text(dir / "glsl" / (name + ".vert")), Text(dir / "glsl" / (name + ".frag")) };
+  return { Slurp(dir / "glsl" / (name + ".vert")), Slurp(dir / "glsl" / (name + ".frag")) };
 }
 }
 

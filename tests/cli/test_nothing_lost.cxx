@@ -97,12 +97,6 @@ void ExpectNoTemporaries(const std::vector<std::string>& files)
   }
 }
 
-std::string Bytes(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-}
-
 RunResult Render(const fs::path& out, const std::string& size)
 {
   return RunShadelab({ "render", Mesh, "-o", out.string(), "--size", size });
@@ -236,7 +230,7 @@ TEST(NothingLost, DumpedShadersAreWholeOrAbsent)
       "\n");
   for (const fs::path& file : fs::directory_iterator(limited / "glsl"))
   {
-    EXPECT_EQ(Bytes(file), Bytes(full / "glsl" / file.filename())) << file;
+    EXPECT_EQ(Slurp(file), Slurp(full / "glsl" / file.filename())) << file;
   }
   ExpectNoTemporaries(FilesIn(limited / "glsl"));
   EXPECT_FALSE(fs::exists(limited / "a.png")) << "a shot whose shaders failed wrote a picture";

@@ -17,12 +17,6 @@ using namespace shadelab_test;
 
 namespace
 {
-std::string Bytes(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-}
-
 struct MeshAndShading
 {
   std::string Mesh;
@@ -118,10 +112,10 @@ TEST(Render, IsDeterministic)
       ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
       if (run == 0)
       {
-        first = Bytes(dir / name);
+        first = Slurp(dir / name);
       }
     }
-    EXPECT_TRUE(first == Bytes(dir / name)) << name << " differs between two runs";
+    EXPECT_TRUE(first == Slurp(dir / name)) << name << " differs between two runs";
   }
 }
 
@@ -134,24 +128,8 @@ TEST(Render, VerboseTimesEachPhaseWithItsPeakMemory)
   const RunResult r = RunShadelab({ "render", TestMesh("stanford-bunny.ply").string(), "-o",
     (dir / "out.png").string(), "--size", "64x48", "-v" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
-  const std::regex line(R"(shadelab: (\w+) ([0-9.]+) ms, peak ([0-9]+) MiB)");
-  std::vector<std::string> phases;
-  long lastPeak = 0;
-  std::istringstream lines(r.Stderr);
-  for (std::string text; std::getline(lines, text);)
-  {
-    std::smatch m;
-    if (!std::regex_match(text, m, line))
-    {
-      continue; // VTK's messages, if any
-    }
-    phases.push_back(m[1]);
-    const long peak = std::stol(m[3]);
-    EXPECT_GE(peak, lastPeak) << text;
-    EXPECT_GT(peak, 0) << text;
-    lastPeak = peak;
-  }
-  EXPECT_EQ(phases, (std::vector<std::string>{ "read", "normals", "context", "frame", "write" }))
+  EXPECT_EQ(VerbosePhases(r.Stderr, "shadelab"),
+    (std::vector<std::string>{ "read", "normals", "context", "frame", "write" }))
     << r.Stderr;
 }
 

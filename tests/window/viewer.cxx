@@ -66,14 +66,6 @@ private:
 const auto* const Server = ::testing::AddGlobalTestEnvironment(new XServer);
 }
 
-std::string Slurp(const std::filesystem::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 int Run(const std::string& command)
 {
   const int status = std::system(command.c_str());

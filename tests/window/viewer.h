@@ -23,9 +23,6 @@ inline constexpr int H = 360;
 // frame, so pictures are compared above it.
 inline constexpr int HudHeight = 70;
 
-/** The whole file at path. */
-std::string Slurp(const std::filesystem::path& path);
-
 /** Runs command through the shell; its exit code, or -1 if it did not exit. */
 int Run(const std::string& command);
 

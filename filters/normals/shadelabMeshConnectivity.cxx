@@ -60,7 +60,6 @@ void MeshConnectivity::Build(
   }
   if (!connect)
   {
-    this->ComputeFaceNormals(true, false);
     return;
   }
   // The face geometry needs no connectivity: it is computed on a second
@@ -70,7 +69,7 @@ void MeshConnectivity::Build(
   auto computed = std::async(std::launch::async,
     [this, weighting]
     {
-      this->ComputeFaceNormals(false, true);
+      this->StoreFaceGeometry(false);
       if (HasCornerWeights(weighting))
       {
         this->StoreCornerWeights(weighting);
@@ -85,7 +84,7 @@ void MeshConnectivity::Connect()
 {
   if (!this->Connected)
   {
-    this->ComputeFaceNormals(true, true);
+    this->StoreFaceGeometry(true);
     this->AddFaces();
     this->Connected = true;
   }
@@ -137,17 +136,12 @@ void MeshConnectivity::AddFaces()
   }
 }
 
-void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
+void MeshConnectivity::StoreFaceGeometry(bool parallel)
 {
   const double* xyz = this->XYZ->GetPointer(0);
   const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
-  this->FaceNormal.resize(store ? faces : 0);
-  this->DoubleArea.resize(store ? faces : 0);
-  this->CellNormals = vtkSmartPointer<vtkFloatArray>::New();
-  this->CellNormals->SetName("Normals");
-  this->CellNormals->SetNumberOfComponents(3);
-  this->CellNormals->SetNumberOfTuples(faces);
-  float* out = this->CellNormals->GetPointer(0);
+  this->FaceNormal.resize(faces);
+  this->DoubleArea.resize(faces);
   const Id* tri = this->Triangles.data();
   Vec3* faceNormal = this->FaceNormal.data();
   double* doubleArea = this->DoubleArea.data();
@@ -156,17 +150,7 @@ void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
   {
     for (vtkIdType f = begin; f < end; ++f)
     {
-      Vec3 n;
-      const double area2 = FaceGeometry(xyz, tri, f, n);
-      if (store)
-      {
-        faceNormal[f] = n;
-        doubleArea[f] = area2;
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        out[3 * f + c] = static_cast<float>(n[c]);
-      }
+      doubleArea[f] = FaceGeometry(xyz, tri, f, faceNormal[f]);
     }
   };
   if (parallel)

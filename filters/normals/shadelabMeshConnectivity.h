@@ -18,7 +18,6 @@
 #include "shadelabNormalsMesh.h"
 
 #include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
 
 #include <cmath>
@@ -67,13 +66,13 @@ public:
   // it, which keeps a large mesh's 4 doubles a face out of memory.
   std::vector<Vec3> FaceNormal;
   std::vector<double> DoubleArea;
-  vtkSmartPointer<vtkFloatArray> CellNormals; // the unit face normals as the output stores them
 
   /**
    * Takes the input's points and its `triangles` (3 point ids a face;
-   * oriented consistently first if `consistency`) and computes CellNormals;
-   * if `connect`, also OpenMesh's connectivity with the stored face geometry
-   * and the corner weights of `weighting` (on a second thread meanwhile).
+   * oriented consistently first if `consistency`); if `connect`, also builds
+   * OpenMesh's connectivity with the stored face geometry and the corner
+   * weights of `weighting` (on a second thread meanwhile). Without it, no
+   * pass over the faces: the sum makes the one it needs.
    */
   void Build(
     vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect);
@@ -96,7 +95,7 @@ private:
   MeshConnectivity(const MeshConnectivity&) = delete;
   void operator=(const MeshConnectivity&) = delete;
 
-  void ComputeFaceNormals(bool parallel, bool store);
+  void StoreFaceGeometry(bool parallel);
   void AddFaces();
 
   void StoreCornerWeights(int weighting);

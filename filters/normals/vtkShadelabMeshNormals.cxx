@@ -150,11 +150,12 @@ struct Sum
 };
 
 // Each face's weighted unit normal, summed into its corners' points, face
-// by face in the input's order (the order fixes the sums' bits). Where the
-// face geometry and the weights are not stored, each face's are computed as
-// it is added: the same functions on the same values, so the same bits.
+// by face in the input's order (the order fixes the sums' bits), and into
+// `cellNormals` (3 floats a face) unless null. Where the face geometry and
+// the weights are not stored, each face's are computed as it is added: the
+// same functions on the same values, so the same bits.
 std::vector<Sum> SumFaceNormals(
-  const MeshConnectivity& c, const OutputTopology& topology, int weighting)
+  const MeshConnectivity& c, const OutputTopology& topology, int weighting, float* cellNormals)
 {
   const Id* corners =
     topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.Triangles.data();
@@ -177,6 +178,13 @@ std::vector<Sum> SumFaceNormals(
     else
     {
       area2 = shadelab::normals::FaceGeometry(xyz, triangles, f, normal);
+    }
+    if (cellNormals)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        cellNormals[3 * f + k] = static_cast<float>(normal[k]);
+      }
     }
     if (area2 == 0)
     {
@@ -234,14 +242,21 @@ void SetLoopNormals(
     });
 }
 
-// The sums as unit normals, (0,0,0) where they cancelled or overflowed.
-vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
+// A float triple for each of `count` points or cells, named as VTK's normals.
+vtkSmartPointer<vtkFloatArray> NormalsArray(vtkIdType count)
 {
-  const auto count = static_cast<vtkIdType>(sum.size());
   auto normals = vtkSmartPointer<vtkFloatArray>::New();
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(count);
+  return normals;
+}
+
+// The sums as unit normals, (0,0,0) where they cancelled or overflowed.
+vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
+{
+  const auto count = static_cast<vtkIdType>(sum.size());
+  vtkSmartPointer<vtkFloatArray> normals = NormalsArray(count);
   float* out = normals->GetPointer(0);
   for (vtkIdType i = 0; i < count; ++i)
   {
@@ -351,6 +366,7 @@ void vtkShadelabMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
+  os << indent << "ComputeCellNormals: " << (this->ComputeCellNormals ? "On" : "Off") << "\n";
   os << indent << "NumberOfDuplicatedFaces: " << this->NumberOfDuplicatedFaces << "\n";
   os << indent << "NumberOfConnectivityBuilds: " << this->NumberOfConnectivityBuilds << "\n";
 }
@@ -410,8 +426,12 @@ int vtkShadelabMeshNormals::RequestData(
   this->NumberOfDuplicatedFaces = connect ? mesh.DuplicatedFaces : 0;
 
   OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
+  vtkSmartPointer<vtkFloatArray> cellNormals = this->ComputeCellNormals
+    ? NormalsArray(static_cast<vtkIdType>(mesh.Triangles.size() / 3))
+    : nullptr;
   std::vector<Sum> sum =
-    SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting));
+    SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting),
+      cellNormals ? cellNormals->GetPointer(0) : nullptr);
   if (this->Weighting == Loop)
   {
     SetLoopNormals(mesh, topology, sum);
@@ -429,6 +449,9 @@ int vtkShadelabMeshNormals::RequestData(
   SetTriangles(input, topology, output);
   SetPoints(input, topology, output);
   output->GetPointData()->SetNormals(normals);
-  output->GetCellData()->SetNormals(mesh.CellNormals);
+  if (cellNormals)
+  {
+    output->GetCellData()->SetNormals(cellNormals);
+  }
   return 1;
 }

@@ -1471,6 +1471,75 @@ TEST(MeshNormals, SummedNormalsWithoutConnectivityAreTheSameBits)
   }
 }
 
+// The cell normals are each output face's unit normal (shadelab::FaceNormal
+// of its points, in double) rounded to float: the very bits, whether the sum
+// wrote them as it computed each face's geometry (no connectivity) or from
+// the geometry stored beside the connectivity (splitting, Loop); with
+// ComputeCellNormals off there are none, and the point normals keep their
+// bits.
+TEST(MeshNormals, CellNormalsAreEachFacesNormalInFloat)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "fandisk.obj").c_str());
+  reader->SetReadNormals(false);
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  Mesh degenerate;
+  degenerate.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 2, 0, 0 }, { 0.5, 0.3, 1 } };
+  degenerate.Triangles = { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 0, 4 }, { 2, 2, 4 }, { 0, 2, 1 } };
+  // The reader's ids in 32-bit storage, ToPolyData's in 64-bit.
+  const vtkSmartPointer<vtkPolyData> inputs[] = { reader->GetOutput(), ToPolyData(degenerate) };
+  for (vtkPolyData* input : inputs)
+  {
+    for (const bool consistency : { false, true })
+    {
+      for (const int weighting : { vtkShadelabMeshNormals::Angle, vtkShadelabMeshNormals::Loop })
+      {
+        for (const bool splitting : { false, true })
+        {
+          SCOPED_TRACE(std::string(WeightingNames[weighting]) + (splitting ? ", split" : "") +
+            (consistency ? ", oriented" : "") + ", " + std::to_string(input->GetNumberOfPolys()) +
+            " faces");
+          const auto run = [&](bool cellNormals)
+          {
+            auto filter = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+            filter->SetInputData(input);
+            filter->SetWeighting(weighting);
+            filter->SetSplitting(splitting);
+            filter->SetConsistency(consistency);
+            filter->SetComputeCellNormals(cellNormals);
+            EXPECT_TRUE(filter->GetExecutive()->Update());
+            return filter;
+          };
+          const auto with = run(true);
+          const auto without = run(false);
+          vtkPolyData* output = with->GetOutput();
+          const Mesh faces = FromPolyData(output);
+          auto* cellNormals = vtkFloatArray::SafeDownCast(output->GetCellData()->GetNormals());
+          ASSERT_NE(cellNormals, nullptr);
+          ASSERT_EQ(
+            cellNormals->GetNumberOfTuples(), static_cast<vtkIdType>(faces.Triangles.size()));
+          for (std::size_t f = 0; f < faces.Triangles.size(); ++f)
+          {
+            const Triangle& t = faces.Triangles[f];
+            Vec unit;
+            shadelab::FaceNormal(faces.Points[t[0]], faces.Points[t[1]], faces.Points[t[2]], unit);
+            for (int k = 0; k < 3; ++k)
+            {
+              ASSERT_EQ(cellNormals->GetValue(3 * static_cast<vtkIdType>(f) + k),
+                static_cast<float>(unit[k]))
+                << "face " << f << " component " << k;
+            }
+          }
+          EXPECT_EQ(without->GetOutput()->GetCellData()->GetNormals(), nullptr);
+          EXPECT_TRUE(Bytes(output->GetPointData()->GetNormals()) ==
+            Bytes(without->GetOutput()->GetPointData()->GetNormals()))
+            << "point normals differ without cell normals";
+        }
+      }
+    }
+  }
+}
+
 TEST(MeshNormals, WeightingNames)
 {
   vtkNew<vtkShadelabMeshNormals> filter;

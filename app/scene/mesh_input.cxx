@@ -29,8 +29,9 @@ ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& setting
   if (normals->GetExecutive()->Update())
   {
     // A copy of the output's arrays without its pipeline information: that
-    // refers to the filter, whose cache (3 ids, 4 doubles a face) would
-    // otherwise live as long as the mesh.
+    // refers to the filter, whose cache (OpenMesh's mesh and the face
+    // geometry, where splitting or Loop normals built them) would otherwise
+    // live as long as the mesh.
     result.Mesh = vtkSmartPointer<vtkPolyData>::New();
     result.Mesh->ShallowCopy(normals->GetOutput());
     result.DuplicatedFaces = normals->GetNumberOfDuplicatedFaces();

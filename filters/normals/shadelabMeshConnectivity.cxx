@@ -45,12 +45,13 @@ private:
 MeshConnectivity::MeshConnectivity() = default;
 MeshConnectivity::~MeshConnectivity() = default;
 
-void MeshConnectivity::Build(
-  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect)
+void MeshConnectivity::Build(vtkPolyData* input, bool consistency,
+  vtkSmartPointer<vtkTypeInt32Array> triangles, int weighting, bool connect)
 {
   this->Points = input->GetNumberOfPoints();
   this->Triangles = std::move(triangles);
-  this->Reversed = consistency && OrientConsistently(this->Triangles, this->Points);
+  this->Reversed =
+    consistency && OrientConsistently(this->Triangles->GetPointer(0), this->Faces(), this->Points);
 
   this->XYZ = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
   if (!this->XYZ)
@@ -95,7 +96,7 @@ void MeshConnectivity::Connect()
 void MeshConnectivity::AddFaces()
 {
   const double* p = this->XYZ->GetPointer(0);
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType faces = this->Faces();
   TriMesh& mesh = this->Mesh;
   mesh.reserve(this->Points, 3 * faces / 2 + 3, faces);
   mesh.resize(this->Points, 0, 0);
@@ -108,7 +109,7 @@ void MeshConnectivity::AddFaces()
   QuietOpenMesh quiet;
   for (vtkIdType f = 0; f < faces; ++f)
   {
-    const Id* ids = &this->Triangles[3 * f];
+    const Id* ids = this->TriangleIds() + 3 * f;
     std::array<TriMesh::VertexHandle, 3> corner;
     for (int k = 0; k < 3; ++k)
     {
@@ -139,10 +140,10 @@ void MeshConnectivity::AddFaces()
 void MeshConnectivity::StoreFaceGeometry(bool parallel)
 {
   const double* xyz = this->XYZ->GetPointer(0);
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType faces = this->Faces();
   this->FaceNormal.resize(faces);
   this->DoubleArea.resize(faces);
-  const Id* tri = this->Triangles.data();
+  const Id* tri = this->TriangleIds();
   Vec3* faceNormal = this->FaceNormal.data();
   double* doubleArea = this->DoubleArea.data();
   // Independent per face, so cores can share it.
@@ -165,10 +166,10 @@ void MeshConnectivity::StoreFaceGeometry(bool parallel)
 
 void MeshConnectivity::StoreCornerWeights(int weighting)
 {
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType faces = this->Faces();
   this->CornerWeight.resize(3 * faces);
   // The input's points: OpenMesh's may grow meanwhile (Build).
-  ComputeCornerWeights(weighting, this->XYZ->GetPointer(0), this->Triangles.data(),
+  ComputeCornerWeights(weighting, this->XYZ->GetPointer(0), this->TriangleIds(),
     this->DoubleArea.data(), 0, faces, this->CornerWeight.data());
   this->WeightsOf = weighting;
 }

@@ -19,6 +19,7 @@
 
 #include <vtkDoubleArray.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
 
 #include <cmath>
 #include <vector>
@@ -51,9 +52,11 @@ public:
   MeshConnectivity();
   ~MeshConnectivity();
 
-  vtkIdType Points = 0;               // OpenMesh vertex i < Points is input point i
-  std::vector<Id> Triangles;          // 3 input point ids a face, as oriented
-  bool Reversed = false;              // Consistency reversed some faces
+  vtkIdType Points = 0; // OpenMesh vertex i < Points is input point i
+  // 3 input point ids a face, as oriented: the input's own 32-bit ids,
+  // shared, where nothing rewrites them; a copy otherwise.
+  vtkSmartPointer<vtkTypeInt32Array> Triangles;
+  bool Reversed = false;              // Consistency reversed some faces (in a copy)
   bool Connected = false;             // Mesh, CopyOf and the rest below are built
   TriMesh Mesh;                       // face f is input face f
   std::vector<Id> CopyOf;             // OpenMesh vertex Points + i copies CopyOf[i]
@@ -69,13 +72,17 @@ public:
 
   /**
    * Takes the input's points and its `triangles` (3 point ids a face;
-   * oriented consistently first if `consistency`); if `connect`, also builds
+   * oriented consistently first if `consistency`, so then a copy of the
+   * input's); if `connect`, also builds
    * OpenMesh's connectivity with the stored face geometry and the corner
    * weights of `weighting` (on a second thread meanwhile). Without it, no
    * pass over the faces: the sum makes the one it needs.
    */
-  void Build(
-    vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect);
+  void Build(vtkPolyData* input, bool consistency, vtkSmartPointer<vtkTypeInt32Array> triangles,
+    int weighting, bool connect);
+
+  vtkIdType Faces() const { return this->Triangles->GetNumberOfValues() / 3; }
+  const Id* TriangleIds() const { return this->Triangles->GetPointer(0); }
 
   /** Builds OpenMesh's connectivity and stores the face geometry, unless done. */
   void Connect();

@@ -25,6 +25,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabMeshNormals);
@@ -52,17 +53,29 @@ namespace
 // pointing anywhere, and a real normal is never this close to cancelling.
 constexpr double CancelledSum = 1e-12;
 
-// The input's triangles as 3 point ids a face, or an error.
+// The input's triangles as 3 point ids a face, or an error: its own
+// 32-bit ids, checked in place, unless they are 64-bit or `copy` asks for
+// ids to rewrite; then a copy, made as they are checked.
 struct TriangleIds
 {
   template <typename CellState>
-  void operator()(
-    CellState& state, vtkIdType points, std::vector<Id>& ids, std::string& error) const
+  void operator()(CellState& state, vtkIdType points, bool copy,
+    vtkSmartPointer<vtkTypeInt32Array>& ids, std::string& error) const
   {
     const auto* offsets = state.GetOffsets()->GetPointer(0);
     const auto* connectivity = state.GetConnectivity()->GetPointer(0);
     const vtkIdType faces = state.GetOffsets()->GetNumberOfValues() - 1;
-    ids.resize(3 * faces);
+    Id* out = nullptr;
+    if constexpr (std::is_same_v<typename CellState::ArrayType, vtkTypeInt32Array>)
+    {
+      ids = state.GetConnectivity();
+    }
+    if (copy || !ids)
+    {
+      ids = vtkSmartPointer<vtkTypeInt32Array>::New();
+      ids->SetNumberOfValues(3 * faces);
+      out = ids->GetPointer(0);
+    }
     for (vtkIdType f = 0; f < faces; ++f)
     {
       if (offsets[f + 1] - offsets[f] != 3)
@@ -80,15 +93,19 @@ struct TriangleIds
             " of " + std::to_string(points);
           return;
         }
-        ids[3 * f + k] = static_cast<Id>(id);
+        if (out)
+        {
+          out[3 * f + k] = static_cast<Id>(id);
+        }
       }
     }
   }
 };
 
-// The input's triangles (TriangleIds); an error message if it has other
-// polygons or ids, or is too large for OpenMesh.
-std::string ReadTriangles(vtkPolyData* input, std::vector<Id>& triangles)
+// The input's triangles (TriangleIds, a copy if `copy`); an error message
+// if it has other polygons or ids, or is too large for OpenMesh.
+std::string ReadTriangles(
+  vtkPolyData* input, bool copy, vtkSmartPointer<vtkTypeInt32Array>& triangles)
 {
   // OpenMesh numbers vertices and halfedges (3 a face, and copies) in int.
   const vtkIdType limit = std::numeric_limits<Id>::max() / 2;
@@ -100,7 +117,7 @@ std::string ReadTriangles(vtkPolyData* input, std::vector<Id>& triangles)
       std::to_string(cornerCount) + " triangle corners";
   }
   std::string error;
-  input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
+  input->GetPolys()->Visit(TriangleIds{}, points, copy, triangles, error);
   return error;
 }
 
@@ -125,18 +142,16 @@ OutputTopology MakeTopology(const MeshConnectivity& c, bool splitting, double fe
   {
     return topology;
   }
+  if (!splitting)
+  {
+    topology.Connectivity = c.Triangles; // the reversed copy, shared
+    return topology;
+  }
   topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(c.Triangles.size()));
-  if (splitting)
-  {
-    shadelab::normals::SplitVertices(c, std::cos(vtkMath::RadiansFromDegrees(featureAngle)),
-      topology.Source, topology.Connectivity->GetPointer(0), topology.Split);
-    topology.Points = static_cast<vtkIdType>(topology.Source.size());
-  }
-  else
-  {
-    std::copy(c.Triangles.begin(), c.Triangles.end(), topology.Connectivity->GetPointer(0));
-  }
+  topology.Connectivity->SetNumberOfValues(3 * c.Faces());
+  shadelab::normals::SplitVertices(c, std::cos(vtkMath::RadiansFromDegrees(featureAngle)),
+    topology.Source, topology.Connectivity->GetPointer(0), topology.Split);
+  topology.Points = static_cast<vtkIdType>(topology.Source.size());
   return topology;
 }
 
@@ -158,13 +173,13 @@ std::vector<Sum> SumFaceNormals(
   const MeshConnectivity& c, const OutputTopology& topology, int weighting, float* cellNormals)
 {
   const Id* corners =
-    topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.Triangles.data();
+    topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.TriangleIds();
   const bool cornerWeights = shadelab::normals::HasCornerWeights(weighting);
   const double* stored = c.StoredCornerWeights(weighting);
   const bool storedGeometry = !c.FaceNormal.empty();
   const double* xyz = c.XYZ->GetPointer(0);
-  const Id* triangles = c.Triangles.data();
-  const vtkIdType faces = static_cast<vtkIdType>(c.Triangles.size() / 3);
+  const Id* triangles = c.TriangleIds();
+  const vtkIdType faces = c.Faces();
   std::vector<Sum> sum(topology.Points);
   for (vtkIdType f = 0; f < faces; ++f)
   {
@@ -278,7 +293,7 @@ OutputTopology Unweld(const FileVertices& files, const MeshConnectivity& c,
   const OutputTopology& welded, vtkSmartPointer<vtkFloatArray>& normals)
 {
   const Id* cornerPoint =
-    welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.Triangles.data();
+    welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.TriangleIds();
   std::vector<Id> corners;
   OutputTopology topology;
   files.Unweld(cornerPoint, c.Points, normals, corners, topology.Source);
@@ -388,23 +403,23 @@ int vtkShadelabMeshNormals::RequestData(
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)
   {
     this->Cached.reset();
-    std::vector<Id> triangles;
-    const std::string error = ReadTriangles(input, triangles);
+    auto cache = std::make_unique<Cache>();
+    const std::string fileError = cache->Files.Read(input);
+    // Welding and orienting rewrite the ids: in a copy, not in the input.
+    vtkSmartPointer<vtkTypeInt32Array> triangles;
+    std::string error = ReadTriangles(input, this->Consistency || cache->Files.Active(), triangles);
+    if (error.empty())
+    {
+      error = fileError;
+    }
     if (!error.empty())
     {
       vtkErrorMacro(<< error);
       return 0;
     }
-    auto cache = std::make_unique<Cache>();
-    const std::string fileError = cache->Files.Read(input);
-    if (!fileError.empty())
-    {
-      vtkErrorMacro(<< fileError);
-      return 0;
-    }
     if (cache->Files.Active())
     {
-      cache->Files.Welded(triangles);
+      cache->Files.Welded(triangles->GetPointer(0), triangles->GetNumberOfValues());
     }
     cache->Input = input;
     cache->InputTime = input->GetMTime();
@@ -413,7 +428,7 @@ int vtkShadelabMeshNormals::RequestData(
       shadelab::normals::SummedWeighting(this->Weighting), connect);
     if (cache->Files.Active() && cache->Mesh.Reversed)
     {
-      cache->Files.FollowOrientation(cache->Mesh.Triangles);
+      cache->Files.FollowOrientation(cache->Mesh.TriangleIds());
     }
     this->Cached = std::move(cache);
     ++this->NumberOfConnectivityBuilds;
@@ -426,9 +441,8 @@ int vtkShadelabMeshNormals::RequestData(
   this->NumberOfDuplicatedFaces = connect ? mesh.DuplicatedFaces : 0;
 
   OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
-  vtkSmartPointer<vtkFloatArray> cellNormals = this->ComputeCellNormals
-    ? NormalsArray(static_cast<vtkIdType>(mesh.Triangles.size() / 3))
-    : nullptr;
+  vtkSmartPointer<vtkFloatArray> cellNormals =
+    this->ComputeCellNormals ? NormalsArray(mesh.Faces()) : nullptr;
   std::vector<Sum> sum =
     SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting),
       cellNormals ? cellNormals->GetPointer(0) : nullptr);

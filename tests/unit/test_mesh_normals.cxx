@@ -3,6 +3,7 @@
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
 // degenerate input, consistent orientation, suzanne's file normals and the
 // connectivity cache.
+#include "shadelabTriangleMesh.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
@@ -1535,6 +1536,58 @@ TEST(MeshNormals, CellNormalsAreEachFacesNormalInFloat)
             Bytes(without->GetOutput()->GetPointData()->GetNormals()))
             << "point normals differ without cell normals";
         }
+      }
+    }
+  }
+}
+
+// The filter reads 32-bit ids where they are (the readers' storage) and
+// copies 64-bit ones, and ids that welding (an OBJ's file vertices) or
+// Consistency rewrite: the same mesh in either storage gives the same bits,
+// and the input's own ids are never changed.
+TEST(MeshNormals, IdsReadInPlaceOrCopiedGiveTheSameBitsAndKeepTheInput)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "spot.obj").c_str());
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  ASSERT_NE(reader->GetOutput()->GetPointData()->GetArray(shadelab::FileVertexArrayName), nullptr)
+    << "spot.obj's texture seams should split its vertices";
+  const std::pair<std::string, vtkSmartPointer<vtkPolyData>> meshes[] = {
+    { "spot.obj", reader->GetOutput() },
+    { "one face flipped", ToPolyData(BentStripWithOneFlipped()) },
+  };
+  for (const auto& [name, mesh] : meshes)
+  {
+    vtkNew<vtkPolyData> narrow, wide;
+    narrow->DeepCopy(mesh);
+    wide->DeepCopy(mesh);
+    ASSERT_TRUE(narrow->GetPolys()->ConvertTo32BitStorage());
+    ASSERT_TRUE(wide->GetPolys()->ConvertTo64BitStorage());
+    const std::vector<unsigned char> ids = Bytes(narrow->GetPolys()->GetConnectivityArray());
+    for (const bool consistency : { false, true })
+    {
+      for (const bool splitting : { false, true })
+      {
+        SCOPED_TRACE(name + (consistency ? ", oriented" : "") + (splitting ? ", split" : ""));
+        const auto run = [&](vtkPolyData* input)
+        {
+          auto filter = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+          filter->SetInputData(input);
+          filter->SetConsistency(consistency);
+          filter->SetSplitting(splitting);
+          EXPECT_TRUE(filter->GetExecutive()->Update());
+          return filter;
+        };
+        const auto fromNarrow = run(narrow);
+        const auto fromWide = run(wide);
+        EXPECT_TRUE(ids == Bytes(narrow->GetPolys()->GetConnectivityArray()))
+          << "the input's ids changed";
+        vtkPolyData* a = fromNarrow->GetOutput();
+        vtkPolyData* b = fromWide->GetOutput();
+        EXPECT_TRUE(
+          Bytes(a->GetPointData()->GetNormals()) == Bytes(b->GetPointData()->GetNormals()));
+        EXPECT_TRUE(Bytes(a->GetCellData()->GetNormals()) == Bytes(b->GetCellData()->GetNormals()));
+        EXPECT_EQ(FromPolyData(a).Triangles, FromPolyData(b).Triangles);
       }
     }
   }

@@ -16,12 +16,12 @@
 #define shadelabMeshConnectivity_h
 
 #include "shadelabNormalsMesh.h"
+#include "shadelabVec3.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt32Array.h>
 
-#include <cmath>
 #include <vector>
 
 class vtkPolyData;
@@ -31,19 +31,20 @@ namespace shadelab::normals
 /**
  * Face f's unit normal (zero if it has no area) and its doubled area
  * |e1 x e2| (zero for no area, or an overflowing cross product), from the
- * points `xyz` and the faces' 3 point ids each `triangles`: the one
- * computation of both, stored or not.
+ * points `xyz` and the faces' 3 point ids each `triangles`: the project's
+ * one face normal (shadelab::FaceNormal), stored or not. The copies between
+ * OpenMesh's and shadelab's vectors of 3 doubles compile away.
  */
 inline double FaceGeometry(const double* xyz, const Id* triangles, vtkIdType f, Vec3& unitNormal)
 {
-  const Vec3 p0 = PointAt(xyz, triangles[3 * f]);
-  const Vec3 n = OpenMesh::cross(
-    PointAt(xyz, triangles[3 * f + 1]) - p0, PointAt(xyz, triangles[3 * f + 2]) - p0);
-  const double length = n.norm();
-  // Zero (or overflowing) cross products give no direction: no weight.
-  const bool usable = length > 0 && std::isfinite(length);
-  unitNormal = usable ? n / length : Vec3(0, 0, 0);
-  return usable ? length : 0;
+  const auto point = [xyz](vtkIdType i) {
+    return shadelab::Vec3{ xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2] };
+  };
+  shadelab::Vec3 unit;
+  const double doubleArea = shadelab::FaceNormal(
+    point(triangles[3 * f]), point(triangles[3 * f + 1]), point(triangles[3 * f + 2]), unit);
+  unitNormal = Vec3(unit[0], unit[1], unit[2]);
+  return doubleArea;
 }
 
 class MeshConnectivity

@@ -3,6 +3,7 @@
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
 // degenerate input, consistent orientation, suzanne's file normals and the
 // connectivity cache.
+#include "shadelabMeshConnectivity.h"
 #include "shadelabTriangleMesh.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
@@ -30,6 +31,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -1591,6 +1593,67 @@ TEST(MeshNormals, IdsReadInPlaceOrCopiedGiveTheSameBitsAndKeepTheInput)
       }
     }
   }
+}
+
+// The face geometry that the normals sum (shadelab::normals::FaceGeometry)
+// computes through shadelab::FaceNormal, the project's one face normal; it
+// was OpenMesh's vector arithmetic before, written out here: the same bits,
+// on triangles of every scale from 1e-300 to 1e200 (where the cross product
+// overflows), slivers and triangles of no area.
+TEST(MeshNormals, FaceGeometryHasOpenMeshsBits)
+{
+  using OpenMesh::Vec3d;
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<double> xyz;
+  for (const double scale : { 1e-300, 1e-150, 1e-20, 1e-3, 1.0, 1e3, 1e20, 1e150, 1e200 })
+  {
+    for (int i = 0; i < 3000; ++i)
+    {
+      xyz.push_back(scale * unit(random));
+    }
+  }
+  const vtkIdType points = static_cast<vtkIdType>(xyz.size() / 3);
+  std::vector<shadelab::normals::Id> triangles;
+  std::uniform_int_distribution<vtkIdType> point(0, points - 1);
+  for (vtkIdType f = 0; f < 3 * points; ++f)
+  {
+    const vtkIdType a = point(random);
+    // Every 10th face repeats a point (no area), every 10th has its third
+    // point near its first (a sliver), the others are random.
+    const vtkIdType c = f % 10 == 0 ? a : f % 10 == 1 ? (a + 1) % points : point(random);
+    for (const vtkIdType id : { a, point(random), c })
+    {
+      triangles.push_back(static_cast<shadelab::normals::Id>(id));
+    }
+  }
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int usable = 0;
+  for (vtkIdType f = 0; f < static_cast<vtkIdType>(triangles.size() / 3); ++f)
+  {
+    const auto at = [&](int k)
+    {
+      const vtkIdType i = triangles[3 * f + k];
+      return Vec3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    };
+    const Vec3d n = OpenMesh::cross(at(1) - at(0), at(2) - at(0));
+    const double length = n.norm();
+    const bool ok = length > 0 && std::isfinite(length);
+    const Vec3d expected = ok ? n / length : Vec3d(0, 0, 0);
+    usable += ok;
+
+    Vec3d got;
+    const double doubleArea = shadelab::normals::FaceGeometry(xyz.data(), triangles.data(), f, got);
+    ASSERT_TRUE(same(doubleArea, ok ? length : 0)) << "face " << f;
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_TRUE(same(got[k], expected[k])) << "face " << f << " component " << k;
+    }
+  }
+  // Many faces have a normal (not those of no area, nor those with a 1e200
+  // or 1e-300 point, whose cross product overflows or underflows): the
+  // comparison is not of zeros.
+  EXPECT_GT(usable, static_cast<int>(triangles.size() / 3) / 3);
 }
 
 TEST(MeshNormals, WeightingNames)

@@ -3,24 +3,20 @@
 #include "shadelabCornerWeights.h"
 #include "shadelabFileVertices.h"
 #include "shadelabMeshConnectivity.h"
-#include "shadelabVertexSplitting.h"
+#include "shadelabOutputTopology.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
-#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkMath.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt32Array.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -33,6 +29,7 @@ vtkStandardNewMacro(vtkShadelabMeshNormals);
 using shadelab::normals::FileVertices;
 using shadelab::normals::Id;
 using shadelab::normals::MeshConnectivity;
+using shadelab::normals::OutputTopology;
 using shadelab::normals::TriMesh;
 using shadelab::normals::Vec3;
 
@@ -119,40 +116,6 @@ std::string ReadTriangles(
   std::string error;
   input->GetPolys()->Visit(TriangleIds{}, points, copy, triangles, error);
   return error;
-}
-
-// The output's points and triangles where they differ from the input's.
-struct OutputTopology
-{
-  vtkIdType Points = 0;
-  // Each face corner's output point (3 a face); null when the output keeps
-  // the input's triangles.
-  vtkSmartPointer<vtkTypeInt32Array> Connectivity;
-  std::vector<vtkIdType> Source; // each output point's input point, with splitting
-  std::vector<bool> Split;       // per input point, with splitting
-};
-
-// Splits points at separating edges if `splitting`, and takes the faces as
-// oriented if Consistency reversed some.
-OutputTopology MakeTopology(const MeshConnectivity& c, bool splitting, double featureAngle)
-{
-  OutputTopology topology;
-  topology.Points = c.Points;
-  if (!splitting && !c.Reversed)
-  {
-    return topology;
-  }
-  if (!splitting)
-  {
-    topology.Connectivity = c.Triangles; // the reversed copy, shared
-    return topology;
-  }
-  topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  topology.Connectivity->SetNumberOfValues(3 * c.Faces());
-  shadelab::normals::SplitVertices(c, std::cos(vtkMath::RadiansFromDegrees(featureAngle)),
-    topology.Source, topology.Connectivity->GetPointer(0), topology.Split);
-  topology.Points = static_cast<vtkIdType>(topology.Source.size());
-  return topology;
 }
 
 // A vertex's weighted sum of face normals, with the sum of the weights: a
@@ -286,78 +249,6 @@ vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
   return normals;
 }
 
-// With file vertices, the output's points and triangles from the welded
-// mesh's `welded`, and their normals from the welded points' `normals`
-// (FileVertices::Unweld).
-OutputTopology Unweld(const FileVertices& files, const MeshConnectivity& c,
-  const OutputTopology& welded, vtkSmartPointer<vtkFloatArray>& normals)
-{
-  const Id* cornerPoint =
-    welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.TriangleIds();
-  std::vector<Id> corners;
-  OutputTopology topology;
-  files.Unweld(cornerPoint, c.Points, normals, corners, topology.Source);
-  topology.Points = static_cast<vtkIdType>(topology.Source.size());
-  topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
-  std::copy(corners.begin(), corners.end(), topology.Connectivity->GetPointer(0));
-  return topology;
-}
-
-// The output's triangles: the input's unless points were split or faces
-// reversed; only the triangles are kept (verts, lines and strips dropped).
-void SetTriangles(vtkPolyData* input, const OutputTopology& topology, vtkPolyData* output)
-{
-  if (!topology.Connectivity)
-  {
-    output->SetPolys(input->GetPolys());
-    return;
-  }
-  const vtkIdType faces = topology.Connectivity->GetNumberOfValues() / 3;
-  auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
-  offsets->SetNumberOfValues(faces + 1);
-  Id* offset = offsets->GetPointer(0);
-  for (vtkIdType f = 0; f <= faces; ++f)
-  {
-    offset[f] = static_cast<Id>(3 * f);
-  }
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  polys->SetData(offsets, topology.Connectivity);
-  output->SetPolys(polys);
-}
-
-// The output's points and their data: the input's, then copies of the
-// split ones (with their data).
-void SetPoints(vtkPolyData* input, const OutputTopology& topology, vtkPolyData* output)
-{
-  const vtkIdType points = input->GetNumberOfPoints();
-  const vtkIdType outputPoints = topology.Points;
-  if (outputPoints == points)
-  {
-    output->SetPoints(input->GetPoints());
-    output->GetPointData()->PassData(input->GetPointData());
-    return;
-  }
-  auto splitPoints = vtkSmartPointer<vtkPoints>::New();
-  splitPoints->SetDataType(input->GetPoints()->GetDataType());
-  splitPoints->SetNumberOfPoints(outputPoints);
-  splitPoints->GetData()->InsertTuples(0, points, 0, input->GetPoints()->GetData());
-  auto from = vtkSmartPointer<vtkIdList>::New();
-  auto to = vtkSmartPointer<vtkIdList>::New();
-  from->SetNumberOfIds(outputPoints - points);
-  to->SetNumberOfIds(outputPoints - points);
-  for (vtkIdType i = points; i < outputPoints; ++i)
-  {
-    from->SetId(i - points, topology.Source[i]);
-    to->SetId(i - points, i);
-  }
-  splitPoints->GetData()->InsertTuples(to, from, input->GetPoints()->GetData());
-  output->SetPoints(splitPoints);
-  vtkPointData* pointData = output->GetPointData();
-  pointData->CopyAllocate(input->GetPointData(), outputPoints);
-  pointData->CopyData(input->GetPointData(), 0, points, 0);
-  pointData->CopyData(input->GetPointData(), from, to);
-}
 }
 
 vtkShadelabMeshNormals::vtkShadelabMeshNormals() = default;
@@ -440,7 +331,8 @@ int vtkShadelabMeshNormals::RequestData(
   }
   this->NumberOfDuplicatedFaces = connect ? mesh.DuplicatedFaces : 0;
 
-  OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
+  OutputTopology topology =
+    shadelab::normals::MakeTopology(mesh, this->Splitting, this->FeatureAngle);
   vtkSmartPointer<vtkFloatArray> cellNormals =
     this->ComputeCellNormals ? NormalsArray(mesh.Faces()) : nullptr;
   std::vector<Sum> sum =
@@ -454,14 +346,13 @@ int vtkShadelabMeshNormals::RequestData(
   vtkSmartPointer<vtkFloatArray> normals = UnitNormals(sum);
   if (this->Cached->Files.Active())
   {
-    topology = Unweld(this->Cached->Files, mesh, topology, normals);
+    topology = shadelab::normals::Unweld(this->Cached->Files, mesh, topology, normals);
   }
 
   output->GetPointData()->CopyNormalsOff();
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
-  SetTriangles(input, topology, output);
-  SetPoints(input, topology, output);
+  shadelab::normals::SetOutputMesh(input, topology, output);
   output->GetPointData()->SetNormals(normals);
   if (cellNormals)
   {

@@ -68,7 +68,7 @@ int RunNormals(const NormalsOptions& o)
   input.ShadingRule = Shading::Phong; // a lit rule: LoadMesh computes normals for those
   input.Normals = NormalsMode::Compute;
   input.Computed = o.Settings;
-  const LoadedMesh loaded = LoadMesh(input);
+  const LoadedMesh loaded = LoadMesh(input, nullptr, true); // with face normals: files have room
   if (!loaded.Mesh)
   {
     return ReportError(o.Mesh, loaded.Error);

@@ -1,8 +1,5 @@
 #include "scene/mesh_cache.h"
 
-#include <vtkCellData.h>
-#include <vtkPolyData.h>
-
 namespace shadelab
 {
 const LoadedMesh& MeshCache::Get(const SceneOptions& o)
@@ -13,19 +10,8 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
   auto cached = this->Meshes.find(key);
   if (cached == this->Meshes.end())
   {
-    LoadedMesh loaded = LoadMesh(o, this->Timer);
-    // No picture draws the face normals that the normals filter or a file
-    // gives (flat computes its own as it uploads them, and VTK would
-    // upload them for a rule without point normals): 12 bytes a triangle
-    // freed, 203 MiB of a 17.8M-triangle mesh.
-    if (loaded.Mesh)
-    {
-      vtkCellData* cells = loaded.Mesh->GetCellData();
-      int attributes[vtkDataSetAttributes::NUM_ATTRIBUTES];
-      cells->GetAttributeIndices(attributes);
-      cells->RemoveArray(attributes[vtkDataSetAttributes::NORMALS]); // nothing if none (-1)
-    }
-    cached = this->Meshes.emplace(key, std::move(loaded)).first;
+    // Without face normals (LoadMesh's default): no picture draws them.
+    cached = this->Meshes.emplace(key, LoadMesh(o, this->Timer)).first;
   }
   return cached->second;
 }

@@ -15,10 +15,11 @@
 
 namespace shadelab
 {
-ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings)
+ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals)
 {
   auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
   normals->SetInputData(mesh);
+  normals->SetComputeCellNormals(cellNormals);
   normals->SetWeightingByName(settings.Weighting.c_str());
   normals->SetSplitting(settings.FeatureAngle.has_value());
   normals->SetFeatureAngle(settings.FeatureAngle.value_or(0));
@@ -28,8 +29,9 @@ ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& setting
   if (normals->GetExecutive()->Update())
   {
     // A copy of the output's arrays without its pipeline information: that
-    // refers to the filter, whose cache (3 ids, 4 doubles a face) would
-    // otherwise live as long as the mesh.
+    // refers to the filter, whose cache (OpenMesh's mesh and the face
+    // geometry, where splitting or Loop normals built them) would otherwise
+    // live as long as the mesh.
     result.Mesh = vtkSmartPointer<vtkPolyData>::New();
     result.Mesh->ShallowCopy(normals->GetOutput());
     result.DuplicatedFaces = normals->GetNumberOfDuplicatedFaces();
@@ -63,7 +65,7 @@ vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
   return result;
 }
 
-LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer)
+LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNormals)
 {
   const auto lap = [timer](const char* phase)
   {
@@ -103,7 +105,7 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer)
     (options.Normals == NormalsMode::Auto && !result.NormalsFromFile);
   if (lit && compute)
   {
-    const ComputedNormals normals = ComputeNormals(mesh, options.Computed);
+    const ComputedNormals normals = ComputeNormals(mesh, options.Computed, cellNormals);
     ReportWarnings(options.Mesh, normals.Warnings);
     if (!normals.Mesh)
     {

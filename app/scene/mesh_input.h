@@ -27,8 +27,11 @@ struct LoadedMesh
 /**
  * Reads options.Mesh and computes its normals as asked; warnings are
  * reported. `timer` (if given) times the phases "read" and "normals".
+ * Computed normals come with face normals only if `cellNormals`: no
+ * picture draws them (flat shading computes its own), a mesh file does.
  */
-LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer = nullptr);
+LoadedMesh LoadMesh(
+  const SceneOptions& options, PhaseTimer* timer = nullptr, bool cellNormals = false);
 
 struct ComputedNormals
 {
@@ -38,8 +41,12 @@ struct ComputedNormals
   vtkIdType DuplicatedFaces = 0;     // faces OpenMesh refused, given vertices of their own
 };
 
-/** mesh with vertex normals computed by vtkShadelabMeshNormals as settings say. */
-ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings);
+/**
+ * mesh with vertex normals computed by vtkShadelabMeshNormals as settings
+ * say, and with face normals if `cellNormals`.
+ */
+ComputedNormals ComputeNormals(
+  vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals = false);
 
 /**
  * mesh welded (vtkCleanPolyData) and Loop-subdivided `levels` times, with

@@ -35,40 +35,6 @@ void Release(std::vector<Value>& values)
   std::vector<Value>().swap(values);
 }
 
-// The values as a VTK array of type Array, the vector freed.
-template <typename Array, typename Value>
-vtkSmartPointer<Array> TakeValues(std::vector<Value>& values)
-{
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
-  Release(values);
-  return array;
-}
-
-// A parser's cells, taken over: 32-bit storage (half the memory) where
-// every offset and id fits in it, even those out of range (checked later,
-// and named in their error as the file has them); 64-bit otherwise.
-vtkSmartPointer<vtkCellArray> TakeCells(
-  std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids)
-{
-  const auto [low, high] = std::minmax_element(ids.begin(), ids.end());
-  const bool fits = offsets.back() <= std::numeric_limits<vtkTypeInt32>::max() &&
-    (ids.empty() ||
-      (*low >= std::numeric_limits<vtkTypeInt32>::min() &&
-        *high <= std::numeric_limits<vtkTypeInt32>::max()));
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  if (fits)
-  {
-    cells->SetData(TakeValues<vtkTypeInt32Array>(offsets), TakeValues<vtkTypeInt32Array>(ids));
-  }
-  else
-  {
-    cells->SetData(TakeValues<vtkIdTypeArray>(offsets), TakeValues<vtkIdTypeArray>(ids));
-  }
-  return cells;
-}
-
 // A parser's values as a VTK array of that type (vtkFloatArray for float...),
 // the vector freed.
 template <typename Array, typename Value>
@@ -81,6 +47,55 @@ vtkSmartPointer<Array> MakeArray(const char* name, int components, std::vector<V
   std::copy(values.begin(), values.end(), array->GetPointer(0));
   Release(values);
   return array;
+}
+
+// The ids in 32 bits, checked as they are copied (one pass); null, and the
+// vector kept, where one does not fit.
+vtkSmartPointer<vtkTypeInt32Array> Narrowed(std::vector<vtkIdType>& ids)
+{
+  auto array = vtkSmartPointer<vtkTypeInt32Array>::New();
+  array->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+  vtkTypeInt32* out = array->GetPointer(0);
+  for (const vtkIdType id : ids)
+  {
+    if (id < std::numeric_limits<vtkTypeInt32>::min() ||
+      id > std::numeric_limits<vtkTypeInt32>::max())
+    {
+      return nullptr;
+    }
+    *out++ = static_cast<vtkTypeInt32>(id);
+  }
+  Release(ids);
+  return array;
+}
+
+// A parser's cells, taken over: 32-bit storage (half the memory) where
+// every offset and id fits in it, even those out of range (checked later,
+// and named in their error as the file has them); 64-bit otherwise. The
+// offsets go first, so that the largest vector, the ids, is freed before
+// its copy's peer is made (as it was with two passes).
+vtkSmartPointer<vtkCellArray> TakeCells(
+  std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids)
+{
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  // The offsets grow, so the last is the largest.
+  if (offsets.back() <= std::numeric_limits<vtkTypeInt32>::max())
+  {
+    auto offsets32 = MakeArray<vtkTypeInt32Array>(nullptr, 1, offsets);
+    if (vtkSmartPointer<vtkTypeInt32Array> ids32 = Narrowed(ids))
+    {
+      cells->SetData(offsets32, ids32);
+      return cells;
+    }
+    // An id beyond 32 bits (an error, named later): the offsets widened back.
+    auto offsets64 = vtkSmartPointer<vtkIdTypeArray>::New();
+    offsets64->DeepCopy(offsets32);
+    cells->SetData(offsets64, MakeArray<vtkIdTypeArray>(nullptr, 1, ids));
+    return cells;
+  }
+  cells->SetData(
+    MakeArray<vtkIdTypeArray>(nullptr, 1, offsets), MakeArray<vtkIdTypeArray>(nullptr, 1, ids));
+  return cells;
 }
 
 std::string Number(vtkIdType index, vtkIdType firstNumber)

@@ -1,7 +1,7 @@
 /**
  * @brief   indices grouped by key (a counting sort)
  *
- * The indices of `keys` grouped by key, in order: those of key k are
+ * The indices of `count` `keys` grouped by key, in order: those of key k are
  * Items[First[k]] to Items[First[k + 1] - 1]. The normals use it for the
  * face corners at each point and for the copies of each point.
  */
@@ -20,17 +20,17 @@ struct Buckets
   std::vector<Id> First;
   std::vector<Id> Items;
 
-  Buckets(const std::vector<Id>& keys, vtkIdType keyCount)
+  Buckets(const Id* keys, vtkIdType count, vtkIdType keyCount)
     : First(keyCount + 1, 0)
-    , Items(keys.size())
+    , Items(count)
   {
-    for (const Id k : keys)
+    for (vtkIdType i = 0; i < count; ++i)
     {
-      ++this->First[k + 1];
+      ++this->First[keys[i] + 1];
     }
     std::partial_sum(this->First.begin(), this->First.end(), this->First.begin());
     std::vector<Id> fill(this->First.begin(), this->First.end() - 1);
-    for (size_t i = 0; i < keys.size(); ++i)
+    for (vtkIdType i = 0; i < count; ++i)
     {
       this->Items[fill[keys[i]]++] = static_cast<Id>(i);
     }

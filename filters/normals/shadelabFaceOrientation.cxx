@@ -3,6 +3,7 @@
 #include "shadelabBuckets.h"
 
 #include <utility>
+#include <vector>
 
 namespace shadelab::normals
 {
@@ -16,15 +17,14 @@ bool HasEdge(const Id* g, Id a, Id b)
 
 // The one face other than f on edge a-b, or -1: none (boundary) or several
 // (non-manifold) pass no orientation on.
-vtkIdType OtherFaceOnEdge(
-  const std::vector<Id>& tri, const Buckets& around, vtkIdType f, Id a, Id b)
+vtkIdType OtherFaceOnEdge(const Id* tri, const Buckets& around, vtkIdType f, Id a, Id b)
 {
   vtkIdType other = -1;
   int count = 0;
   for (vtkIdType i = around.First[a]; i < around.First[a + 1]; ++i)
   {
     const vtkIdType g = around.Items[i] / 3;
-    const Id* ids = &tri[3 * g];
+    const Id* ids = tri + 3 * g;
     if (g != f && g != other && (ids[0] == b || ids[1] == b || ids[2] == b))
     {
       other = g;
@@ -35,11 +35,10 @@ vtkIdType OtherFaceOnEdge(
 }
 }
 
-bool OrientConsistently(std::vector<Id>& tri, vtkIdType points)
+bool OrientConsistently(Id* tri, vtkIdType faces, vtkIdType points)
 {
-  const vtkIdType faces = static_cast<vtkIdType>(tri.size() / 3);
   // The face corners at each point (corner c is in face c / 3).
-  const Buckets around(tri, points);
+  const Buckets around(tri, 3 * faces, points);
 
   bool reversed = false;
   std::vector<bool> reached(faces, false);
@@ -66,7 +65,7 @@ bool OrientConsistently(std::vector<Id>& tri, vtkIdType points)
           continue;
         }
         reached[other] = true;
-        Id* ids = &tri[3 * other];
+        Id* ids = tri + 3 * other;
         if (HasEdge(ids, a, b))
         {
           std::swap(ids[1], ids[2]);

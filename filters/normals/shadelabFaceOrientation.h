@@ -9,17 +9,15 @@
 
 #include "shadelabNormalsMesh.h"
 
-#include <vector>
-
 namespace shadelab::normals
 {
 /**
- * Reverses faces (3 point ids each in `triangles`) so that neighbours
+ * Reverses faces (`faces` of 3 point ids each in `triangles`) so that neighbours
  * across each manifold edge use the edge in opposite directions, spreading
  * out from the lowest-numbered face of each edge-connected part. Returns
  * whether a face was reversed.
  */
-bool OrientConsistently(std::vector<Id>& triangles, vtkIdType points);
+bool OrientConsistently(Id* triangles, vtkIdType faces, vtkIdType points);
 }
 
 #endif

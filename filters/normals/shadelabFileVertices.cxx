@@ -48,18 +48,18 @@ std::string FileVertices::Read(vtkPolyData* input)
   return "";
 }
 
-void FileVertices::Welded(std::vector<Id>& triangles)
+void FileVertices::Welded(Id* triangles, vtkIdType count)
 {
-  this->Corners = triangles;
-  for (Id& id : triangles)
+  this->Corners.assign(triangles, triangles + count);
+  for (vtkIdType k = 0; k < count; ++k)
   {
-    id = this->Weld[id];
+    triangles[k] = this->Weld[triangles[k]];
   }
 }
 
-void FileVertices::FollowOrientation(const std::vector<Id>& oriented)
+void FileVertices::FollowOrientation(const Id* oriented)
 {
-  for (std::size_t f = 0; f < oriented.size(); f += 3)
+  for (std::size_t f = 0; f < this->Corners.size(); f += 3)
   {
     if (this->Weld[this->Corners[f + 1]] != oriented[f + 1])
     {

@@ -40,8 +40,8 @@ public:
 
   bool Active() const { return !this->Weld.empty(); }
 
-  /** The input's triangles (3 point ids a face) welded; keeps the input's own. */
-  void Welded(std::vector<Id>& triangles);
+  /** The input's `count` triangle ids (3 a face) welded in place; keeps the input's own. */
+  void Welded(Id* triangles, vtkIdType count);
 
   /**
    * Reverses the input's own triangles as Consistency reversed the welded
@@ -49,7 +49,7 @@ public:
    * corners are one file vertex has no area, so which of them comes first
    * does not matter.
    */
-  void FollowOrientation(const std::vector<Id>& oriented);
+  void FollowOrientation(const Id* oriented);
 
   /**
    * The output from the welded one's: `cornerPoint` (3 a face) the welded

@@ -45,12 +45,13 @@ private:
 MeshConnectivity::MeshConnectivity() = default;
 MeshConnectivity::~MeshConnectivity() = default;
 
-void MeshConnectivity::Build(
-  vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect)
+void MeshConnectivity::Build(vtkPolyData* input, bool consistency,
+  vtkSmartPointer<vtkTypeInt32Array> triangles, int weighting, bool connect)
 {
   this->Points = input->GetNumberOfPoints();
   this->Triangles = std::move(triangles);
-  this->Reversed = consistency && OrientConsistently(this->Triangles, this->Points);
+  this->Reversed =
+    consistency && OrientConsistently(this->Triangles->GetPointer(0), this->Faces(), this->Points);
 
   this->XYZ = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
   if (!this->XYZ)
@@ -60,7 +61,6 @@ void MeshConnectivity::Build(
   }
   if (!connect)
   {
-    this->ComputeFaceNormals(true, false);
     return;
   }
   // The face geometry needs no connectivity: it is computed on a second
@@ -70,7 +70,7 @@ void MeshConnectivity::Build(
   auto computed = std::async(std::launch::async,
     [this, weighting]
     {
-      this->ComputeFaceNormals(false, true);
+      this->StoreFaceGeometry(false);
       if (HasCornerWeights(weighting))
       {
         this->StoreCornerWeights(weighting);
@@ -85,7 +85,7 @@ void MeshConnectivity::Connect()
 {
   if (!this->Connected)
   {
-    this->ComputeFaceNormals(true, true);
+    this->StoreFaceGeometry(true);
     this->AddFaces();
     this->Connected = true;
   }
@@ -96,7 +96,7 @@ void MeshConnectivity::Connect()
 void MeshConnectivity::AddFaces()
 {
   const double* p = this->XYZ->GetPointer(0);
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType faces = this->Faces();
   TriMesh& mesh = this->Mesh;
   mesh.reserve(this->Points, 3 * faces / 2 + 3, faces);
   mesh.resize(this->Points, 0, 0);
@@ -109,7 +109,7 @@ void MeshConnectivity::AddFaces()
   QuietOpenMesh quiet;
   for (vtkIdType f = 0; f < faces; ++f)
   {
-    const Id* ids = &this->Triangles[3 * f];
+    const Id* ids = this->TriangleIds() + 3 * f;
     std::array<TriMesh::VertexHandle, 3> corner;
     for (int k = 0; k < 3; ++k)
     {
@@ -137,18 +137,13 @@ void MeshConnectivity::AddFaces()
   }
 }
 
-void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
+void MeshConnectivity::StoreFaceGeometry(bool parallel)
 {
   const double* xyz = this->XYZ->GetPointer(0);
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
-  this->FaceNormal.resize(store ? faces : 0);
-  this->DoubleArea.resize(store ? faces : 0);
-  this->CellNormals = vtkSmartPointer<vtkFloatArray>::New();
-  this->CellNormals->SetName("Normals");
-  this->CellNormals->SetNumberOfComponents(3);
-  this->CellNormals->SetNumberOfTuples(faces);
-  float* out = this->CellNormals->GetPointer(0);
-  const Id* tri = this->Triangles.data();
+  const vtkIdType faces = this->Faces();
+  this->FaceNormal.resize(faces);
+  this->DoubleArea.resize(faces);
+  const Id* tri = this->TriangleIds();
   Vec3* faceNormal = this->FaceNormal.data();
   double* doubleArea = this->DoubleArea.data();
   // Independent per face, so cores can share it.
@@ -156,17 +151,7 @@ void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
   {
     for (vtkIdType f = begin; f < end; ++f)
     {
-      Vec3 n;
-      const double area2 = FaceGeometry(xyz, tri, f, n);
-      if (store)
-      {
-        faceNormal[f] = n;
-        doubleArea[f] = area2;
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        out[3 * f + c] = static_cast<float>(n[c]);
-      }
+      doubleArea[f] = FaceGeometry(xyz, tri, f, faceNormal[f]);
     }
   };
   if (parallel)
@@ -181,10 +166,10 @@ void MeshConnectivity::ComputeFaceNormals(bool parallel, bool store)
 
 void MeshConnectivity::StoreCornerWeights(int weighting)
 {
-  const vtkIdType faces = static_cast<vtkIdType>(this->Triangles.size() / 3);
+  const vtkIdType faces = this->Faces();
   this->CornerWeight.resize(3 * faces);
   // The input's points: OpenMesh's may grow meanwhile (Build).
-  ComputeCornerWeights(weighting, this->XYZ->GetPointer(0), this->Triangles.data(),
+  ComputeCornerWeights(weighting, this->XYZ->GetPointer(0), this->TriangleIds(),
     this->DoubleArea.data(), 0, faces, this->CornerWeight.data());
   this->WeightsOf = weighting;
 }

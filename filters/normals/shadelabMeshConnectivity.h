@@ -16,12 +16,12 @@
 #define shadelabMeshConnectivity_h
 
 #include "shadelabNormalsMesh.h"
+#include "shadelabVec3.h"
 
 #include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
 
-#include <cmath>
 #include <vector>
 
 class vtkPolyData;
@@ -31,19 +31,20 @@ namespace shadelab::normals
 /**
  * Face f's unit normal (zero if it has no area) and its doubled area
  * |e1 x e2| (zero for no area, or an overflowing cross product), from the
- * points `xyz` and the faces' 3 point ids each `triangles`: the one
- * computation of both, stored or not.
+ * points `xyz` and the faces' 3 point ids each `triangles`: the project's
+ * one face normal (shadelab::FaceNormal), stored or not. The copies between
+ * OpenMesh's and shadelab's vectors of 3 doubles compile away.
  */
 inline double FaceGeometry(const double* xyz, const Id* triangles, vtkIdType f, Vec3& unitNormal)
 {
-  const Vec3 p0 = PointAt(xyz, triangles[3 * f]);
-  const Vec3 n = OpenMesh::cross(
-    PointAt(xyz, triangles[3 * f + 1]) - p0, PointAt(xyz, triangles[3 * f + 2]) - p0);
-  const double length = n.norm();
-  // Zero (or overflowing) cross products give no direction: no weight.
-  const bool usable = length > 0 && std::isfinite(length);
-  unitNormal = usable ? n / length : Vec3(0, 0, 0);
-  return usable ? length : 0;
+  const auto point = [xyz](vtkIdType i) {
+    return shadelab::Vec3{ xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2] };
+  };
+  shadelab::Vec3 unit;
+  const double doubleArea = shadelab::FaceNormal(
+    point(triangles[3 * f]), point(triangles[3 * f + 1]), point(triangles[3 * f + 2]), unit);
+  unitNormal = Vec3(unit[0], unit[1], unit[2]);
+  return doubleArea;
 }
 
 class MeshConnectivity
@@ -52,9 +53,11 @@ public:
   MeshConnectivity();
   ~MeshConnectivity();
 
-  vtkIdType Points = 0;               // OpenMesh vertex i < Points is input point i
-  std::vector<Id> Triangles;          // 3 input point ids a face, as oriented
-  bool Reversed = false;              // Consistency reversed some faces
+  vtkIdType Points = 0; // OpenMesh vertex i < Points is input point i
+  // 3 input point ids a face, as oriented: the input's own 32-bit ids,
+  // shared, where nothing rewrites them; a copy otherwise.
+  vtkSmartPointer<vtkTypeInt32Array> Triangles;
+  bool Reversed = false;              // Consistency reversed some faces (in a copy)
   bool Connected = false;             // Mesh, CopyOf and the rest below are built
   TriMesh Mesh;                       // face f is input face f
   std::vector<Id> CopyOf;             // OpenMesh vertex Points + i copies CopyOf[i]
@@ -67,16 +70,20 @@ public:
   // it, which keeps a large mesh's 4 doubles a face out of memory.
   std::vector<Vec3> FaceNormal;
   std::vector<double> DoubleArea;
-  vtkSmartPointer<vtkFloatArray> CellNormals; // the unit face normals as the output stores them
 
   /**
    * Takes the input's points and its `triangles` (3 point ids a face;
-   * oriented consistently first if `consistency`) and computes CellNormals;
-   * if `connect`, also OpenMesh's connectivity with the stored face geometry
-   * and the corner weights of `weighting` (on a second thread meanwhile).
+   * oriented consistently first if `consistency`, so then a copy of the
+   * input's); if `connect`, also builds
+   * OpenMesh's connectivity with the stored face geometry and the corner
+   * weights of `weighting` (on a second thread meanwhile). Without it, no
+   * pass over the faces: the sum makes the one it needs.
    */
-  void Build(
-    vtkPolyData* input, bool consistency, std::vector<Id>&& triangles, int weighting, bool connect);
+  void Build(vtkPolyData* input, bool consistency, vtkSmartPointer<vtkTypeInt32Array> triangles,
+    int weighting, bool connect);
+
+  vtkIdType Faces() const { return this->Triangles->GetNumberOfValues() / 3; }
+  const Id* TriangleIds() const { return this->Triangles->GetPointer(0); }
 
   /** Builds OpenMesh's connectivity and stores the face geometry, unless done. */
   void Connect();
@@ -96,7 +103,7 @@ private:
   MeshConnectivity(const MeshConnectivity&) = delete;
   void operator=(const MeshConnectivity&) = delete;
 
-  void ComputeFaceNormals(bool parallel, bool store);
+  void StoreFaceGeometry(bool parallel);
   void AddFaces();
 
   void StoreCornerWeights(int weighting);

@@ -99,7 +99,7 @@ void NumberRuns(const MeshConnectivity& c, const std::vector<char>& separating, 
       // The corner's number in the face: copies are made three at a time
       // in corner order; an original vertex is found by its id (a face
       // that repeats an id was duplicated).
-      const Id* ids = &c.Triangles[3 * face.Face];
+      const Id* ids = c.TriangleIds() + 3 * face.Face;
       const int k = vi >= c.Points ? (vi - c.Points) % 3 : ids[0] == i ? 0 : ids[1] == i ? 1 : 2;
       cornerPoint[3 * face.Face + k] = runs - 1;
     }
@@ -114,7 +114,7 @@ std::vector<int> CountRuns(
   const MeshConnectivity& c, const std::vector<char>& separating, Id* cornerPoint)
 {
   const vtkIdType points = c.Points;
-  const Buckets copies(c.CopyOf, points);
+  const Buckets copies(c.CopyOf.data(), static_cast<vtkIdType>(c.CopyOf.size()), points);
   std::vector<int> runs(points, 0);
   vtkSMPTools::For(0, points,
     [&](vtkIdType firstPoint, vtkIdType endPoint)
@@ -152,8 +152,8 @@ void SplitVertices(const MeshConnectivity& c, double cosFeature, std::vector<vtk
     split[i] = runs[i] > 1;
     source.insert(source.end(), std::max(runs[i] - 1, 0), i);
   }
-  const Id* tri = c.Triangles.data();
-  vtkSMPTools::For(0, static_cast<vtkIdType>(c.Triangles.size()),
+  const Id* tri = c.TriangleIds();
+  vtkSMPTools::For(0, 3 * c.Faces(),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType k = begin; k < end; ++k)

@@ -3,28 +3,25 @@
 #include "shadelabCornerWeights.h"
 #include "shadelabFileVertices.h"
 #include "shadelabMeshConnectivity.h"
-#include "shadelabVertexSplitting.h"
+#include "shadelabOutputTopology.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
-#include <vtkIdList.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkMath.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt32Array.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabMeshNormals);
@@ -32,6 +29,7 @@ vtkStandardNewMacro(vtkShadelabMeshNormals);
 using shadelab::normals::FileVertices;
 using shadelab::normals::Id;
 using shadelab::normals::MeshConnectivity;
+using shadelab::normals::OutputTopology;
 using shadelab::normals::TriMesh;
 using shadelab::normals::Vec3;
 
@@ -52,17 +50,29 @@ namespace
 // pointing anywhere, and a real normal is never this close to cancelling.
 constexpr double CancelledSum = 1e-12;
 
-// The input's triangles as 3 point ids a face, or an error.
+// The input's triangles as 3 point ids a face, or an error: its own
+// 32-bit ids, checked in place, unless they are 64-bit or `copy` asks for
+// ids to rewrite; then a copy, made as they are checked.
 struct TriangleIds
 {
   template <typename CellState>
-  void operator()(
-    CellState& state, vtkIdType points, std::vector<Id>& ids, std::string& error) const
+  void operator()(CellState& state, vtkIdType points, bool copy,
+    vtkSmartPointer<vtkTypeInt32Array>& ids, std::string& error) const
   {
     const auto* offsets = state.GetOffsets()->GetPointer(0);
     const auto* connectivity = state.GetConnectivity()->GetPointer(0);
     const vtkIdType faces = state.GetOffsets()->GetNumberOfValues() - 1;
-    ids.resize(3 * faces);
+    Id* out = nullptr;
+    if constexpr (std::is_same_v<typename CellState::ArrayType, vtkTypeInt32Array>)
+    {
+      ids = state.GetConnectivity();
+    }
+    if (copy || !ids)
+    {
+      ids = vtkSmartPointer<vtkTypeInt32Array>::New();
+      ids->SetNumberOfValues(3 * faces);
+      out = ids->GetPointer(0);
+    }
     for (vtkIdType f = 0; f < faces; ++f)
     {
       if (offsets[f + 1] - offsets[f] != 3)
@@ -80,15 +90,19 @@ struct TriangleIds
             " of " + std::to_string(points);
           return;
         }
-        ids[3 * f + k] = static_cast<Id>(id);
+        if (out)
+        {
+          out[3 * f + k] = static_cast<Id>(id);
+        }
       }
     }
   }
 };
 
-// The input's triangles (TriangleIds); an error message if it has other
-// polygons or ids, or is too large for OpenMesh.
-std::string ReadTriangles(vtkPolyData* input, std::vector<Id>& triangles)
+// The input's triangles (TriangleIds, a copy if `copy`); an error message
+// if it has other polygons or ids, or is too large for OpenMesh.
+std::string ReadTriangles(
+  vtkPolyData* input, bool copy, vtkSmartPointer<vtkTypeInt32Array>& triangles)
 {
   // OpenMesh numbers vertices and halfedges (3 a face, and copies) in int.
   const vtkIdType limit = std::numeric_limits<Id>::max() / 2;
@@ -100,44 +114,8 @@ std::string ReadTriangles(vtkPolyData* input, std::vector<Id>& triangles)
       std::to_string(cornerCount) + " triangle corners";
   }
   std::string error;
-  input->GetPolys()->Visit(TriangleIds{}, points, triangles, error);
+  input->GetPolys()->Visit(TriangleIds{}, points, copy, triangles, error);
   return error;
-}
-
-// The output's points and triangles where they differ from the input's.
-struct OutputTopology
-{
-  vtkIdType Points = 0;
-  // Each face corner's output point (3 a face); null when the output keeps
-  // the input's triangles.
-  vtkSmartPointer<vtkTypeInt32Array> Connectivity;
-  std::vector<vtkIdType> Source; // each output point's input point, with splitting
-  std::vector<bool> Split;       // per input point, with splitting
-};
-
-// Splits points at separating edges if `splitting`, and takes the faces as
-// oriented if Consistency reversed some.
-OutputTopology MakeTopology(const MeshConnectivity& c, bool splitting, double featureAngle)
-{
-  OutputTopology topology;
-  topology.Points = c.Points;
-  if (!splitting && !c.Reversed)
-  {
-    return topology;
-  }
-  topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(c.Triangles.size()));
-  if (splitting)
-  {
-    shadelab::normals::SplitVertices(c, std::cos(vtkMath::RadiansFromDegrees(featureAngle)),
-      topology.Source, topology.Connectivity->GetPointer(0), topology.Split);
-    topology.Points = static_cast<vtkIdType>(topology.Source.size());
-  }
-  else
-  {
-    std::copy(c.Triangles.begin(), c.Triangles.end(), topology.Connectivity->GetPointer(0));
-  }
-  return topology;
 }
 
 // A vertex's weighted sum of face normals, with the sum of the weights: a
@@ -150,20 +128,21 @@ struct Sum
 };
 
 // Each face's weighted unit normal, summed into its corners' points, face
-// by face in the input's order (the order fixes the sums' bits). Where the
-// face geometry and the weights are not stored, each face's are computed as
-// it is added: the same functions on the same values, so the same bits.
+// by face in the input's order (the order fixes the sums' bits), and into
+// `cellNormals` (3 floats a face) unless null. Where the face geometry and
+// the weights are not stored, each face's are computed as it is added: the
+// same functions on the same values, so the same bits.
 std::vector<Sum> SumFaceNormals(
-  const MeshConnectivity& c, const OutputTopology& topology, int weighting)
+  const MeshConnectivity& c, const OutputTopology& topology, int weighting, float* cellNormals)
 {
   const Id* corners =
-    topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.Triangles.data();
+    topology.Connectivity ? topology.Connectivity->GetPointer(0) : c.TriangleIds();
   const bool cornerWeights = shadelab::normals::HasCornerWeights(weighting);
   const double* stored = c.StoredCornerWeights(weighting);
   const bool storedGeometry = !c.FaceNormal.empty();
   const double* xyz = c.XYZ->GetPointer(0);
-  const Id* triangles = c.Triangles.data();
-  const vtkIdType faces = static_cast<vtkIdType>(c.Triangles.size() / 3);
+  const Id* triangles = c.TriangleIds();
+  const vtkIdType faces = c.Faces();
   std::vector<Sum> sum(topology.Points);
   for (vtkIdType f = 0; f < faces; ++f)
   {
@@ -177,6 +156,13 @@ std::vector<Sum> SumFaceNormals(
     else
     {
       area2 = shadelab::normals::FaceGeometry(xyz, triangles, f, normal);
+    }
+    if (cellNormals)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        cellNormals[3 * f + k] = static_cast<float>(normal[k]);
+      }
     }
     if (area2 == 0)
     {
@@ -234,14 +220,21 @@ void SetLoopNormals(
     });
 }
 
-// The sums as unit normals, (0,0,0) where they cancelled or overflowed.
-vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
+// A float triple for each of `count` points or cells, named as VTK's normals.
+vtkSmartPointer<vtkFloatArray> NormalsArray(vtkIdType count)
 {
-  const auto count = static_cast<vtkIdType>(sum.size());
   auto normals = vtkSmartPointer<vtkFloatArray>::New();
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(count);
+  return normals;
+}
+
+// The sums as unit normals, (0,0,0) where they cancelled or overflowed.
+vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
+{
+  const auto count = static_cast<vtkIdType>(sum.size());
+  vtkSmartPointer<vtkFloatArray> normals = NormalsArray(count);
   float* out = normals->GetPointer(0);
   for (vtkIdType i = 0; i < count; ++i)
   {
@@ -256,78 +249,6 @@ vtkSmartPointer<vtkFloatArray> UnitNormals(const std::vector<Sum>& sum)
   return normals;
 }
 
-// With file vertices, the output's points and triangles from the welded
-// mesh's `welded`, and their normals from the welded points' `normals`
-// (FileVertices::Unweld).
-OutputTopology Unweld(const FileVertices& files, const MeshConnectivity& c,
-  const OutputTopology& welded, vtkSmartPointer<vtkFloatArray>& normals)
-{
-  const Id* cornerPoint =
-    welded.Connectivity ? welded.Connectivity->GetPointer(0) : c.Triangles.data();
-  std::vector<Id> corners;
-  OutputTopology topology;
-  files.Unweld(cornerPoint, c.Points, normals, corners, topology.Source);
-  topology.Points = static_cast<vtkIdType>(topology.Source.size());
-  topology.Connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-  topology.Connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.size()));
-  std::copy(corners.begin(), corners.end(), topology.Connectivity->GetPointer(0));
-  return topology;
-}
-
-// The output's triangles: the input's unless points were split or faces
-// reversed; only the triangles are kept (verts, lines and strips dropped).
-void SetTriangles(vtkPolyData* input, const OutputTopology& topology, vtkPolyData* output)
-{
-  if (!topology.Connectivity)
-  {
-    output->SetPolys(input->GetPolys());
-    return;
-  }
-  const vtkIdType faces = topology.Connectivity->GetNumberOfValues() / 3;
-  auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
-  offsets->SetNumberOfValues(faces + 1);
-  Id* offset = offsets->GetPointer(0);
-  for (vtkIdType f = 0; f <= faces; ++f)
-  {
-    offset[f] = static_cast<Id>(3 * f);
-  }
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  polys->SetData(offsets, topology.Connectivity);
-  output->SetPolys(polys);
-}
-
-// The output's points and their data: the input's, then copies of the
-// split ones (with their data).
-void SetPoints(vtkPolyData* input, const OutputTopology& topology, vtkPolyData* output)
-{
-  const vtkIdType points = input->GetNumberOfPoints();
-  const vtkIdType outputPoints = topology.Points;
-  if (outputPoints == points)
-  {
-    output->SetPoints(input->GetPoints());
-    output->GetPointData()->PassData(input->GetPointData());
-    return;
-  }
-  auto splitPoints = vtkSmartPointer<vtkPoints>::New();
-  splitPoints->SetDataType(input->GetPoints()->GetDataType());
-  splitPoints->SetNumberOfPoints(outputPoints);
-  splitPoints->GetData()->InsertTuples(0, points, 0, input->GetPoints()->GetData());
-  auto from = vtkSmartPointer<vtkIdList>::New();
-  auto to = vtkSmartPointer<vtkIdList>::New();
-  from->SetNumberOfIds(outputPoints - points);
-  to->SetNumberOfIds(outputPoints - points);
-  for (vtkIdType i = points; i < outputPoints; ++i)
-  {
-    from->SetId(i - points, topology.Source[i]);
-    to->SetId(i - points, i);
-  }
-  splitPoints->GetData()->InsertTuples(to, from, input->GetPoints()->GetData());
-  output->SetPoints(splitPoints);
-  vtkPointData* pointData = output->GetPointData();
-  pointData->CopyAllocate(input->GetPointData(), outputPoints);
-  pointData->CopyData(input->GetPointData(), 0, points, 0);
-  pointData->CopyData(input->GetPointData(), from, to);
-}
 }
 
 vtkShadelabMeshNormals::vtkShadelabMeshNormals() = default;
@@ -351,6 +272,7 @@ void vtkShadelabMeshNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
+  os << indent << "ComputeCellNormals: " << (this->ComputeCellNormals ? "On" : "Off") << "\n";
   os << indent << "NumberOfDuplicatedFaces: " << this->NumberOfDuplicatedFaces << "\n";
   os << indent << "NumberOfConnectivityBuilds: " << this->NumberOfConnectivityBuilds << "\n";
 }
@@ -372,23 +294,23 @@ int vtkShadelabMeshNormals::RequestData(
     this->Cached->InputTime != input->GetMTime() || this->Cached->Consistency != this->Consistency)
   {
     this->Cached.reset();
-    std::vector<Id> triangles;
-    const std::string error = ReadTriangles(input, triangles);
+    auto cache = std::make_unique<Cache>();
+    const std::string fileError = cache->Files.Read(input);
+    // Welding and orienting rewrite the ids: in a copy, not in the input.
+    vtkSmartPointer<vtkTypeInt32Array> triangles;
+    std::string error = ReadTriangles(input, this->Consistency || cache->Files.Active(), triangles);
+    if (error.empty())
+    {
+      error = fileError;
+    }
     if (!error.empty())
     {
       vtkErrorMacro(<< error);
       return 0;
     }
-    auto cache = std::make_unique<Cache>();
-    const std::string fileError = cache->Files.Read(input);
-    if (!fileError.empty())
-    {
-      vtkErrorMacro(<< fileError);
-      return 0;
-    }
     if (cache->Files.Active())
     {
-      cache->Files.Welded(triangles);
+      cache->Files.Welded(triangles->GetPointer(0), triangles->GetNumberOfValues());
     }
     cache->Input = input;
     cache->InputTime = input->GetMTime();
@@ -397,7 +319,7 @@ int vtkShadelabMeshNormals::RequestData(
       shadelab::normals::SummedWeighting(this->Weighting), connect);
     if (cache->Files.Active() && cache->Mesh.Reversed)
     {
-      cache->Files.FollowOrientation(cache->Mesh.Triangles);
+      cache->Files.FollowOrientation(cache->Mesh.TriangleIds());
     }
     this->Cached = std::move(cache);
     ++this->NumberOfConnectivityBuilds;
@@ -409,9 +331,13 @@ int vtkShadelabMeshNormals::RequestData(
   }
   this->NumberOfDuplicatedFaces = connect ? mesh.DuplicatedFaces : 0;
 
-  OutputTopology topology = MakeTopology(mesh, this->Splitting, this->FeatureAngle);
+  OutputTopology topology =
+    shadelab::normals::MakeTopology(mesh, this->Splitting, this->FeatureAngle);
+  vtkSmartPointer<vtkFloatArray> cellNormals =
+    this->ComputeCellNormals ? NormalsArray(mesh.Faces()) : nullptr;
   std::vector<Sum> sum =
-    SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting));
+    SumFaceNormals(mesh, topology, shadelab::normals::SummedWeighting(this->Weighting),
+      cellNormals ? cellNormals->GetPointer(0) : nullptr);
   if (this->Weighting == Loop)
   {
     SetLoopNormals(mesh, topology, sum);
@@ -420,15 +346,17 @@ int vtkShadelabMeshNormals::RequestData(
   vtkSmartPointer<vtkFloatArray> normals = UnitNormals(sum);
   if (this->Cached->Files.Active())
   {
-    topology = Unweld(this->Cached->Files, mesh, topology, normals);
+    topology = shadelab::normals::Unweld(this->Cached->Files, mesh, topology, normals);
   }
 
   output->GetPointData()->CopyNormalsOff();
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
-  SetTriangles(input, topology, output);
-  SetPoints(input, topology, output);
+  shadelab::normals::SetOutputMesh(input, topology, output);
   output->GetPointData()->SetNormals(normals);
-  output->GetCellData()->SetNormals(mesh.CellNormals);
+  if (cellNormals)
+  {
+    output->GetCellData()->SetNormals(cellNormals);
+  }
   return 1;
 }

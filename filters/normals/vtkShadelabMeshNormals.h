@@ -6,8 +6,9 @@
  * triangulates polygons, so a face here is a triangle and its Newell normal
  * is its cross product); other cells are dropped, a polygon of more than 3
  * vertices or an id out of range is an error. Output: the mesh with unit
- * point normals ("Normals", float, the active normals) and unit cell normals
- * ("Normals" in the cell data), computed in double. A vertex normal is the
+ * point normals ("Normals", float, the active normals) and, unless
+ * ComputeCellNormals is off, unit cell normals ("Normals" in the cell
+ * data), computed in double. A vertex normal is the
  * normalised sum of the unit normals of the faces around the vertex, each
  * weighted by:
  *
@@ -62,11 +63,11 @@
  * orientation).
  *
  * Both cores are used: the face geometry is computed while OpenMesh builds
- * the connectivity (or through vtkSMPTools without it), and the splitting
- * and Loop normals run through vtkSMPTools. Without the connectivity the
- * sum computes each face's normal, area and weights as it adds it, in the
- * same order and with the same arithmetic: nothing stored per face (7
- * doubles a face) at the same bits.
+ * the connectivity, and the splitting and Loop normals run through
+ * vtkSMPTools. Without the connectivity the sum computes each face's
+ * normal, area and weights as it adds it (and writes its cell normal), in
+ * the same order and with the same arithmetic: one pass over the faces and
+ * nothing stored per face (7 doubles a face) at the same bits.
  */
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h
@@ -110,6 +111,15 @@ public:
   vtkBooleanMacro(Consistency, bool);
 
   /**
+   * Whether the output has the unit face normals in its cell data (On, as
+   * vtkPolyDataNormals's default); Off saves a float triple a face where
+   * nothing reads them.
+   */
+  vtkSetMacro(ComputeCellNormals, bool);
+  vtkGetMacro(ComputeCellNormals, bool);
+  vtkBooleanMacro(ComputeCellNormals, bool);
+
+  /**
    * Faces that needed duplicated vertices in the last update; 0 unless it
    * used OpenMesh's connectivity (Splitting or Loop).
    */
@@ -136,6 +146,7 @@ private:
   bool Splitting = false;
   double FeatureAngle = 30;
   bool Consistency = false;
+  bool ComputeCellNormals = true;
   vtkIdType NumberOfDuplicatedFaces = 0;
   int NumberOfConnectivityBuilds = 0;
 

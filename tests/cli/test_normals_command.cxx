@@ -12,7 +12,10 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <set>
+#include <string>
 
 using namespace shadelab_test;
 
@@ -73,6 +76,16 @@ TEST(NormalsCommand, WithoutSplittingTheVerticesStayAsTheyAre)
   EXPECT_NEAR(n[0], 2.0 / 3, 1e-6);
   EXPECT_NEAR(n[1], 1.0 / 3, 1e-6);
   EXPECT_NEAR(n[2], 2.0 / 3, 1e-6);
+
+  // The faces keep their normals too: a mesh file has room for them, where
+  // render's meshes go without.
+  std::ifstream file(dir / "smooth.ply", std::ios::binary);
+  const std::string text{ std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>() };
+  const std::string header = text.substr(0, text.find("end_header"));
+  EXPECT_NE(header.find("element face 12\nproperty list uchar int vertex_indices\n"
+                        "property float nx\nproperty float ny\nproperty float nz\n"),
+    std::string::npos)
+    << header;
 }
 
 TEST(NormalsCommand, BadInputAndOptions)

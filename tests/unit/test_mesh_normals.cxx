@@ -3,6 +3,8 @@
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
 // degenerate input, consistent orientation, suzanne's file normals and the
 // connectivity cache.
+#include "shadelabMeshConnectivity.h"
+#include "shadelabTriangleMesh.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
@@ -29,6 +31,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -1469,6 +1472,188 @@ TEST(MeshNormals, SummedNormalsWithoutConnectivityAreTheSameBits)
       }
     }
   }
+}
+
+// The cell normals are each output face's unit normal (shadelab::FaceNormal
+// of its points, in double) rounded to float: the very bits, whether the sum
+// wrote them as it computed each face's geometry (no connectivity) or from
+// the geometry stored beside the connectivity (splitting, Loop); with
+// ComputeCellNormals off there are none, and the point normals keep their
+// bits.
+TEST(MeshNormals, CellNormalsAreEachFacesNormalInFloat)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "fandisk.obj").c_str());
+  reader->SetReadNormals(false);
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  Mesh degenerate;
+  degenerate.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 2, 0, 0 }, { 0.5, 0.3, 1 } };
+  degenerate.Triangles = { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 0, 4 }, { 2, 2, 4 }, { 0, 2, 1 } };
+  // The reader's ids in 32-bit storage, ToPolyData's in 64-bit.
+  const vtkSmartPointer<vtkPolyData> inputs[] = { reader->GetOutput(), ToPolyData(degenerate) };
+  for (vtkPolyData* input : inputs)
+  {
+    for (const bool consistency : { false, true })
+    {
+      for (const int weighting : { vtkShadelabMeshNormals::Angle, vtkShadelabMeshNormals::Loop })
+      {
+        for (const bool splitting : { false, true })
+        {
+          SCOPED_TRACE(std::string(WeightingNames[weighting]) + (splitting ? ", split" : "") +
+            (consistency ? ", oriented" : "") + ", " + std::to_string(input->GetNumberOfPolys()) +
+            " faces");
+          const auto run = [&](bool cellNormals)
+          {
+            auto filter = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+            filter->SetInputData(input);
+            filter->SetWeighting(weighting);
+            filter->SetSplitting(splitting);
+            filter->SetConsistency(consistency);
+            filter->SetComputeCellNormals(cellNormals);
+            EXPECT_TRUE(filter->GetExecutive()->Update());
+            return filter;
+          };
+          const auto with = run(true);
+          const auto without = run(false);
+          vtkPolyData* output = with->GetOutput();
+          const Mesh faces = FromPolyData(output);
+          auto* cellNormals = vtkFloatArray::SafeDownCast(output->GetCellData()->GetNormals());
+          ASSERT_NE(cellNormals, nullptr);
+          ASSERT_EQ(
+            cellNormals->GetNumberOfTuples(), static_cast<vtkIdType>(faces.Triangles.size()));
+          for (std::size_t f = 0; f < faces.Triangles.size(); ++f)
+          {
+            const Triangle& t = faces.Triangles[f];
+            Vec unit;
+            shadelab::FaceNormal(faces.Points[t[0]], faces.Points[t[1]], faces.Points[t[2]], unit);
+            for (int k = 0; k < 3; ++k)
+            {
+              ASSERT_EQ(cellNormals->GetValue(3 * static_cast<vtkIdType>(f) + k),
+                static_cast<float>(unit[k]))
+                << "face " << f << " component " << k;
+            }
+          }
+          EXPECT_EQ(without->GetOutput()->GetCellData()->GetNormals(), nullptr);
+          EXPECT_TRUE(Bytes(output->GetPointData()->GetNormals()) ==
+            Bytes(without->GetOutput()->GetPointData()->GetNormals()))
+            << "point normals differ without cell normals";
+        }
+      }
+    }
+  }
+}
+
+// The filter reads 32-bit ids where they are (the readers' storage) and
+// copies 64-bit ones, and ids that welding (an OBJ's file vertices) or
+// Consistency rewrite: the same mesh in either storage gives the same bits,
+// and the input's own ids are never changed.
+TEST(MeshNormals, IdsReadInPlaceOrCopiedGiveTheSameBitsAndKeepTheInput)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "spot.obj").c_str());
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  ASSERT_NE(reader->GetOutput()->GetPointData()->GetArray(shadelab::FileVertexArrayName), nullptr)
+    << "spot.obj's texture seams should split its vertices";
+  const std::pair<std::string, vtkSmartPointer<vtkPolyData>> meshes[] = {
+    { "spot.obj", reader->GetOutput() },
+    { "one face flipped", ToPolyData(BentStripWithOneFlipped()) },
+  };
+  for (const auto& [name, mesh] : meshes)
+  {
+    vtkNew<vtkPolyData> narrow, wide;
+    narrow->DeepCopy(mesh);
+    wide->DeepCopy(mesh);
+    ASSERT_TRUE(narrow->GetPolys()->ConvertTo32BitStorage());
+    ASSERT_TRUE(wide->GetPolys()->ConvertTo64BitStorage());
+    const std::vector<unsigned char> ids = Bytes(narrow->GetPolys()->GetConnectivityArray());
+    for (const bool consistency : { false, true })
+    {
+      for (const bool splitting : { false, true })
+      {
+        SCOPED_TRACE(name + (consistency ? ", oriented" : "") + (splitting ? ", split" : ""));
+        const auto run = [&](vtkPolyData* input)
+        {
+          auto filter = vtkSmartPointer<vtkShadelabMeshNormals>::New();
+          filter->SetInputData(input);
+          filter->SetConsistency(consistency);
+          filter->SetSplitting(splitting);
+          EXPECT_TRUE(filter->GetExecutive()->Update());
+          return filter;
+        };
+        const auto fromNarrow = run(narrow);
+        const auto fromWide = run(wide);
+        EXPECT_TRUE(ids == Bytes(narrow->GetPolys()->GetConnectivityArray()))
+          << "the input's ids changed";
+        vtkPolyData* a = fromNarrow->GetOutput();
+        vtkPolyData* b = fromWide->GetOutput();
+        EXPECT_TRUE(
+          Bytes(a->GetPointData()->GetNormals()) == Bytes(b->GetPointData()->GetNormals()));
+        EXPECT_TRUE(Bytes(a->GetCellData()->GetNormals()) == Bytes(b->GetCellData()->GetNormals()));
+        EXPECT_EQ(FromPolyData(a).Triangles, FromPolyData(b).Triangles);
+      }
+    }
+  }
+}
+
+// The face geometry that the normals sum (shadelab::normals::FaceGeometry)
+// computes through shadelab::FaceNormal, the project's one face normal; it
+// was OpenMesh's vector arithmetic before, written out here: the same bits,
+// on triangles of every scale from 1e-300 to 1e200 (where the cross product
+// overflows), slivers and triangles of no area.
+TEST(MeshNormals, FaceGeometryHasOpenMeshsBits)
+{
+  using OpenMesh::Vec3d;
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<double> xyz;
+  for (const double scale : { 1e-300, 1e-150, 1e-20, 1e-3, 1.0, 1e3, 1e20, 1e150, 1e200 })
+  {
+    for (int i = 0; i < 3000; ++i)
+    {
+      xyz.push_back(scale * unit(random));
+    }
+  }
+  const vtkIdType points = static_cast<vtkIdType>(xyz.size() / 3);
+  std::vector<shadelab::normals::Id> triangles;
+  std::uniform_int_distribution<vtkIdType> point(0, points - 1);
+  for (vtkIdType f = 0; f < 3 * points; ++f)
+  {
+    const vtkIdType a = point(random);
+    // Every 10th face repeats a point (no area), every 10th has its third
+    // point near its first (a sliver), the others are random.
+    const vtkIdType c = f % 10 == 0 ? a : f % 10 == 1 ? (a + 1) % points : point(random);
+    for (const vtkIdType id : { a, point(random), c })
+    {
+      triangles.push_back(static_cast<shadelab::normals::Id>(id));
+    }
+  }
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int usable = 0;
+  for (vtkIdType f = 0; f < static_cast<vtkIdType>(triangles.size() / 3); ++f)
+  {
+    const auto at = [&](int k)
+    {
+      const vtkIdType i = triangles[3 * f + k];
+      return Vec3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    };
+    const Vec3d n = OpenMesh::cross(at(1) - at(0), at(2) - at(0));
+    const double length = n.norm();
+    const bool ok = length > 0 && std::isfinite(length);
+    const Vec3d expected = ok ? n / length : Vec3d(0, 0, 0);
+    usable += ok;
+
+    Vec3d got;
+    const double doubleArea = shadelab::normals::FaceGeometry(xyz.data(), triangles.data(), f, got);
+    ASSERT_TRUE(same(doubleArea, ok ? length : 0)) << "face " << f;
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_TRUE(same(got[k], expected[k])) << "face " << f << " component " << k;
+    }
+  }
+  // Many faces have a normal (not those of no area, nor those with a 1e200
+  // or 1e-300 point, whose cross product overflows or underflows): the
+  // comparison is not of zeros.
+  EXPECT_GT(usable, static_cast<int>(triangles.size() / 3) / 3);
 }
 
 TEST(MeshNormals, WeightingNames)

@@ -894,6 +894,8 @@ TEST_F(MeshReaders, BadPly)
   // Beyond 32 bits: the cells stay 64-bit, so the error names the file's number.
   this->ExpectError("far.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 3000000000 3\n",
     { "face 1 refers to vertex 3000000000" });
+  this->ExpectError("below.ply", AsciiPlyHeader + AsciiPlyVertices + "3 0 1 2\n3 0 -3000000000 3\n",
+    { "face 1 refers to vertex -3000000000" });
   this->ExpectError(
     "two.ply", AsciiPlyHeader + AsciiPlyVertices + "2 0 1\n3 0 2 3\n", { "face 0 has 2 vertices" });
   this->ExpectError("number.ply", AsciiPlyHeader + "0 0 0\n1 0 0\n1 1 zero\n",

@@ -117,10 +117,15 @@ std::string vtkShadelabFileReader::ReadFileBytes(const char* fileName)
   CheckMemoryFor(size);
   std::string bytes(size, '\0');
   std::size_t used = std::fread(bytes.data(), 1, bytes.size(), file.get());
-  // A file without a size (or one that grew) is read on to its end.
-  while (used == bytes.size() && !std::feof(file.get()) && !std::ferror(file.get()))
+  // A file without a size (or one that grew) is read on to its end. A read
+  // that fills the buffer exactly has not met the end yet, so one byte tells
+  // whether more come: growing the buffer on spec would leave a file of the
+  // size it said in twice its memory (the zeroed tail stays resident).
+  int next = EOF;
+  while (used == bytes.size() && (next = std::fgetc(file.get())) != EOF)
   {
     bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
+    bytes[used++] = static_cast<char>(next);
     used += std::fread(bytes.data() + used, 1, bytes.size() - used, file.get());
   }
   if (std::ferror(file.get()))

@@ -75,6 +75,31 @@ std::vector<std::size_t> StatementSizes(const fs::path& path, const std::string&
 }
 
 // ---------------------------------------------------------------------------
+// A file's bytes
+
+// Every size, the sizes around the growth step included, reads back whole;
+// a file of the size it says is held in that size (not a buffer grown on
+// spec to twice it, which stayed resident); a file that says no size
+// (/proc's) is read on to its end.
+TEST_F(MeshReaders, FileBytesAreTheFileInItsOwnSize)
+{
+  for (std::size_t size : { 0, 1, 65535, 65536, 65537, 1 << 20 })
+  {
+    std::string bytes(size, '\0');
+    for (std::size_t i = 0; i < size; ++i)
+    {
+      bytes[i] = static_cast<char>('a' + i % 26);
+    }
+    const fs::path path = this->Write("bytes-" + std::to_string(size), bytes);
+    const std::string read = vtkShadelabFileReader::ReadFileBytes(path.c_str());
+    EXPECT_EQ(read, bytes) << size;
+    EXPECT_LE(read.capacity(), size + 64) << size;
+  }
+  const std::string status = vtkShadelabFileReader::ReadFileBytes("/proc/self/status");
+  EXPECT_NE(status.find("VmRSS:"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------
 // The test meshes
 
 TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)

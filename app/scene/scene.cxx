@@ -2,6 +2,7 @@
 
 #include "scene/camera.h"
 #include "shadelabTriangleMesh.h"
+#include "vtkShadelabPolyDataMapper.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -146,7 +147,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     {
       // A part's triangles share the whole mesh's points and normals, so
       // that the parts meet as the one mesh would.
-      auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+      auto mapper = vtkSmartPointer<vtkShadelabPolyDataMapper>::New();
       mapper->SetInputData(
         drawn.Shading->PrepareMesh(groups.size() == 1 ? vtkSmartPointer<vtkPolyData>(mesh)
                                                       : TrianglesOfParts(mesh, drawn.Parts)));

@@ -108,11 +108,31 @@ const char* NonFinite(double value)
   return std::isnan(value) ? "NaN" : "infinite";
 }
 
-vtkSmartPointer<vtkDoubleArray> DoublePoints(vtkPolyData* polygons, vtkIdType firstNumber)
+template <typename Value>
+void CheckFinite(const Value* values, vtkIdType count, vtkIdType firstNumber)
+{
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      throw MeshReadError(
+        std::string(NonFinite(values[i])) + " coordinate in vertex " + Number(i / 3, firstNumber));
+    }
+  }
+}
+
+// The points as float where they are (a file's 32-bit coordinates), else
+// as double; checked finite.
+vtkSmartPointer<vtkDataArray> CheckedPoints(vtkPolyData* polygons, vtkIdType firstNumber)
 {
   vtkPoints* points = polygons->GetPoints();
+  if (auto* xyz = points ? vtkFloatArray::FastDownCast(points->GetData()) : nullptr)
+  {
+    CheckFinite(xyz->GetPointer(0), 3 * xyz->GetNumberOfTuples(), firstNumber);
+    return xyz;
+  }
   vtkSmartPointer<vtkDoubleArray> xyz =
-    points ? vtkDoubleArray::SafeDownCast(points->GetData()) : nullptr;
+    points ? vtkDoubleArray::FastDownCast(points->GetData()) : nullptr;
   if (!xyz)
   {
     const vtkIdType count = points ? points->GetNumberOfPoints() : 0;
@@ -124,15 +144,7 @@ vtkSmartPointer<vtkDoubleArray> DoublePoints(vtkPolyData* polygons, vtkIdType fi
       xyz->SetTuple(i, points->GetPoint(i));
     }
   }
-  const double* values = xyz->GetPointer(0);
-  for (vtkIdType i = 0; i < 3 * xyz->GetNumberOfTuples(); ++i)
-  {
-    if (!std::isfinite(values[i]))
-    {
-      throw MeshReadError(
-        std::string(NonFinite(values[i])) + " coordinate in vertex " + Number(i / 3, firstNumber));
-    }
-  }
+  CheckFinite(xyz->GetPointer(0), 3 * xyz->GetNumberOfTuples(), firstNumber);
   return xyz;
 }
 
@@ -270,7 +282,14 @@ vtkSmartPointer<vtkIntArray> TriangleParts(
 vtkSmartPointer<vtkPolyData> ToPolyData(PolygonMesh&& mesh)
 {
   vtkNew<vtkPoints> points;
-  points->SetData(MakeArray<vtkDoubleArray>(nullptr, 3, mesh.Points));
+  if (mesh.FloatPoints)
+  {
+    points->SetData(MakeArray<vtkFloatArray>(nullptr, 3, mesh.Points));
+  }
+  else
+  {
+    points->SetData(MakeArray<vtkDoubleArray>(nullptr, 3, mesh.Points));
+  }
 
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
@@ -303,7 +322,7 @@ vtkSmartPointer<vtkPolyData> ToPolyData(PolygonMesh&& mesh)
 
 void MakeTriangleMesh(vtkPolyData* polygons, vtkPolyData* triangles, vtkIdType firstNumber)
 {
-  vtkSmartPointer<vtkDoubleArray> xyz = DoublePoints(polygons, firstNumber);
+  vtkSmartPointer<vtkDataArray> xyz = CheckedPoints(polygons, firstNumber);
   const vtkIdType pointCount = xyz->GetNumberOfTuples();
   vtkSmartPointer<vtkFloatArray> normals = FloatNormals(polygons, pointCount, firstNumber);
   vtkSmartPointer<vtkFloatArray> colors =

@@ -48,7 +48,10 @@ constexpr const char* FileVertexArrayName = "FileVertex";
 
 struct PolygonMesh
 {
-  std::vector<double> Points;            // x y z per point
+  std::vector<double> Points; // x y z per point
+  // The file stores x y z as 32-bit floats: the points stay float (exactly
+  // the file's values, in half the memory of double).
+  bool FloatPoints = false;
   std::vector<float> Normals;            // nx ny nz per point, or empty
   std::vector<float> Colors;             // r g b a per point, or empty
   std::vector<float> TextureCoordinates; // s t per point, or empty

@@ -39,6 +39,11 @@ public:
     if (this->Role == Kind::Vertex)
     {
       mesh.Points.reserve(3 * element.Count);
+      mesh.FloatPoints = std::all_of(element.Properties.begin(), element.Properties.end(),
+        [](const Property& property) {
+          return property.Role < Use::X || property.Role > Use::Z ||
+            property.Type == Scalar::Float32;
+        });
       mesh.Normals.reserve(this->HasNormals ? 3 * element.Count : 0);
       mesh.Colors.reserve(this->HasColors ? 4 * element.Count : 0);
     }

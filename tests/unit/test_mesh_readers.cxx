@@ -175,6 +175,10 @@ TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
   ASSERT_TRUE(obj.Ok && ply.Ok) << obj.Error << ply.Error;
   EXPECT_EQ(obj.Mesh->GetNumberOfPolys(), ply.Mesh->GetNumberOfPolys());
   EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), ply.Mesh->GetNumberOfPoints());
+  // The PLY's 32-bit coordinates stay float, in half the memory; the OBJ's
+  // decimals are parsed to double.
+  EXPECT_EQ(ply.Mesh->GetPoints()->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(obj.Mesh->GetPoints()->GetDataType(), VTK_DOUBLE);
   double a[6], b[6];
   obj.Mesh->GetBounds(a);
   ply.Mesh->GetBounds(b);

@@ -10,6 +10,7 @@
 #include <vtkNew.h>
 #include <vtkOpenGLVertexBufferObject.h>
 #include <vtkOpenGLVertexBufferObjectGroup.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkRenderer.h>
@@ -74,7 +75,13 @@ TEST(PolyDataMapper, DrawsAsVtksWithoutItsCopyOfTheVertexBuffers)
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(reader->GetOutputPort());
   ASSERT_TRUE(normals->GetExecutive()->Update());
-  vtkPolyData* mesh = normals->GetOutput();
+  // Double points, which VTK packs into a float buffer of its own.
+  vtkNew<vtkPolyData> mesh;
+  mesh->ShallowCopy(normals->GetOutput());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(normals->GetOutput()->GetPoints());
+  mesh->SetPoints(points);
 
   std::size_t vtkKeeps = 0, oursKeeps = 0;
   const FloatImage vtks = Render<vtkOpenGLPolyDataMapper>(mesh, vtkKeeps);

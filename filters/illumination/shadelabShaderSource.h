@@ -3,8 +3,9 @@
 // and kinds of lights compiled in, no specular code when ks is zero, lighting
 // in the vertex stage for Gouraud, in the fragment stage for Phong, and for
 // flat in the fragment stage with one triangle's inputs (its provoking
-// vertex's position, its face normal by gl_PrimitiveID). The code goes into VTK 9.1's polydata shaders as replacements of
-// their tags; each GLSL function mirrors the function of the same name in
+// vertex's position, its face normal by gl_PrimitiveID). The code goes into
+// VTK 9.1's polydata shaders as replacements of their tags; each GLSL
+// function mirrors the function of the same name in
 // shadelabShadingOracle.cxx.
 #ifndef shadelabShaderSource_h
 #define shadelabShaderSource_h

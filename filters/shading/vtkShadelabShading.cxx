@@ -1,6 +1,5 @@
 #include "vtkShadelabShading.h"
 
-#include "shadelabFaceNormals.h"
 #include "shadelabTriangleMesh.h"
 
 #include <vtkActor.h>
@@ -12,7 +11,6 @@
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
-#include <vtkOpenGLBufferObject.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderProperty.h>
 #include <vtkPointData.h>
@@ -336,60 +334,21 @@ void vtkShadelabShading::BindFaceNormals(vtkShaderProgram* program)
 {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
   vtkPolyData* mesh = vtkPolyData::SafeDownCast(this->Actor->GetMapper()->GetInput());
-  if (!this->FaceNormalTexture || this->FaceNormalTexture->GetContext() != window ||
+  if (!this->FaceNormals.Texture || this->FaceNormals.Texture->GetContext() != window ||
     this->FaceNormalsMesh != mesh || this->FaceNormalsTime < mesh->GetMTime())
   {
-    // gl_PrimitiveID counts the triangles of the one draw of the polys, so
-    // cell t must be triangle t (VTK would split a polygon, and draw points,
-    // lines and strips apart).
-    vtkCellArray* polys = mesh->GetPolys();
-    const vtkIdType triangles = polys->GetNumberOfCells();
-    if (polys->GetNumberOfConnectivityIds() != 3 * triangles ||
-      (triangles > 0 && polys->GetMaxCellSize() != 3) || mesh->GetNumberOfVerts() > 0 ||
-      mesh->GetNumberOfLines() > 0 || mesh->GetNumberOfStrips() > 0)
+    if (const std::string problem = UploadFaceNormals(mesh, window, this->FaceNormals);
+        !problem.empty())
     {
-      vtkErrorMacro("flat shading draws triangles only, and the mesh has other cells");
+      vtkErrorMacro(<< problem);
       return;
     }
-    GLint most = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
-    if (triangles > most)
-    {
-      vtkErrorMacro(<< "flat shading reads one face normal per triangle from a buffer texture, "
-                       "which holds at most "
-                    << most << " here; the mesh has " << triangles << " triangles");
-      return;
-    }
-    // Computed and uploaded a slice at a time, so that the normals are in
-    // memory once (OpenGL's copy) rather than twice.
-    constexpr vtkIdType Slice = 1 << 20;
-    std::vector<float> slice(3 * std::min(triangles, Slice));
-    this->FaceNormalBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    this->FaceNormalBuffer->GenerateBuffer(vtkOpenGLBufferObject::TextureBuffer);
-    this->FaceNormalBuffer->Bind();
-    const auto bytes = [](vtkIdType n) { return static_cast<GLsizeiptr>(3 * sizeof(float) * n); };
-    glBufferData(
-      GL_TEXTURE_BUFFER, bytes(std::max<vtkIdType>(triangles, 1)), nullptr, GL_STATIC_DRAW);
-    vtkIdType drawn = 0;
-    for (vtkIdType first = 0; first < triangles; first += Slice)
-    {
-      const vtkIdType count =
-        ComputeFaceNormals(mesh, first, std::min(Slice, triangles - first), slice.data());
-      glBufferSubData(GL_TEXTURE_BUFFER, bytes(drawn), bytes(count), slice.data());
-      drawn += count;
-    }
-    this->FaceNormalBuffer->Release();
-    this->FaceNormalTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->FaceNormalTexture->SetContext(window);
-    this->FaceNormalTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(std::max<vtkIdType>(triangles, 1)), 3, VTK_FLOAT,
-      this->FaceNormalBuffer);
     this->FaceNormalsMesh = mesh;
     this->FaceNormalsTime.Modified();
   }
   // Kept active (its unit reserved) while the shading draws.
-  this->FaceNormalTexture->Activate();
-  program->SetUniformi(FaceNormalSamplerName, this->FaceNormalTexture->GetTextureUnit());
+  this->FaceNormals.Texture->Activate();
+  program->SetUniformi(FaceNormalSamplerName, this->FaceNormals.Texture->GetTextureUnit());
 }
 
 void vtkShadelabShading::BindTexture(vtkShaderProgram* program)

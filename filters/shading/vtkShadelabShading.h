@@ -15,6 +15,7 @@
 #ifndef vtkShadelabShading_h
 #define vtkShadelabShading_h
 
+#include "shadelabFaceNormalTexture.h"
 #include "shadelabShaderSource.h"
 #include "shadelabShadingOracle.h"
 
@@ -28,7 +29,6 @@ class vtkCallbackCommand;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
-class vtkOpenGLBufferObject;
 class vtkTextureObject;
 
 class vtkShadelabShading : public vtkObject
@@ -128,10 +128,9 @@ private:
   // Texture.Map in OpenGL, made at the first draw; a shading that takes over
   // an actor takes this over too when its image and window are the same.
   vtkSmartPointer<vtkTextureObject> TextureObject;
-  // Flat's face normals in OpenGL, a buffer texture read by gl_PrimitiveID,
-  // made at the first draw of FaceNormalsMesh (not owned) for its window.
-  vtkSmartPointer<vtkOpenGLBufferObject> FaceNormalBuffer;
-  vtkSmartPointer<vtkTextureObject> FaceNormalTexture;
+  // Flat's face normals in OpenGL, made at the first draw of
+  // FaceNormalsMesh (not owned) for its window.
+  shadelab::FaceNormalTexture FaceNormals;
   vtkPolyData* FaceNormalsMesh = nullptr;
   vtkTimeStamp FaceNormalsTime;
   // Not owned, and either may go first (a Python script drops its actor

@@ -7,7 +7,8 @@
  * (vtkShadelabSTLReader), .off (vtkShadelabOFFReader), .gltf and .glb
  * (vtkShadelabGLTFReader), .vtk (vtkShadelabLegacyVTKReader: legacy files of
  * polydata only) and .vtp (VTK's vtkXMLPolyDataReader). The output is what
- * every vtkShadelabFileReader gives: double points, triangles only, the
+ * every vtkShadelabFileReader gives: double points (or the file's floats),
+ * triangles only, the
  * file's point normals as the float array "Normals", and where the format
  * has them, vertex colours, texture coordinates and parts
  * (shadelabTriangleMesh.h).

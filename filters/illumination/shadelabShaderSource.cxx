@@ -159,14 +159,16 @@ void AddTexelLookup(std::vector<ShaderReplacement>& r)
   Prepend(r, false, "//VTK::Light::Impl", TexelSource);
 }
 
-// Per-vertex kd for the fragment stage (none, phong): the vertex stage
-// passes the attribute on, interpolated.
-void AddVertexKdPassing(std::vector<ShaderReplacement>& r)
+// Per-vertex kd for the fragment stage: the vertex stage passes the
+// attribute on, interpolated (none, phong) or the provoking vertex's
+// (qualifier "flat ").
+void AddVertexKdPassing(std::vector<ShaderReplacement>& r, const std::string& qualifier = "")
 {
-  r.push_back({ true, "//VTK::Light::Dec",
-    std::string("in vec4 ") + VertexKdAttributeName + ";\nout vec3 shadelabKdVSOutput;\n" });
-  r.push_back({ true, "//VTK::Light::Impl",
-    std::string("  shadelabKdVSOutput = ") + VertexKdAttributeName + ".rgb;\n" });
+  Prepend(r, true, "//VTK::Light::Dec",
+    std::string("in vec4 ") + VertexKdAttributeName + ";\n" + qualifier +
+      "out vec3 shadelabKdVSOutput;\n");
+  Prepend(r, true, "//VTK::Light::Impl",
+    std::string("  shadelabKdVSOutput = ") + VertexKdAttributeName + ".rgb;\n");
 }
 
 // No shading: the diffuse colour as it is.
@@ -255,22 +257,17 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 // default, the last), with the face normal. The vertex stage passes the
 // provoking vertex's view position (and kd) on unchanged (`flat`); the
 // fragment reads its triangle's face normal by gl_PrimitiveID from a buffer
-// of three floats a triangle and lights the side it faces. Every fragment of
+// texture (one RGB float texel a triangle) and lights the side it faces. Every fragment of
 // a triangle computes the same value from the same inputs.
 void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
   const bool apart = f.Textured();
-  std::string vertexDeclarations = "flat out vec4 shadelabProvokingVC;\n";
-  std::string vertexPassing = "  shadelabProvokingVC = vertexVCVSOutput;\n";
   std::string declarations = IlluminateSource(f) + "uniform samplerBuffer " +
     FaceNormalSamplerName +
     ";\nuniform mat3 shadelabNormalMatrix;\nflat in vec4 shadelabProvokingVC;\n";
   std::string shade;
   if (f.VertexKd)
   {
-    vertexDeclarations +=
-      std::string("in vec4 ") + VertexKdAttributeName + ";\nflat out vec3 shadelabKdVSOutput;\n";
-    vertexPassing += std::string("  shadelabKdVSOutput = ") + VertexKdAttributeName + ".rgb;\n";
     declarations += "flat in vec3 shadelabKdVSOutput;\n";
     shade += "  shadelabKd = shadelabKdVSOutput;\n";
   }
@@ -284,8 +281,12 @@ void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   {
     shade += ApartEquation(f);
   }
-  r.push_back({ true, "//VTK::Light::Dec", vertexDeclarations });
-  r.push_back({ true, "//VTK::Light::Impl", vertexPassing });
+  r.push_back({ true, "//VTK::Light::Dec", "flat out vec4 shadelabProvokingVC;\n" });
+  r.push_back({ true, "//VTK::Light::Impl", "  shadelabProvokingVC = vertexVCVSOutput;\n" });
+  if (f.VertexKd)
+  {
+    AddVertexKdPassing(r, "flat ");
+  }
   r.push_back({ false, "//VTK::UniformFlow::Impl", "" });
   r.push_back({ false, "//VTK::Light::Dec", declarations + "//VTK::Light::Dec" });
   r.push_back({ false, "//VTK::Light::Impl", shade });

@@ -5,10 +5,10 @@
  * strips in a PolygonMesh; ToPolyData() wraps them as vtkPolyData, and
  * MakeTriangleMesh() checks that data (from a parser or from VTK's own
  * readers) and turns it into what every shadelab reader outputs: double
- * points (float where the file stores 32-bit floats), triangles only, the point normals, if any, as
- * the float array "Normals", and where the file has them the vertex colours, texture coordinates,
- * the file's vertex of each point and the part each triangle comes from (the arrays named below),
- * for the materials and textures that go with them (shadelabPartMaterials.h).
+ * points (float where a binary file stores 32-bit floats), triangles only, the point normals, if
+ * any, as the float array "Normals", and where the file has them the vertex colours, texture
+ * coordinates, the file's vertex of each point and the part each triangle comes from (the arrays
+ * named below), for the materials and textures that go with them (shadelabPartMaterials.h).
  */
 #ifndef shadelabTriangleMesh_h
 #define shadelabTriangleMesh_h
@@ -48,7 +48,7 @@ constexpr const char* FileVertexArrayName = "FileVertex";
 struct PolygonMesh
 {
   std::vector<double> Points; // x y z per point
-  // The file stores x y z as 32-bit floats: the points stay float (exactly
+  // A binary file stores x y z as 32-bit floats: the points stay float (exactly
   // the file's values, in half the memory of double).
   bool FloatPoints = false;
   std::vector<float> Normals;            // nx ny nz per point, or empty

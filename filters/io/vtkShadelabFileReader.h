@@ -3,7 +3,7 @@
  * @brief   abstract base of shadelab's mesh readers: one file in, triangles out
  *
  * A source (no input ports) that reads FileName. Every subclass outputs the
- * same thing: double points (float where the file stores 32-bit floats,
+ * same thing: double points (float where a binary file stores 32-bit floats,
  * exactly its values), triangles only, and the file's point normals,
  * if it has any, as the float array "Normals" set as the active normals.
  *

@@ -39,11 +39,6 @@ public:
     if (this->Role == Kind::Vertex)
     {
       mesh.Points.reserve(3 * element.Count);
-      mesh.FloatPoints = std::all_of(element.Properties.begin(), element.Properties.end(),
-        [](const Property& property) {
-          return property.Role < Use::X || property.Role > Use::Z ||
-            property.Type == Scalar::Float32;
-        });
       mesh.Normals.reserve(this->HasNormals ? 3 * element.Count : 0);
       mesh.Colors.reserve(this->HasColors ? 4 * element.Count : 0);
     }
@@ -243,6 +238,18 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
     }
     else
     {
+      // Binary 32-bit coordinates stay float: exactly the file's values (an
+      // ASCII file's decimals are parsed to double, which float would round).
+      mesh.FloatPoints = std::all_of(header.Elements.begin(), header.Elements.end(),
+        [](const Element& element)
+        {
+          return element.Role != Kind::Vertex ||
+            std::all_of(element.Properties.begin(), element.Properties.end(),
+              [](const Property& property) {
+                return property.Role < Use::X || property.Role > Use::Z ||
+                  property.Type == Scalar::Float32;
+              });
+        });
       const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
       ReadBody(BinarySource(body, header.Format == Encoding::BigEndian), header, mesh);
     }

@@ -179,6 +179,15 @@ TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
   // decimals are parsed to double.
   EXPECT_EQ(ply.Mesh->GetPoints()->GetDataType(), VTK_FLOAT);
   EXPECT_EQ(obj.Mesh->GetPoints()->GetDataType(), VTK_DOUBLE);
+  // An ASCII PLY's decimals stay double even where it says float: float
+  // would round them.
+  const ReadResult ascii = Read(this->Write("ascii.ply",
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0.1234567891 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  ASSERT_TRUE(ascii.Ok) << ascii.Error;
+  EXPECT_EQ(ascii.Mesh->GetPoints()->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(ascii.Mesh->GetPoint(0)[0], 0.1234567891);
   double a[6], b[6];
   obj.Mesh->GetBounds(a);
   ply.Mesh->GetBounds(b);

@@ -57,6 +57,13 @@ public:
   /** Skips a whole element by its sizes: in one step when it has no lists. */
   void SkipItems(const Element& element);
 
+  /** The body from the next value on. */
+  std::string_view Rest() const
+  {
+    return { reinterpret_cast<const char*>(this->Position),
+      static_cast<std::size_t>(this->End - this->Position) };
+  }
+
 private:
   const unsigned char* Position;
   const unsigned char* End;

@@ -1,33 +1,10 @@
 #include "shadelabScalarType.h"
 
-#include <vtkByteSwap.h>
-
 #include <cstdint>
-#include <cstring>
 #include <limits>
 
 namespace shadelab
 {
-namespace
-{
-template <typename T>
-double Load(const unsigned char* bytes, bool bigEndian)
-{
-  T value;
-  std::memcpy(&value, bytes, sizeof value);
-  // vtkByteSwap swaps only where the host's order differs.
-  if (bigEndian)
-  {
-    vtkByteSwap::SwapBE(&value);
-  }
-  else
-  {
-    vtkByteSwap::SwapLE(&value);
-  }
-  return static_cast<double>(value);
-}
-}
-
 std::size_t SizeOf(ScalarType type)
 {
   switch (type)
@@ -87,26 +64,26 @@ double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian)
   switch (type)
   {
     case ScalarType::Int8:
-      return Load<std::int8_t>(bytes, bigEndian);
+      return LoadValue<std::int8_t>(bytes, bigEndian);
     case ScalarType::UInt8:
-      return Load<std::uint8_t>(bytes, bigEndian);
+      return LoadValue<std::uint8_t>(bytes, bigEndian);
     case ScalarType::Int16:
-      return Load<std::int16_t>(bytes, bigEndian);
+      return LoadValue<std::int16_t>(bytes, bigEndian);
     case ScalarType::UInt16:
-      return Load<std::uint16_t>(bytes, bigEndian);
+      return LoadValue<std::uint16_t>(bytes, bigEndian);
     case ScalarType::Int32:
-      return Load<std::int32_t>(bytes, bigEndian);
+      return LoadValue<std::int32_t>(bytes, bigEndian);
     case ScalarType::UInt32:
-      return Load<std::uint32_t>(bytes, bigEndian);
+      return LoadValue<std::uint32_t>(bytes, bigEndian);
     case ScalarType::Int64:
-      return Load<std::int64_t>(bytes, bigEndian);
+      return LoadValue<std::int64_t>(bytes, bigEndian);
     case ScalarType::UInt64:
-      return Load<std::uint64_t>(bytes, bigEndian);
+      return LoadValue<std::uint64_t>(bytes, bigEndian);
     case ScalarType::Float32:
-      return Load<float>(bytes, bigEndian);
+      return LoadValue<float>(bytes, bigEndian);
     case ScalarType::Float64:
       break;
   }
-  return Load<double>(bytes, bigEndian);
+  return LoadValue<double>(bytes, bigEndian);
 }
 }

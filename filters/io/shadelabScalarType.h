@@ -7,7 +7,10 @@
 #ifndef shadelabScalarType_h
 #define shadelabScalarType_h
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 namespace shadelab
 {
@@ -32,6 +35,30 @@ bool IsInteger(ScalarType type);
 /** An integer type's largest value (a colour stored as one is that fraction of it); 1 for floats.
  */
 double LargestValue(ScalarType type);
+
+/** Whether this machine stores numbers big-endian (a binary file states its own order). */
+inline bool HostIsBigEndian()
+{
+  const std::uint16_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 0;
+}
+
+/** The sizeof(T) bytes at `bytes`, stored in the given byte order, as a T. */
+template <typename T>
+T LoadValue(const unsigned char* bytes, bool bigEndian)
+{
+  unsigned char ordered[sizeof(T)];
+  std::memcpy(ordered, bytes, sizeof ordered);
+  if (bigEndian != HostIsBigEndian())
+  {
+    std::reverse(ordered, ordered + sizeof ordered);
+  }
+  T value;
+  std::memcpy(&value, ordered, sizeof value);
+  return value;
+}
 
 /** The SizeOf(type) bytes at `bytes`, in the given byte order, as a double. */
 double LoadScalar(const unsigned char* bytes, ScalarType type, bool bigEndian);

@@ -4,7 +4,6 @@
 #include "shadelabTriangulation.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -221,33 +220,43 @@ vtkSmartPointer<vtkIdTypeArray> FileVertices(vtkPolyData* polygons, vtkIdType po
   return inRange ? array : nullptr;
 }
 
-void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
+// Each cell's size and ids, read in place from either storage (an
+// iterator would copy every 32-bit cell into a list first).
+struct CellCheck
 {
-  if (!cells)
+  template <typename CellState>
+  void operator()(
+    CellState& state, const char* kind, vtkIdType pointCount, vtkIdType firstNumber) const
   {
-    return;
-  }
-  auto cell = vtk::TakeSmartPointer(cells->NewIterator());
-  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cell->GetCurrentCell(size, ids);
-    const auto name = [&]
-    { return std::string(kind) + " " + Number(cell->GetCurrentCellId(), firstNumber); };
-    if (size < 3)
+    const auto* offsets = state.GetOffsets()->GetPointer(0);
+    const auto* ids = state.GetConnectivity()->GetPointer(0);
+    const vtkIdType cells = state.GetNumberOfCells();
+    for (vtkIdType c = 0; c < cells; ++c)
     {
-      throw MeshReadError(
-        name() + " has " + std::to_string(size) + " vertices, at least 3 are needed");
-    }
-    for (vtkIdType k = 0; k < size; ++k)
-    {
-      if (ids[k] < 0 || ids[k] >= pointCount)
+      const auto name = [&] { return std::string(kind) + " " + Number(c, firstNumber); };
+      const vtkIdType size = offsets[c + 1] - offsets[c];
+      if (size < 3)
       {
-        throw MeshReadError(name() + " refers to vertex " + Number(ids[k], firstNumber) +
-          ", but only " + std::to_string(pointCount) + " vertices are defined");
+        throw MeshReadError(
+          name() + " has " + std::to_string(size) + " vertices, at least 3 are needed");
+      }
+      for (auto k = offsets[c]; k < offsets[c + 1]; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= pointCount)
+        {
+          throw MeshReadError(name() + " refers to vertex " + Number(ids[k], firstNumber) +
+            ", but only " + std::to_string(pointCount) + " vertices are defined");
+        }
       }
     }
+  }
+};
+
+void CheckCells(vtkCellArray* cells, const char* kind, vtkIdType pointCount, vtkIdType firstNumber)
+{
+  if (cells)
+  {
+    cells->Visit(CellCheck{}, kind, pointCount, firstNumber);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "shadelabPLYAsciiSource.h"
 #include "shadelabPLYBinarySource.h"
 #include "shadelabPLYHeader.h"
+#include "shadelabPLYPlainBody.h"
 #include "shadelabTriangleMesh.h"
 
 #include <vtkObjectFactory.h>
@@ -224,6 +225,7 @@ void ReadBody(Source&& source, const Header& header, shadelab::PolygonMesh& mesh
 
 void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
+  vtkSmartPointer<vtkPolyData> plain;
   shadelab::PolygonMesh mesh;
   {
     // The file's bytes go before the mesh is converted: not held beside it.
@@ -232,11 +234,12 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
     Header header = ReadHeader(bytes, scanner);
     AssignRoles(header);
     CheckCounts(header, bytes.size());
+    const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
     if (header.Format == Encoding::Ascii)
     {
       ReadBody(AsciiSource(scanner), header, mesh);
     }
-    else
+    else if (!(plain = ReadPlainBody(body, header)))
     {
       // Binary 32-bit coordinates stay float: exactly the file's values (an
       // ASCII file's decimals are parsed to double, which float would round).
@@ -250,9 +253,8 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
                   property.Type == Scalar::Float32;
               });
         });
-      const std::string_view body = std::string_view(bytes).substr(scanner.GetNextLineOffset());
       ReadBody(BinarySource(body, header.Format == Encoding::BigEndian), header, mesh);
     }
   }
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh)), triangles);
+  shadelab::MakeTriangleMesh(plain ? plain : shadelab::ToPolyData(std::move(mesh)), triangles);
 }

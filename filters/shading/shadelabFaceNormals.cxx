@@ -1,5 +1,6 @@
 #include "shadelabFaceNormals.h"
 
+#include "shadelabTriangleIndexBuffer.h"
 #include "shadelabVec3.h"
 
 #include <vtkArrayDispatch.h>
@@ -31,8 +32,7 @@ struct FaceNormalsWorker
           const auto p0 = xyz[corner[0]];
           const auto p1 = xyz[corner[1]];
           const auto p2 = xyz[corner[2]];
-          // vtkOpenGLIndexBufferObject's test, in the points' own type.
-          drawn[i] = p0 != p1 && p0 != p2 && p1 != p2;
+          drawn[i] = shadelab::IsDrawn(p0, p1, p2);
           const auto point = [](const auto& p) -> shadelab::Vec3 {
             return { static_cast<double>(p[0]), static_cast<double>(p[1]),
               static_cast<double>(p[2]) };

@@ -1,8 +1,17 @@
 #include "vtkShadelabPolyDataMapper.h"
 
+#include "shadelabTriangleIndexBuffer.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
 #include <vtkObjectFactory.h>
+#include <vtkOpenGLIndexBufferObject.h>
 #include <vtkOpenGLVertexBufferObject.h>
 #include <vtkOpenGLVertexBufferObjectGroup.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
 
 #include <vector>
 
@@ -25,5 +34,47 @@ void vtkShadelabPolyDataMapper::BuildIBO(vtkRenderer* renderer, vtkActor* actor,
       std::vector<float>().swap(vbo->GetPackedVBO());
     }
   }
-  this->Superclass::BuildIBO(renderer, actor, mesh);
+  if (!this->BuildSurfaceIBO(actor, mesh))
+  {
+    this->SurfacePolysTime = 0;
+    this->Superclass::BuildIBO(renderer, actor, mesh);
+  }
+}
+
+bool vtkShadelabPolyDataMapper::BuildSurfaceIBO(vtkActor* actor, vtkPolyData* mesh)
+{
+  vtkProperty* property = actor->GetProperty();
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkPoints* points = mesh->GetPoints();
+  if (property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
+    property->GetVertexVisibility() || mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() ||
+    mesh->GetNumberOfStrips() || !points ||
+    mesh->GetPointData()->GetAttribute(vtkDataSetAttributes::EDGEFLAG))
+  {
+    return false;
+  }
+  if (polys->GetMTime() == this->SurfacePolysTime)
+  {
+    return true; // built from these polys, as VTK's BuildIBO keeps its own
+  }
+  std::vector<unsigned int> indices;
+  if (!shadelab::AppendTriangleIndices(polys, points->GetData(), indices))
+  {
+    return false;
+  }
+  // VTK's BuildIBO must rebuild after this, even for a state it built before.
+  this->IBOBuildState.Clear();
+  this->SurfacePolysTime = polys->GetMTime();
+  this->EdgeValues.clear();
+  // The other primitives have no cells: their buffers are emptied as VTK empties them.
+  this->Primitives[PrimitivePoints].IBO->CreatePointIndexBuffer(mesh->GetVerts());
+  this->Primitives[PrimitiveLines].IBO->CreateLineIndexBuffer(mesh->GetLines());
+  this->Primitives[PrimitiveTriStrips].IBO->CreateStripIndexBuffer(mesh->GetStrips(), false);
+  vtkOpenGLIndexBufferObject* triangles = this->Primitives[PrimitiveTris].IBO;
+  triangles->IndexCount = indices.size();
+  if (!indices.empty())
+  {
+    triangles->Upload(indices, vtkOpenGLIndexBufferObject::ElementArrayBuffer);
+  }
+  return true;
 }

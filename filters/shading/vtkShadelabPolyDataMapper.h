@@ -9,6 +9,11 @@
  * mapper's life. This mapper releases that memory before building the index
  * buffer. It draws exactly as vtkOpenGLPolyDataMapper does: the packed
  * arrays are rebuilt from the data arrays at every upload.
+ *
+ * It also builds a surface's triangle index buffer itself
+ * (shadelabTriangleIndexBuffer: the same indices, without VTK's copy of
+ * each cell), where the surface is only polygons drawn without edges or
+ * vertices; VTK builds every other case.
  */
 #ifndef vtkShadelabPolyDataMapper_h
 #define vtkShadelabPolyDataMapper_h
@@ -28,6 +33,14 @@ protected:
   void BuildIBO(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* mesh) override;
 
 private:
+  // The index buffers of a surface of polygons alone; false where VTK's
+  // BuildIBO must make them.
+  bool BuildSurfaceIBO(vtkActor* actor, vtkPolyData* mesh);
+
+  // The modification time of the polys that BuildSurfaceIBO last built the
+  // buffers from; 0 once VTK's BuildIBO has built them.
+  vtkMTimeType SurfacePolysTime = 0;
+
   vtkShadelabPolyDataMapper(const vtkShadelabPolyDataMapper&) = delete;
   void operator=(const vtkShadelabPolyDataMapper&) = delete;
 };

@@ -1,25 +1,36 @@
 // vtkShadelabPolyDataMapper: the same picture as VTK's own mapper, bit for
 // bit, without the CPU copy of the vertex buffers that VTK's keeps after
-// uploading them.
+// uploading them, and with the triangle index buffer built in place (the
+// same indices as VTK's).
 #include "headless/headless_renderer.h"
+#include "shadelabTriangleIndexBuffer.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabPolyDataMapper.h"
 
 #include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkOpenGLIndexBufferObject.h>
 #include <vtkOpenGLVertexBufferObject.h>
 #include <vtkOpenGLVertexBufferObjectGroup.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <vector>
 
 namespace
 {
@@ -51,8 +62,12 @@ public:
   }
 };
 
+// The pictures of `mesh` drawn as a surface, a wireframe, a surface, a
+// wireframe again, a surface with its edges and a surface: each time the
+// index buffers are rebuilt, by VTK's mapper or by this one, and each
+// must know when the other's buffers stand.
 template <class Base>
-FloatImage Render(vtkPolyData* mesh, std::size_t& packedBytes)
+std::vector<FloatImage> Render(vtkPolyData* mesh, std::size_t& packedBytes)
 {
   HeadlessRenderer renderer;
   EXPECT_EQ(renderer.Start(320, 240), "");
@@ -62,10 +77,16 @@ FloatImage Render(vtkPolyData* mesh, std::size_t& packedBytes)
   actor->SetMapper(mapper);
   renderer.GetRenderer()->AddActor(actor);
   renderer.GetRenderer()->ResetCamera();
-  FloatImage picture = renderer.Render();
-  EXPECT_EQ(renderer.GetError(), "");
+  std::vector<FloatImage> pictures;
+  for (const int way : { 0, 1, 0, 1, 2, 0 })
+  {
+    actor->GetProperty()->SetRepresentation(way == 1 ? VTK_WIREFRAME : VTK_SURFACE);
+    actor->GetProperty()->SetEdgeVisibility(way == 2);
+    pictures.push_back(renderer.Render());
+    EXPECT_EQ(renderer.GetError(), "");
+  }
   packedBytes = mapper->PackedBytes();
-  return picture;
+  return pictures;
 }
 
 TEST(PolyDataMapper, DrawsAsVtksWithoutItsCopyOfTheVertexBuffers)
@@ -84,13 +105,96 @@ TEST(PolyDataMapper, DrawsAsVtksWithoutItsCopyOfTheVertexBuffers)
   mesh->SetPoints(points);
 
   std::size_t vtkKeeps = 0, oursKeeps = 0;
-  const FloatImage vtks = Render<vtkOpenGLPolyDataMapper>(mesh, vtkKeeps);
-  const FloatImage ours = Render<vtkShadelabPolyDataMapper>(mesh, oursKeeps);
+  const std::vector<FloatImage> vtks = Render<vtkOpenGLPolyDataMapper>(mesh, vtkKeeps);
+  const std::vector<FloatImage> ours = Render<vtkShadelabPolyDataMapper>(mesh, oursKeeps);
   // VTK keeps 12 bytes a point for the (double) points it packed to float:
   // what this mapper exists to free.
   EXPECT_GE(vtkKeeps, 12U * mesh->GetNumberOfPoints());
   EXPECT_EQ(oursKeeps, 0U);
-  ASSERT_EQ(vtks.Rgba.size(), ours.Rgba.size());
-  EXPECT_EQ(std::memcmp(vtks.Rgba.data(), ours.Rgba.data(), vtks.Rgba.size() * sizeof(float)), 0);
+  ASSERT_EQ(vtks.size(), ours.size());
+  for (std::size_t i = 0; i < vtks.size(); ++i)
+  {
+    SCOPED_TRACE("picture " + std::to_string(i));
+    ASSERT_EQ(vtks[i].Rgba.size(), ours[i].Rgba.size());
+    EXPECT_EQ(
+      std::memcmp(vtks[i].Rgba.data(), ours[i].Rgba.data(), vtks[i].Rgba.size() * sizeof(float)),
+      0);
+  }
+  // Each way shows: the wireframe and the edges are not the surface.
+  for (const std::size_t i : { 1, 4 })
+  {
+    EXPECT_NE(
+      std::memcmp(ours[0].Rgba.data(), ours[i].Rgba.data(), ours[0].Rgba.size() * sizeof(float)),
+      0);
+  }
+}
+
+// Points whose positions repeat (two corners at one position make a
+// triangle VTK leaves out), and a NaN coordinate, of type Array.
+template <class Array>
+vtkSmartPointer<vtkPoints> Positions()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double xyz[][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 1, 0, 0 },
+    { 2, 0, 0 }, { nan, 0, 0 }, { 2, 1, 0 } };
+  auto values = vtkSmartPointer<Array>::New();
+  values->SetNumberOfComponents(3);
+  for (const auto& p : xyz)
+  {
+    values->InsertNextTuple(p);
+  }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetData(values);
+  return points;
+}
+
+// Cells of every size from 0 to 5, among them triangles with a repeated id,
+// with two ids at one position (1 and 4), and with a NaN corner.
+vtkSmartPointer<vtkCellArray> Cells(bool storage64)
+{
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  if (storage64)
+  {
+    cells->Use64BitStorage();
+  }
+  else
+  {
+    cells->Use32BitStorage();
+  }
+  const std::vector<std::vector<vtkIdType>> lists = { { 0, 1, 2 }, {}, { 3 }, { 0, 2 }, { 0, 2, 3 },
+    { 0, 1, 4 }, { 0, 0, 2 }, { 1, 5, 7, 2 }, { 0, 1, 4, 2, 3 }, { 6, 5, 7 }, { 7, 6, 6 } };
+  for (const auto& list : lists)
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(list.size()), list.data());
+  }
+  return cells;
+}
+
+TEST(PolyDataMapper, TriangleIndicesAreVtks)
+{
+  for (const bool storage64 : { false, true })
+  {
+    for (const vtkSmartPointer<vtkPoints>& points :
+      { Positions<vtkFloatArray>(), Positions<vtkDoubleArray>() })
+    {
+      SCOPED_TRACE(
+        std::string(storage64 ? "64" : "32") + "-bit cells, " + points->GetData()->GetClassName());
+      vtkSmartPointer<vtkCellArray> cells = Cells(storage64);
+      std::vector<unsigned int> vtks{ 42 }, ours{ 42 }; // appended to what is there
+      vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer(
+        vtks, cells, points, 0, nullptr, nullptr);
+      ASSERT_TRUE(shadelab::AppendTriangleIndices(cells, points->GetData(), ours));
+      EXPECT_EQ(ours, vtks);
+      // Some triangles are left out, and some are not.
+      EXPECT_LT(vtks.size(), 1 + 3 * 11u);
+      EXPECT_GT(vtks.size(), 1 + 3 * 6u);
+    }
+  }
+  // Integer points are VTK's to draw.
+  vtkSmartPointer<vtkPoints> integers = Positions<vtkIntArray>();
+  ASSERT_TRUE(vtkIntArray::SafeDownCast(integers->GetData()));
+  std::vector<unsigned int> indices;
+  EXPECT_FALSE(shadelab::AppendTriangleIndices(Cells(false), integers->GetData(), indices));
+  EXPECT_TRUE(indices.empty());
 }
 }

@@ -1,7 +1,9 @@
 // shadelab-bench-frames: ms per frame of each shading rule through the
 // OSMesa backend, side by side in one run with VTK's own flat, Gouraud and
-// Phong (the peer a user would pick instead) and with the all-features
-// program that per-scene generation is measured against.
+// Phong (the peer a user would pick instead), with the all-features
+// program that per-scene generation is measured against, and with VTK's
+// unlit surface (one colour, positions alone: no normals, no lighting), the
+// least any shading rule's frame can cost through this mapper.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
 //                         [--vertex-colors] [--texture] [--parts N]
@@ -61,6 +63,7 @@ struct Variant
   Shading Rule;
   bool VtkOwn = false;
   bool AllFeatures = false;
+  bool Unlit = false; // VTK's own, lighting off, drawn from positions alone
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -221,7 +224,8 @@ int main(int argc, char** argv)
 
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
     { "vtk-gouraud", Shading::Gouraud, true }, { "vtk-phong", Shading::Phong, true },
-    { "flat", Shading::Flat }, { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong },
+    { "vtk-unlit", Shading::Phong, true, false, true }, { "flat", Shading::Flat },
+    { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong },
     { "flat-allfeatures", Shading::Flat, false, true },
     { "gouraud-allfeatures", Shading::Gouraud, false, true },
     { "phong-allfeatures", Shading::Phong, false, true } };
@@ -248,8 +252,16 @@ int main(int argc, char** argv)
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();
-      vtkPolyDataMapper::SafeDownCast(built.Actor->GetMapper())->SetInputData(mesh);
+      vtkSmartPointer<vtkPolyData> drawn = mesh;
+      if (v.Unlit)
+      {
+        drawn = vtkSmartPointer<vtkPolyData>::New();
+        drawn->SetPoints(mesh->GetPoints());
+        drawn->SetPolys(mesh->GetPolys());
+      }
+      vtkPolyDataMapper::SafeDownCast(built.Actor->GetMapper())->SetInputData(drawn);
       UseVtkLighting(scene, v.Rule, renderer.GetRenderer(), built.Actor);
+      built.Actor->GetProperty()->SetLighting(!v.Unlit);
     }
     else if (v.AllFeatures)
     {

@@ -313,29 +313,43 @@ std::vector<Sum> SumFaceNormals(const MeshConnectivity& c, const OutputTopology&
       }
     });
 
-  vtkIdType face = -1; // the last deferred corner's face, and its terms
-  Vec3 normal(0, 0, 0);
-  double area2 = 0;
-  double weights[3] = { 0, 0, 0 };
-  for (const std::vector<Id>& later : deferred)
-  {
-    for (const Id corner : later)
+  // The deferred terms, chunk by chunk in order: on the cores at once too,
+  // each taking the points of one range of ids (a point's terms stay on one
+  // core, in order); a face with corners in two ranges is computed twice.
+  vtkSMPTools::For(0, chunks, 1,
+    [&](vtkIdType first, vtkIdType last)
     {
-      if (corner / 3 != face)
+      const vtkIdType begin = topology.Points * first / chunks;
+      const vtkIdType end = topology.Points * last / chunks;
+      vtkIdType face = -1; // the last deferred corner's face, and its terms
+      Vec3 normal(0, 0, 0);
+      double area2 = 0;
+      double weights[3] = { 0, 0, 0 };
+      for (const std::vector<Id>& later : deferred)
       {
-        face = corner / 3;
-        area2 = terms.Normal(face, normal);
-        if (area2 != 0)
+        for (const Id corner : later)
         {
-          terms.Weights(face, area2, weights);
+          const Id point = corners[corner];
+          if (point < begin || point >= end)
+          {
+            continue;
+          }
+          if (corner / 3 != face)
+          {
+            face = corner / 3;
+            area2 = terms.Normal(face, normal);
+            if (area2 != 0)
+            {
+              terms.Weights(face, area2, weights);
+            }
+          }
+          if (area2 != 0)
+          {
+            AddTerm(sum[point], weights[corner % 3], normal);
+          }
         }
       }
-      if (area2 != 0)
-      {
-        AddTerm(sum[corners[corner]], weights[corner % 3], normal);
-      }
-    }
-  }
+    });
   return sum;
 }
 

@@ -197,14 +197,16 @@ void AddTerm(Sum& sum, double weight, const Vec3& normal)
   sum.Weight += weight;
 }
 
-// The chunks of faces that the sum splits the faces into: one per thread
-// unless `chunks` says, at most one a face, and at most 254 (a point's
-// owner is a byte, 255 for none).
+// A point's owning chunk is a byte; this one for a point in no face.
 constexpr std::uint8_t NoOwner = 255;
+
+// The chunks of faces that the sum splits the faces into: one per thread
+// unless `chunks` says, at most one a face, and fewer than NoOwner.
 int SumChunkCount(int chunks, vtkIdType faces)
 {
   const vtkIdType wanted = chunks > 0 ? chunks : vtkSMPTools::GetEstimatedNumberOfThreads();
-  return static_cast<int>(std::clamp<vtkIdType>(std::min<vtkIdType>(wanted, faces), 1, 254));
+  return static_cast<int>(
+    std::clamp<vtkIdType>(std::min<vtkIdType>(wanted, faces), 1, NoOwner - 1));
 }
 
 // Each face's weighted unit normal, summed into its corners' points, and
@@ -214,10 +216,10 @@ int SumChunkCount(int chunks, vtkIdType faces)
 // faces are summed on the cores at once: a point belongs to the chunk of
 // its first face, which adds its terms from its own faces in order; a
 // later chunk's terms of a point it does not own are deferred, and added
-// after all chunks, chunk by chunk in order. On a coherent mesh (scans,
-// subdivisions) only points along the chunks' borders are deferred; on a
-// shuffled one most of a later chunk's are, and the sum takes about as
-// long as on one core.
+// after all chunks, chunk by chunk in order (on the cores too, by ranges
+// of points). On a coherent mesh (scans, subdivisions) only points along
+// the chunks' borders are deferred; on a shuffled one most of a later
+// chunk's are, and the sum takes about as long as on one core.
 std::vector<Sum> SumFaceNormals(const MeshConnectivity& c, const OutputTopology& topology,
   int weighting, int chunkCount, float* cellNormals)
 {

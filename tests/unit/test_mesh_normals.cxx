@@ -1876,3 +1876,36 @@ TEST(MeshNormals, EveryChunkCountGivesTheBitsOfOneChunk)
     }
   }
 }
+
+// A float input's points are converted to the filter's double copy on the
+// cores: the normals are the very bits of the same values given as double.
+TEST(MeshNormals, FloatPointsGiveTheBitsOfTheirValuesInDouble)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "spot.obj").c_str());
+  reader->SetReadNormals(false);
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  vtkSmartPointer<vtkPolyData> floats = ToPolyData(FromPolyData(reader->GetOutput()));
+  vtkNew<vtkPoints> floatPoints;
+  floatPoints->SetDataTypeToFloat();
+  floatPoints->DeepCopy(floats->GetPoints());
+  floats->SetPoints(floatPoints);
+  vtkSmartPointer<vtkPolyData> doubles = ToPolyData(FromPolyData(floats)); // the float values
+  ASSERT_EQ(doubles->GetPoints()->GetDataType(), VTK_DOUBLE);
+  ASSERT_EQ(floats->GetPoints()->GetDataType(), VTK_FLOAT);
+  for (int weighting = 0; weighting < Weightings; ++weighting)
+  {
+    SCOPED_TRACE(WeightingNames[weighting]);
+    std::vector<unsigned char> normals[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      vtkNew<vtkShadelabMeshNormals> filter;
+      filter->SetInputData(i == 0 ? floats : doubles);
+      filter->SetWeighting(weighting);
+      ASSERT_TRUE(filter->GetExecutive()->Update());
+      normals[i] = Bytes(filter->GetOutput()->GetPointData()->GetNormals());
+    }
+    ASSERT_FALSE(normals[0].empty());
+    EXPECT_TRUE(normals[0] == normals[1]) << "point normals differ";
+  }
+}

@@ -1,8 +1,9 @@
 // vtkShadelabMeshNormals: each weighting against its definition computed
 // here, accuracy against the analytic normals of irregular spheres and tori,
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
-// degenerate input, consistent orientation, suzanne's file normals and the
-// connectivity cache.
+// degenerate input, consistent orientation, suzanne's file normals, the
+// connectivity cache, and the same bits whatever the number of chunks the
+// sums run in and whether the points are float or double.
 #include "shadelabMeshConnectivity.h"
 #include "shadelabTriangleMesh.h"
 #include "shadelabVec3.h"

@@ -3,12 +3,14 @@
 #include "shadelabCornerWeights.h"
 #include "shadelabFaceOrientation.h"
 
+#include <vtkFloatArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <future>
@@ -53,11 +55,28 @@ void MeshConnectivity::Build(vtkPolyData* input, bool consistency,
   this->Reversed =
     consistency && OrientConsistently(this->Triangles->GetPointer(0), this->Faces(), this->Points);
 
-  this->XYZ = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
+  vtkDataArray* points = input->GetPoints()->GetData();
+  this->XYZ = vtkDoubleArray::FastDownCast(points);
   if (!this->XYZ)
   {
     this->XYZ = vtkSmartPointer<vtkDoubleArray>::New();
-    this->XYZ->DeepCopy(input->GetPoints()->GetData());
+    vtkFloatArray* floats = vtkFloatArray::FastDownCast(points);
+    if (floats)
+    {
+      // The readers' usual points: converted on all cores (exact, as
+      // DeepCopy's conversion is).
+      this->XYZ->SetNumberOfComponents(3);
+      this->XYZ->SetNumberOfTuples(this->Points);
+      const float* from = floats->GetPointer(0);
+      double* to = this->XYZ->GetPointer(0);
+      vtkSMPTools::For(0, 3 * this->Points,
+        [from, to](vtkIdType begin, vtkIdType end)
+        { std::copy(from + begin, from + end, to + begin); });
+    }
+    else
+    {
+      this->XYZ->DeepCopy(points);
+    }
   }
   if (!connect)
   {

@@ -63,8 +63,10 @@
  * orientation).
  *
  * Both cores are used: the face geometry is computed while OpenMesh builds
- * the connectivity, and the splitting and Loop normals run through
- * vtkSMPTools. Without the connectivity the sum computes each face's
+ * the connectivity, and the sums, the splitting and Loop normals run
+ * through vtkSMPTools; each point still receives its faces' terms in the
+ * faces' order, so the bits do not depend on the number of threads (see
+ * SumChunks). Without the connectivity the sum computes each face's
  * normal, area and weights as it adds it (and writes its cell normal), in
  * the same order and with the same arithmetic: one pass over the faces and
  * nothing stored per face (7 doubles a face) at the same bits.
@@ -120,6 +122,15 @@ public:
   vtkBooleanMacro(ComputeCellNormals, bool);
 
   /**
+   * How many contiguous chunks of faces the vertex normals are summed in,
+   * on the cores at once: 0 (the default) one per SMP thread. Every value
+   * gives the same bits (each point still sums its faces in their order);
+   * tests set several to exercise that on any machine.
+   */
+  vtkSetClampMacro(SumChunks, int, 0, 254);
+  vtkGetMacro(SumChunks, int);
+
+  /**
    * Faces that needed duplicated vertices in the last update; 0 unless it
    * used OpenMesh's connectivity (Splitting or Loop).
    */
@@ -147,6 +158,7 @@ private:
   double FeatureAngle = 30;
   bool Consistency = false;
   bool ComputeCellNormals = true;
+  int SumChunks = 0;
   vtkIdType NumberOfDuplicatedFaces = 0;
   int NumberOfConnectivityBuilds = 0;
 

@@ -1,8 +1,9 @@
 // vtkShadelabMeshNormals: each weighting against its definition computed
 // here, accuracy against the analytic normals of irregular spheres and tori,
 // Loop normals, feature splitting (a cube, fandisk), non-manifold and
-// degenerate input, consistent orientation, suzanne's file normals and the
-// connectivity cache.
+// degenerate input, consistent orientation, suzanne's file normals, the
+// connectivity cache, and the same bits whatever the number of chunks the
+// sums run in and whether the points are float or double.
 #include "shadelabMeshConnectivity.h"
 #include "shadelabTriangleMesh.h"
 #include "shadelabVec3.h"
@@ -1755,5 +1756,157 @@ TEST(MeshNormals, RandomTriangleSoupsKeepEveryFaceAndStayFinite)
     oriented.Consistency = true;
     oriented.Splitting = soup % 2 == 0;
     Compute(mesh, oriented);
+  }
+}
+
+namespace
+{
+// A mesh with its points and faces in a random order (the same faces):
+// neighbouring faces far apart, so a point's faces lie in every chunk.
+Mesh Shuffled(const Mesh& mesh, Random& random)
+{
+  const auto permutation = [&random](std::size_t count)
+  {
+    std::vector<std::size_t> order(count);
+    std::iota(order.begin(), order.end(), 0);
+    for (std::size_t i = count; i > 1; --i)
+    {
+      std::swap(order[i - 1], order[static_cast<std::size_t>(random.Uniform(0, i))]);
+    }
+    return order;
+  };
+  const std::vector<std::size_t> point = permutation(mesh.Points.size());
+  Mesh shuffled;
+  shuffled.Points.resize(mesh.Points.size());
+  for (std::size_t i = 0; i < point.size(); ++i)
+  {
+    shuffled.Points[point[i]] = mesh.Points[i];
+  }
+  for (const std::size_t f : permutation(mesh.Triangles.size()))
+  {
+    Triangle t = mesh.Triangles[f];
+    for (vtkIdType& id : t)
+    {
+      id = static_cast<vtkIdType>(point[static_cast<std::size_t>(id)]);
+    }
+    shuffled.Triangles.push_back(t);
+  }
+  return shuffled;
+}
+}
+
+// The sums of the vertex normals are split into chunks of faces summed on
+// the cores at once (SumChunks); each point must still receive its terms in
+// the faces' order, so every chunk count must give the very bits of one
+// chunk (the sum as on one core): point and cell normals compared byte for
+// byte, for every weighting, with and without splitting, consistent
+// orientation and cell normals, on spot (its file vertices welded or not)
+// and on copies of it that defer many terms to the chunks' end: shuffled
+// points and faces, every face twice (each point in the first and the
+// second half) with faces of no area among them. A real mesh: the float
+// normals of a regular synthetic one rarely show the order of the double
+// sums, spot's do (each breakage of the order fails here).
+TEST(MeshNormals, EveryChunkCountGivesTheBitsOfOneChunk)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "spot.obj").c_str());
+  reader->SetReadNormals(false);
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  const Mesh spot = FromPolyData(reader->GetOutput());
+  Random random(77);
+  Mesh shuffled = Shuffled(spot, random);
+  for (std::size_t f = 0; f < shuffled.Triangles.size(); f += 5)
+  {
+    std::swap(shuffled.Triangles[f][1], shuffled.Triangles[f][2]); // for Consistency to reverse
+  }
+  Mesh twice = spot;
+  twice.Triangles.insert(twice.Triangles.end(), spot.Triangles.begin(), spot.Triangles.end());
+  for (std::size_t f = 0; f < twice.Triangles.size(); f += 97)
+  {
+    const Triangle& t = twice.Triangles[f];
+    twice.Triangles.insert(twice.Triangles.begin() + static_cast<std::ptrdiff_t>(f) + 1,
+      { { t[0], t[1], t[1] }, { t[2], t[0], t[2] } }); // no area: a repeated vertex
+  }
+  const std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> inputs = {
+    { "spot, file vertices welded", reader->GetOutput() }, { "spot", ToPolyData(spot) },
+    { "spot shuffled", ToPolyData(shuffled) },
+    { "spot, every face twice, faces of no area", ToPolyData(twice) }
+  };
+
+  for (const auto& [name, input] : inputs)
+  {
+    for (int configuration = 0; configuration < 8 * Weightings; ++configuration)
+    {
+      const int weighting = configuration % Weightings;
+      const bool splitting = configuration / Weightings % 2;
+      const bool consistency = configuration / Weightings / 2 % 2;
+      const bool cellNormals = configuration / Weightings / 4 % 2 == 0;
+      SCOPED_TRACE(name + ", " + WeightingNames[weighting] + (splitting ? ", split" : "") +
+        (consistency ? ", oriented" : "") + (cellNormals ? "" : ", no cell normals"));
+      std::vector<unsigned char> points, cells;
+      for (const int chunks : { 1, 2, 3, 7, 64, 0 })
+      {
+        SCOPED_TRACE(std::to_string(chunks) + " chunks");
+        vtkNew<vtkShadelabMeshNormals> filter;
+        filter->SetInputData(input);
+        filter->SetWeighting(weighting);
+        filter->SetSplitting(splitting);
+        filter->SetConsistency(consistency);
+        filter->SetComputeCellNormals(cellNormals);
+        filter->SetSumChunks(chunks);
+        ASSERT_TRUE(filter->GetExecutive()->Update());
+        vtkPolyData* output = filter->GetOutput();
+        if (chunks == 1)
+        {
+          points = Bytes(output->GetPointData()->GetNormals());
+          cells = cellNormals ? Bytes(output->GetCellData()->GetNormals()) : cells;
+          continue;
+        }
+        const std::vector<unsigned char> chunkPoints = Bytes(output->GetPointData()->GetNormals());
+        ASSERT_EQ(chunkPoints.size(), points.size());
+        EXPECT_EQ(std::memcmp(chunkPoints.data(), points.data(), points.size()), 0)
+          << "point normals differ";
+        if (cellNormals)
+        {
+          const std::vector<unsigned char> chunkCells = Bytes(output->GetCellData()->GetNormals());
+          ASSERT_EQ(chunkCells.size(), cells.size());
+          EXPECT_EQ(std::memcmp(chunkCells.data(), cells.data(), cells.size()), 0)
+            << "cell normals differ";
+        }
+      }
+    }
+  }
+}
+
+// A float input's points are converted to the filter's double copy on the
+// cores: the normals are the very bits of the same values given as double.
+TEST(MeshNormals, FloatPointsGiveTheBitsOfTheirValuesInDouble)
+{
+  vtkNew<vtkShadelabMeshReader> reader;
+  reader->SetFileName((TestMeshes / "spot.obj").c_str());
+  reader->SetReadNormals(false);
+  ASSERT_TRUE(reader->GetExecutive()->Update());
+  vtkSmartPointer<vtkPolyData> floats = ToPolyData(FromPolyData(reader->GetOutput()));
+  vtkNew<vtkPoints> floatPoints;
+  floatPoints->SetDataTypeToFloat();
+  floatPoints->DeepCopy(floats->GetPoints());
+  floats->SetPoints(floatPoints);
+  vtkSmartPointer<vtkPolyData> doubles = ToPolyData(FromPolyData(floats)); // the float values
+  ASSERT_EQ(doubles->GetPoints()->GetDataType(), VTK_DOUBLE);
+  ASSERT_EQ(floats->GetPoints()->GetDataType(), VTK_FLOAT);
+  for (int weighting = 0; weighting < Weightings; ++weighting)
+  {
+    SCOPED_TRACE(WeightingNames[weighting]);
+    std::vector<unsigned char> normals[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      vtkNew<vtkShadelabMeshNormals> filter;
+      filter->SetInputData(i == 0 ? floats : doubles);
+      filter->SetWeighting(weighting);
+      ASSERT_TRUE(filter->GetExecutive()->Update());
+      normals[i] = Bytes(filter->GetOutput()->GetPointData()->GetNormals());
+    }
+    ASSERT_FALSE(normals[0].empty());
+    EXPECT_TRUE(normals[0] == normals[1]) << "point normals differ";
   }
 }

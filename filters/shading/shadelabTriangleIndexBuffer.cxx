@@ -4,6 +4,8 @@
 #include <vtkCellArray.h>
 #include <vtkDataArrayRange.h>
 
+#include <algorithm>
+
 namespace
 {
 struct FanIndices
@@ -15,15 +17,10 @@ struct FanIndices
     const auto* ids = state.GetConnectivity()->GetPointer(0);
     const vtkIdType cells = state.GetNumberOfCells();
     const auto xyz = vtk::DataArrayTupleRange<3>(points);
-    // A cell of n >= 3 ids is n - 2 triangles: 3 (ids - 2 cells) at most
-    // when every cell has 3 or more.
-    std::size_t most = 0;
-    for (vtkIdType c = 0; c < cells; ++c)
-    {
-      const auto size = offsets[c + 1] - offsets[c];
-      most += size >= 3 ? 3 * static_cast<std::size_t>(size - 2) : 0;
-    }
-    indices.reserve(indices.size() + most);
+    // A cell of n >= 3 ids is n - 2 triangles: 3 (ids - 2 cells) indices
+    // when every cell has 3 or more (VTK's own estimate), a hint otherwise.
+    const auto most = 3 * (static_cast<vtkIdType>(offsets[cells]) - 2 * cells);
+    indices.reserve(indices.size() + static_cast<std::size_t>(std::max<vtkIdType>(most, 0)));
     for (vtkIdType c = 0; c < cells; ++c)
     {
       const auto size = offsets[c + 1] - offsets[c];

@@ -22,7 +22,9 @@ namespace shadelab_test
 namespace
 {
 // An X server for this test program: Xvfb on the first free display,
-// which it names through -displayfd once it accepts connections.
+// which it names through -displayfd once it accepts connections; -noreset,
+// or a client connecting just as the last one left (xdotool, then the
+// window) would be dropped by the server's reset.
 class XServer : public ::testing::Environment
 {
 public:
@@ -36,7 +38,7 @@ public:
       close(fds[0]);
       const std::string fd = std::to_string(fds[1]);
       execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
-        "tcp", static_cast<char*>(nullptr));
+        "tcp", "-noreset", static_cast<char*>(nullptr));
       _exit(127);
     }
     close(fds[1]);

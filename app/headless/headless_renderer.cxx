@@ -22,6 +22,7 @@ HeadlessRenderer::HeadlessRenderer()
 {
   this->Capture->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
   this->Renderer->SetPass(this->Capture);
+  this->Window->SetFramebuffersUnused(true);
   this->Window->AddRenderer(this->Renderer);
 }
 

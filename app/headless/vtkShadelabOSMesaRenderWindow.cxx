@@ -1,6 +1,8 @@
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
 
 #include <vtkObjectFactory.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLState.h>
 
 #include <GL/osmesa.h>
 
@@ -71,10 +73,31 @@ void vtkShadelabOSMesaRenderWindow::Initialize()
   this->ContextReady = true;
 }
 
+void vtkShadelabOSMesaRenderWindow::Start()
+{
+  if (!this->FramebuffersUnused)
+  {
+    this->Superclass::Start();
+    return;
+  }
+  // vtkOpenGLRenderWindow::Start with framebuffers of one pixel: an owned
+  // context, so no state to reset; the size stays the window's (renderers
+  // take their viewports from it).
+  this->Initialize();
+  this->MakeCurrent();
+  this->GetState()->vtkglEnable(GL_BLEND);
+  this->GetState()->vtkglBlendFuncSeparate(
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->CreateFramebuffers(1, 1);
+  this->GetState()->PushFramebufferBindings();
+  this->RenderFramebuffer->Bind();
+  this->RenderFramebuffer->ActivateDrawBuffer(0);
+}
+
 bool vtkShadelabOSMesaRenderWindow::BindBuffer()
 {
-  const int width = std::max(this->Size[0], 1);
-  const int height = std::max(this->Size[1], 1);
+  const int width = this->FramebuffersUnused ? 1 : std::max(this->Size[0], 1);
+  const int height = this->FramebuffersUnused ? 1 : std::max(this->Size[1], 1);
   this->Buffer.assign(static_cast<size_t>(width) * height * 4, 0);
   if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(this->Context), this->Buffer.data(),
         GL_UNSIGNED_BYTE, width, height))

@@ -30,6 +30,11 @@ public:
   void Initialize() override;
   void Finalize() override;
 
+  /**
+   * As VTK's Start, but with its render, display and resolve framebuffers
+   * at one pixel when FramebuffersUnused is on.
+   */
+  void Start() override;
   void MakeCurrent() override;
   bool IsCurrent() override;
   vtkTypeBool IsDirect() override { return 1; }
@@ -40,6 +45,17 @@ public:
   void SetSize(int size[2]) override { this->SetSize(size[0], size[1]); }
 
   vtkGetMacro(ContextReady, bool);
+
+  /**
+   * On when every render draws into a framebuffer of its own (the float
+   * capture pass) and nothing reads the window's: then VTK's render,
+   * display and resolve framebuffers and OSMesa's default one are kept at
+   * one pixel instead of the window's size (80 MB at 1080p, which llvmpipe
+   * would zero). Off by default: vtkWindowToImageFilter and GetPixelData
+   * read the window's own. Set before Initialize.
+   */
+  vtkSetMacro(FramebuffersUnused, bool);
+  vtkGetMacro(FramebuffersUnused, bool);
 
   /**
    * Sets LP_NUM_THREADS (llvmpipe's rasteriser threads) to the number of
@@ -64,6 +80,7 @@ private:
   // objects and only blits here, so this is never read back.
   std::vector<unsigned char> Buffer;
   bool ContextReady = false;
+  bool FramebuffersUnused = false;
 };
 
 #endif

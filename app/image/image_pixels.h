@@ -6,7 +6,6 @@
 
 #include "core/options.h"
 
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,24 +45,37 @@ inline int Channels(const FloatImage& image)
   return image.Alpha ? 4 : 3;
 }
 
-/** The picture as top-down RGB (or RGBA) of type T, each value through convert. */
-template <typename T, typename Convert>
-std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
+/** ToTopDown's rows, for C channels (a constant, so the loop vectorises). */
+template <int C, typename T, typename Convert>
+void TopDownRows(const FloatImage& image, T* out, Convert convert)
 {
-  const int channels = Channels(image);
-  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * channels);
   for (int y = 0; y < image.Height; ++y)
   {
     const float* src =
       image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
-    T* dst = out.data() + static_cast<size_t>(y) * image.Width * channels;
+    T* dst = out + static_cast<size_t>(y) * image.Width * C;
     for (int x = 0; x < image.Width; ++x)
     {
-      for (int c = 0; c < channels; ++c)
+      for (int c = 0; c < C; ++c)
       {
-        dst[channels * x + c] = convert(src[4 * x + c]);
+        dst[C * x + c] = convert(src[4 * x + c]);
       }
     }
+  }
+}
+
+/** The picture as top-down RGB (or RGBA) of type T, each value through convert. */
+template <typename T, typename Convert>
+std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
+{
+  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * Channels(image));
+  if (image.Alpha)
+  {
+    TopDownRows<4>(image, out.data(), convert);
+  }
+  else
+  {
+    TopDownRows<3>(image, out.data(), convert);
   }
   return out;
 }
@@ -72,7 +84,8 @@ std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
 inline double Quantised(double v, double scale)
 {
   const double clamped = v > 0 ? (v < 1 ? v : 1.0) : 0.0; // NaN compares false
-  return std::floor(scale * clamped + 0.5);
+  // At least 0.5, so truncating is flooring (and vectorises; scale <= 65535).
+  return static_cast<int>(scale * clamped + 0.5);
 }
 
 /** The picture through Quantised, top-down as ToTopDown. */

@@ -96,13 +96,10 @@ void vtkShadelabOSMesaRenderWindow::Start()
 
 bool vtkShadelabOSMesaRenderWindow::BindBuffer()
 {
-  const int width = this->FramebuffersUnused ? 1 : std::max(this->Size[0], 1);
-  const int height = this->FramebuffersUnused ? 1 : std::max(this->Size[1], 1);
-  this->Buffer.assign(static_cast<size_t>(width) * height * 4, 0);
-  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(this->Context), this->Buffer.data(),
-        GL_UNSIGNED_BYTE, width, height))
+  if (!OSMesaMakeCurrent(
+        static_cast<OSMesaContext>(this->Context), this->Buffer.data(), GL_UNSIGNED_BYTE, 1, 1))
   {
-    vtkErrorMacro("OSMesa could not bind a " << width << "x" << height << " buffer");
+    vtkErrorMacro("OSMesa could not make its context current");
     return false;
   }
   return true;
@@ -120,8 +117,6 @@ void vtkShadelabOSMesaRenderWindow::Finalize()
   this->Context = nullptr;
   this->ContextReady = false;
   this->SetReadyForRendering(false);
-  this->Buffer.clear();
-  this->Buffer.shrink_to_fit();
 }
 
 void vtkShadelabOSMesaRenderWindow::MakeCurrent()
@@ -135,19 +130,6 @@ void vtkShadelabOSMesaRenderWindow::MakeCurrent()
 bool vtkShadelabOSMesaRenderWindow::IsCurrent()
 {
   return this->Context && OSMesaGetCurrentContext() == this->Context;
-}
-
-void vtkShadelabOSMesaRenderWindow::SetSize(int width, int height)
-{
-  if (this->Size[0] == width && this->Size[1] == height)
-  {
-    return;
-  }
-  this->Superclass::SetSize(width, height);
-  if (this->Context)
-  {
-    this->BindBuffer();
-  }
 }
 
 void vtkShadelabOSMesaRenderWindow::PrintSelf(ostream& os, vtkIndent indent)

@@ -17,7 +17,7 @@
 
 #include <vtkGenericOpenGLRenderWindow.h>
 
-#include <vector>
+#include <array>
 
 class vtkShadelabOSMesaRenderWindow : public vtkGenericOpenGLRenderWindow
 {
@@ -41,18 +41,14 @@ public:
   int SupportsOpenGL() override { return this->ContextReady ? 1 : 0; }
   void Frame() override {}
 
-  void SetSize(int width, int height) override;
-  void SetSize(int size[2]) override { this->SetSize(size[0], size[1]); }
-
   vtkGetMacro(ContextReady, bool);
 
   /**
    * On when every render draws into a framebuffer of its own (the float
    * capture pass) and nothing reads the window's: then VTK's render,
-   * display and resolve framebuffers and OSMesa's default one are kept at
-   * one pixel instead of the window's size (80 MB at 1080p, which llvmpipe
-   * would zero). Off by default: vtkWindowToImageFilter and GetPixelData
-   * read the window's own. Set before Initialize.
+   * display and resolve framebuffers are kept at one pixel instead of the
+   * window's size (56 MB at 1080p, which llvmpipe would zero). Off by
+   * default: vtkWindowToImageFilter and GetPixelData read them.
    */
   vtkSetMacro(FramebuffersUnused, bool);
   vtkGetMacro(FramebuffersUnused, bool);
@@ -76,9 +72,10 @@ private:
   bool BindBuffer();
 
   void* Context = nullptr; // OSMesaContext, kept opaque to keep osmesa.h out
-  // OSMesa's default framebuffer. VTK renders into its own framebuffer
-  // objects and only blits here, so this is never read back.
-  std::vector<unsigned char> Buffer;
+  // OSMesa's default framebuffer, one pixel: VTK draws into framebuffer
+  // objects of its own and reads those; Frame, which would copy them here,
+  // does nothing.
+  std::array<unsigned char, 4> Buffer{};
   bool ContextReady = false;
   bool FramebuffersUnused = false;
 };

@@ -31,22 +31,37 @@ trap 'rm -rf "$dir"' EXIT
 
 # LIBRARY's dependencies in the loader's order.
 ldd "$library" | awk '$3 ~ /^\// { print $3 }' >"$dir/closure"
+touch "$dir/strong" "$dir/cost"
 
 runtime=(libstdc++.so.6 libm.so.6 libgcc_s.so.1 libc.so.6)
 printf '%s\n' "${runtime[@]}"
 
-# Strong definitions (text, data, bss, read-only, indirect functions), less
-# the linker's own markers, which every library has and nothing binds to.
-place=2
-while read -r path; do
-  name=$(basename "$path")
-  nm -D --defined-only "$path" 2>/dev/null |
-    awk -v lib="$name" '$2 ~ /^[TDBRi]$/ && $3 !~ /^(_edata|_end|__bss_start)$/ {
-      sub(/@.*/, "", $3); print $3, lib }' >>"$dir/strong"
-  references=$(readelf -rW "$path" 2>/dev/null | awk 'NF >= 5 && $1 ~ /^[0-9a-f]+$/' | wc -l)
-  echo "$((references * place)) $name" >>"$dir/cost"
-  place=$((place + 1))
-done <"$dir/closure"
+# One pass of readelf over them all: from each library's dynamic section
+# the number of its relocations that name a symbol (all, less the relative
+# ones, which need no lookup), from its dynamic symbols the strong
+# definitions (global, neither undefined nor absolute as version names are),
+# less the linker's own markers, which every library has and nothing binds to.
+# (Given several files, readelf heads each one's part with "File: PATH".)
+# shellcheck disable=SC2046 # one path per word
+readelf -W --dynamic --dyn-syms $(cat "$dir/closure") 2>/dev/null |
+  awk -v strong="$dir/strong" -v cost="$dir/cost" '
+  function flush() {
+    if (lib != "") print (rela / entry - relative + plt / entry) * place, lib >cost
+  }
+  BEGIN { place = 1 }
+  /^File: / {
+    flush()
+    lib = $2; sub(/.*\//, "", lib); place++; rela = plt = relative = 0; entry = 24
+  }
+  $2 == "(RELASZ)" { rela = $3 }
+  $2 == "(PLTRELSZ)" { plt = $3 }
+  $2 == "(RELAENT)" { entry = $3 }
+  $2 == "(RELACOUNT)" { relative = $3 }
+  $1 ~ /^[0-9]+:$/ && NF >= 8 && $5 == "GLOBAL" && $7 != "UND" && $7 != "ABS" {
+    name = $8; sub(/@.*/, "", name)
+    if (name !~ /^(_edata|_end|__bss_start)$/) print name, lib >strong
+  }
+  END { flush() }'
 
 sort -u "$dir/strong" | awk '{ n[$1]++; libs[$1] = libs[$1] " " $2 }
   END { for (s in n) if (n[s] > 1) print libs[s] }' | tr ' ' '\n' | sed '/^$/d' |

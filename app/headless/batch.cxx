@@ -30,6 +30,7 @@
 #include <map>
 #include <memory>
 #include <tuple>
+#include <utility>
 
 namespace shadelab
 {
@@ -233,8 +234,19 @@ private:
         std::string(ToString(options.ShadingRule)) + "-" + ToString(options.ReflectionModel));
     }
     const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());
-    FloatImage image = renderer.Render();
-    image.Alpha = options.TransparentBackground;
+    // An 8-bit file's picture is rendered in 8 bits, the same bytes for less.
+    const bool eightBit = ResolvePixelType(shot.Output, shot.Pixels) == PixelType::UInt8;
+    FloatImage image;
+    Image8 image8;
+    if (eightBit)
+    {
+      image8 = renderer.RenderEightBit(options.TransparentBackground);
+    }
+    else
+    {
+      image = renderer.Render();
+      image.Alpha = options.TransparentBackground;
+    }
     this->Timer.Lap("frame");
     if (!renderer.GetError().empty())
     {
@@ -257,8 +269,9 @@ private:
     {
       return false;
     }
-    if (const std::string error =
-          this->Writer.Submit(shot.Output, image, shot.Pixels, metadata, frame);
+    if (const std::string error = eightBit
+          ? this->Writer.Submit(shot.Output, std::move(image8), metadata, frame)
+          : this->Writer.Submit(shot.Output, image, shot.Pixels, metadata, frame);
         !error.empty())
     {
       this->Fail(shot, shot.Output, error);

@@ -1,7 +1,7 @@
 #include "headless/headless_renderer.h"
 
 #include "core/errors.h"
-#include "headless/vtkShadelabFloatCapturePass.h"
+#include "headless/vtkShadelabCapturePass.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
 #include "vtkShadelabOutputWindow.h"
 
@@ -18,7 +18,7 @@ namespace shadelab
 HeadlessRenderer::HeadlessRenderer()
   : Window(vtkSmartPointer<vtkShadelabOSMesaRenderWindow>::New())
   , Renderer(vtkSmartPointer<vtkRenderer>::New())
-  , Capture(vtkSmartPointer<vtkShadelabFloatCapturePass>::New())
+  , Capture(vtkSmartPointer<vtkShadelabCapturePass>::New())
 {
   this->Capture->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
   this->Renderer->SetPass(this->Capture);
@@ -46,14 +46,40 @@ std::string HeadlessRenderer::Start(int width, int height, int samples)
   return {};
 }
 
-FloatImage HeadlessRenderer::Render()
+void HeadlessRenderer::RenderFrame(bool eightBit)
 {
   const MessageScope messages;
+  this->Capture->SetEightBit(eightBit);
   this->Window->Render();
   this->Error = messages.FirstError();
   ReportWarnings("render", messages.Warnings());
+}
+
+FloatImage HeadlessRenderer::Render()
+{
+  this->RenderFrame(false);
   FloatImage samples{ this->Capture->GetWidth(), this->Capture->GetHeight(),
     this->Capture->TakePixels() };
   return this->Samples > 1 ? BoxAverage(samples, this->Samples) : samples;
+}
+
+Image8 HeadlessRenderer::RenderEightBit(bool alpha)
+{
+  if (this->Samples > 1)
+  {
+    FloatImage average = this->Render();
+    average.Alpha = alpha;
+    return { average.Width, average.Height, Quantise<std::uint8_t>(average, 255), alpha };
+  }
+  this->RenderFrame(true);
+  const int width = this->Capture->GetWidth(), height = this->Capture->GetHeight();
+  const std::vector<std::uint8_t> rgba = this->Capture->TakePixels8();
+  if (rgba.empty())
+  {
+    return {};
+  }
+  return { width, height,
+    ToTopDown<std::uint8_t>(rgba.data(), width, height, alpha, [](std::uint8_t v) { return v; }),
+    alpha };
 }
 }

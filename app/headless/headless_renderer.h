@@ -10,7 +10,7 @@
 #include <string>
 
 class vtkRenderer;
-class vtkShadelabFloatCapturePass;
+class vtkShadelabCapturePass;
 class vtkShadelabOSMesaRenderWindow;
 
 namespace shadelab
@@ -36,12 +36,22 @@ public:
    * its warnings are reported.
    */
   FloatImage Render();
+
+  /**
+   * Renders one frame for an 8-bit file (RGB, or RGBA with alpha): byte for
+   * byte Quantise(Render()), at a quarter of the target's memory
+   * (vtkShadelabCapturePass::SetEightBit), for a scene of opaque actors.
+   * With samples > 1, Render's average quantised. Errors as Render.
+   */
+  Image8 RenderEightBit(bool alpha);
   const std::string& GetError() const { return this->Error; }
 
 private:
+  void RenderFrame(bool eightBit);
+
   vtkSmartPointer<vtkShadelabOSMesaRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkShadelabFloatCapturePass> Capture;
+  vtkSmartPointer<vtkShadelabCapturePass> Capture;
   std::string Error;
   int Samples = 1;
 };

@@ -22,6 +22,18 @@ struct FloatImage
 };
 
 /**
+ * A picture for an 8-bit file, quantised as Quantise does: top-down rows
+ * of RGB, or RGBA with Alpha, as files store them.
+ */
+struct Image8
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<std::uint8_t> Pixels;
+  bool Alpha = false;
+};
+
+/**
  * image with each n x n block of pixels averaged into one: the sum of its
  * samples in double, row by row, divided by n*n and rounded to float. What
  * --ssaa stores, and what its test computes from an n-times picture.
@@ -45,16 +57,19 @@ inline int Channels(const FloatImage& image)
   return image.Alpha ? 4 : 3;
 }
 
-/** ToTopDown's rows, for C channels (a constant, so the loop vectorises). */
-template <int C, typename T, typename Convert>
-void TopDownRows(const FloatImage& image, T* out, Convert convert)
+/**
+ * Bottom-up RGBA rows (width x height, as OpenGL reads them) as top-down
+ * rows of C channels of type T, each value through convert; C a constant,
+ * so the loop vectorises.
+ */
+template <int C, typename S, typename T, typename Convert>
+void TopDownRows(const S* rgba, int width, int height, T* out, Convert convert)
 {
-  for (int y = 0; y < image.Height; ++y)
+  for (int y = 0; y < height; ++y)
   {
-    const float* src =
-      image.Rgba.data() + static_cast<size_t>(image.Height - 1 - y) * image.Width * 4;
-    T* dst = out + static_cast<size_t>(y) * image.Width * C;
-    for (int x = 0; x < image.Width; ++x)
+    const S* src = rgba + static_cast<size_t>(height - 1 - y) * width * 4;
+    T* dst = out + static_cast<size_t>(y) * width * C;
+    for (int x = 0; x < width; ++x)
     {
       for (int c = 0; c < C; ++c)
       {
@@ -64,20 +79,27 @@ void TopDownRows(const FloatImage& image, T* out, Convert convert)
   }
 }
 
+/** Bottom-up RGBA as top-down RGB (or RGBA with alpha) of type T, each value through convert. */
+template <typename T, typename S, typename Convert>
+std::vector<T> ToTopDown(const S* rgba, int width, int height, bool alpha, Convert convert)
+{
+  std::vector<T> out(static_cast<size_t>(width) * height * (alpha ? 4 : 3));
+  if (alpha)
+  {
+    TopDownRows<4>(rgba, width, height, out.data(), convert);
+  }
+  else
+  {
+    TopDownRows<3>(rgba, width, height, out.data(), convert);
+  }
+  return out;
+}
+
 /** The picture as top-down RGB (or RGBA) of type T, each value through convert. */
 template <typename T, typename Convert>
 std::vector<T> ToTopDown(const FloatImage& image, Convert convert)
 {
-  std::vector<T> out(static_cast<size_t>(image.Width) * image.Height * Channels(image));
-  if (image.Alpha)
-  {
-    TopDownRows<4>(image, out.data(), convert);
-  }
-  else
-  {
-    TopDownRows<3>(image, out.data(), convert);
-  }
-  return out;
+  return ToTopDown<T>(image.Rgba.data(), image.Width, image.Height, image.Alpha, convert);
 }
 
 /** round(scale*clamp(v, 0, 1)): the contract's rule for integer files; NaN lands on 0. */

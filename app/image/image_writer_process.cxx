@@ -144,15 +144,6 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
   PixelType type, const std::vector<std::pair<std::string, std::string>>& metadata,
   const FramePlace& frame)
 {
-  if (!this->StartError.empty())
-  {
-    return this->StartError;
-  }
-  if (this->ToChild < 0)
-  {
-    return "the image writer has stopped";
-  }
-  this->Written = true;
   ImageRequest request{ path, type, metadata, frame, {}, {} };
   request.Image.Width = image.Width;
   request.Image.Height = image.Height;
@@ -165,6 +156,30 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
   {
     request.Image.Rgba = image.Rgba;
   }
+  return this->Send(request);
+}
+
+std::string ImageWriterProcess::Submit(const std::string& path, Image8&& image,
+  const std::vector<std::pair<std::string, std::string>>& metadata, const FramePlace& frame)
+{
+  ImageRequest request{ path, PixelType::UInt8, metadata, frame, {}, std::move(image.Pixels) };
+  request.Image.Width = image.Width;
+  request.Image.Height = image.Height;
+  request.Image.Alpha = image.Alpha;
+  return this->Send(request);
+}
+
+std::string ImageWriterProcess::Send(const ImageRequest& request)
+{
+  if (!this->StartError.empty())
+  {
+    return this->StartError;
+  }
+  if (this->ToChild < 0)
+  {
+    return "the image writer has stopped";
+  }
+  this->Written = true;
   if (SendImageRequest(this->ToChild, request))
   {
     ++this->Unanswered;

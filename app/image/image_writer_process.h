@@ -61,6 +61,9 @@ public:
    */
   std::string Submit(const std::string& path, const FloatImage& image, PixelType type,
     const std::vector<std::pair<std::string, std::string>>& metadata, const FramePlace& frame = {});
+  /** The same of a picture already quantised, for an 8-bit file (its type resolves to UInt8). */
+  std::string Submit(const std::string& path, Image8&& image,
+    const std::vector<std::pair<std::string, std::string>>& metadata, const FramePlace& frame = {});
 
   /** Waits until the oldest picture submitted and not collected is written: "" or an error text. */
   std::string Collect();
@@ -81,6 +84,8 @@ private:
   void operator=(const ImageWriterProcess&) = delete;
 
   int Wait();
+  // Sends a Submit's request: "" or an error text.
+  std::string Send(const ImageRequest& request);
   // One answer line, or the writer's end as an error: "" when written.
   std::string ReadReply(bool& broke);
 

@@ -169,3 +169,15 @@ TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
     }
   }
 }
+
+TEST(GeneratedShaders, AnEightBitFileEndsWithTheCapturesQuantisation)
+{
+  TempDir dir;
+  const std::string step = "fragOutput0 = shadelabQuantised(fragOutput0);";
+  EXPECT_TRUE(Contains(Render(dir, "phong-blinn", {}).Fragment, step));
+  std::filesystem::remove_all(dir / "glsl");
+  const RunResult r = RunShadelab({ "render", TestMesh("cow.obj").string(), "-o",
+    (dir / "cow.exr").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() });
+  ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+  EXPECT_FALSE(Contains(Slurp(dir / "glsl" / "phong-blinn.frag"), step)) << "floats: no step";
+}

@@ -1,7 +1,7 @@
 // The headless window with its own framebuffers left unused: the float
 // capture pass draws the same pixels, and VTK's render, display and resolve
 // framebuffers stay at one pixel instead of the window's size.
-#include "headless/vtkShadelabFloatCapturePass.h"
+#include "headless/vtkShadelabCapturePass.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
 
 #include <gtest/gtest.h>
@@ -43,7 +43,7 @@ Frame Draw(bool framebuffersUnused)
   window->SetMultiSamples(0);
   window->SetSize(Width, Height);
   vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkShadelabFloatCapturePass> capture;
+  vtkNew<vtkShadelabCapturePass> capture;
   capture->SetDelegatePass(vtkNew<vtkRenderStepsPass>());
   renderer->SetPass(capture);
   window->AddRenderer(renderer);

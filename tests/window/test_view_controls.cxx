@@ -409,9 +409,11 @@ TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
       QTest::keyClick(window.findChild<QComboBox*>("rule"), Qt::Key_Down); // gouraud, phong
     }
     ASSERT_EQ(inspector.GetState().Scene.ShadingRule, rule);
-    // What `render --dump-shaders` writes for the picture the view shows.
+    // What `render --dump-shaders` writes for the picture the view shows
+    // (in floats: an 8-bit file's program ends with the capture's
+    // quantisation step, which the window leaves to its framebuffer).
     std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
-      (dir / "picture.png").string(), "--dump-shaders", dir.path().string() };
+      (dir / "picture.exr").string(), "--dump-shaders", dir.path().string() };
     const std::vector<std::string> scene = SceneArguments(inspector.ShownScene());
     args.insert(args.end(), scene.begin(), scene.end());
     const RunResult run = RunShadelab(args);

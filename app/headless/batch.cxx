@@ -350,7 +350,8 @@ int RenderShots(
   // largest mmap threshold, so each came from fresh pages, faulted in and
   // zeroed, and went back on free: with the 8-bit pixels sent, a quarter of
   // a 1080p batch's CPU time in the kernel. Kept in the heap instead, the
-  // next picture reuses them (BENCHMARKS.md, "Many shots"). Only up to the
+  // next picture reuses them (BENCHMARKS.md, "Many shots"); so do an 8-bit
+  // file's smaller buffers from the start. Only up to the
   // largest picture: a large mesh's arrays stay mapped, so that each goes
   // back to the system when freed rather than raising the heap's peak.
   std::size_t largestPicture = 0;

@@ -18,6 +18,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 
 #include <gtest/gtest.h>
@@ -180,4 +181,23 @@ TEST(EightBitCapture, EveryByteIsTheFloatPictureQuantised)
               [](float v) { return std::isnan(v); }),
     0)
     << "the NaN square";
+}
+
+TEST(EightBitCapture, RefusesATranslucentActor)
+{
+  // Blending in 8 bits is not the floats' blend quantised: no 8-bit picture.
+  HeadlessRenderer renderer;
+  ASSERT_EQ(renderer.Start(32, 24), "");
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(Squares({ { 0.2f, 0.4f, 0.6f } }));
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(0.5);
+  renderer.GetRenderer()->AddActor(actor);
+  renderer.GetRenderer()->ResetCamera();
+  EXPECT_TRUE(renderer.RenderEightBit(false).Pixels.empty());
+  EXPECT_NE(renderer.GetError().find("opaque"), std::string::npos) << renderer.GetError();
+  // The float target still takes it.
+  EXPECT_EQ(renderer.Render().Rgba.size(), 32u * 24 * 4);
+  EXPECT_EQ(renderer.GetError(), "");
 }

@@ -36,6 +36,7 @@ public:
    * its warnings are reported.
    */
   FloatImage Render();
+  const std::string& GetError() const { return this->Error; }
 
   /**
    * Renders one frame for an 8-bit file (RGB, or RGBA with alpha): byte for
@@ -44,7 +45,6 @@ public:
    * With samples > 1, Render's average quantised. Errors as Render.
    */
   Image8 RenderEightBit(bool alpha);
-  const std::string& GetError() const { return this->Error; }
 
 private:
   void RenderFrame(bool eightBit);

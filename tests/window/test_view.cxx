@@ -308,7 +308,8 @@ TEST(View, AScreenshotThatCannotBeWrittenIsReportedAndLeavesNothing)
   std::sort(files.begin(), files.end());
   EXPECT_EQ(files, (std::vector<std::string>{ "stderr", "stdout" }));
   viewer.Keys({ "q" });
-  EXPECT_EQ(viewer.Wait(), 0) << "the window goes on after a failed screenshot";
+  EXPECT_EQ(viewer.Wait(), 0) << "the window goes on after a failed screenshot\n"
+                              << viewer.Stderr();
 }
 
 TEST(View, QAndEscapeQuitWithZero)

@@ -69,7 +69,7 @@ Image8 HeadlessRenderer::RenderEightBit(bool alpha)
   {
     FloatImage average = this->Render();
     average.Alpha = alpha;
-    return { average.Width, average.Height, Quantise<std::uint8_t>(average, 255), alpha };
+    return QuantiseToImage8(average);
   }
   this->RenderFrame(true);
   const int width = this->Capture->GetWidth(), height = this->Capture->GetHeight();

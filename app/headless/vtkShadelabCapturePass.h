@@ -47,7 +47,6 @@ public:
 
   /** The next renders' target: 8-bit, quantised exactly (above), or floats (the default). */
   void SetEightBit(bool eightBit) { this->EightBit = eightBit; }
-  bool GetEightBit() const { return this->EightBit; }
 
   /**
    * RGBA floats of the last float render, width*height*4, bottom row

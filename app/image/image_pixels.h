@@ -116,6 +116,12 @@ std::vector<T> Quantise(const FloatImage& image, double scale)
 {
   return ToTopDown<T>(image, [scale](double v) { return static_cast<T>(Quantised(v, scale)); });
 }
+
+/** The picture for an 8-bit file: Quantise's bytes with its size and alpha. */
+inline Image8 QuantiseToImage8(const FloatImage& image)
+{
+  return { image.Width, image.Height, Quantise<std::uint8_t>(image, 255), image.Alpha };
+}
 }
 
 #endif

@@ -144,18 +144,11 @@ std::string ImageWriterProcess::Submit(const std::string& path, const FloatImage
   PixelType type, const std::vector<std::pair<std::string, std::string>>& metadata,
   const FramePlace& frame)
 {
-  ImageRequest request{ path, type, metadata, frame, {}, {} };
-  request.Image.Width = image.Width;
-  request.Image.Height = image.Height;
-  request.Image.Alpha = image.Alpha;
   if (ResolvePixelType(path, type) == PixelType::UInt8)
   {
-    request.Pixels8 = Quantise<std::uint8_t>(image, 255); // a quarter of the floats' bytes to send
+    return this->Submit(path, QuantiseToImage8(image), metadata, frame); // a quarter of the bytes
   }
-  else
-  {
-    request.Image.Rgba = image.Rgba;
-  }
+  ImageRequest request{ path, type, metadata, frame, image, {} };
   return this->Send(request);
 }
 

@@ -27,6 +27,7 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
     ->required()
     ->option_text("OUT");
   AddNormalsSettings(*normals, o.Settings);
+  AddTrustOptions(*normals, o.AllowOutsideReferences);
   normals->add_flag("-q,--quiet", o.Quiet, "No warnings");
   return normals;
 }
@@ -68,6 +69,7 @@ int RunNormals(const NormalsOptions& o)
   input.ShadingRule = Shading::Phong; // a lit rule: LoadMesh computes normals for those
   input.Normals = NormalsMode::Compute;
   input.Computed = o.Settings;
+  input.AllowOutsideReferences = o.AllowOutsideReferences;
   const LoadedMesh loaded = LoadMesh(input, nullptr, true); // with face normals: files have room
   if (!loaded.Mesh)
   {

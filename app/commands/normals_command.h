@@ -19,6 +19,7 @@ struct NormalsOptions
   std::string Mesh;
   std::string Output;
   NormalsSettings Settings;
+  bool AllowOutsideReferences = false;
   bool Quiet = false; // no warnings
 };
 

@@ -2,6 +2,7 @@
 
 #include "core/cli_choice.h"
 #include "core/errors.h"
+#include "core/output_path.h"
 #include "headless/batch.h"
 #include "scene/camera.h"
 #include "scene/mesh_arguments.h"
@@ -117,7 +118,8 @@ int CommandLineShots(const RenderOptions& o, std::vector<Shot>& shots)
     }
     for (const Shot& one : expanded)
     {
-      if (const auto [other, added] = outputs.emplace(one.Output, meshes[i]); !added)
+      if (const auto [other, added] = outputs.emplace(OutputIdentity(one.Output), meshes[i]);
+          !added)
       {
         ReportError("--output",
           "\"" + one.Output + "\" is the output of " + other->second + " and " + meshes[i] +
@@ -151,6 +153,10 @@ int RunRender(const RenderOptions& o, const std::string& commandLine)
     if (const std::string error = ReadSceneFile(o.SceneFile, o.Output, shots); !error.empty())
     {
       return ReportError(o.SceneFile, error);
+    }
+    for (Shot& shot : shots)
+    {
+      shot.Scene.AllowOutsideReferences = o.Scene.AllowOutsideReferences;
     }
   }
   else

@@ -34,6 +34,26 @@ CLI::Option* AddParsed(
     help);
 }
 
+// A check that the text is a finite number, as ParseNumber reads it: CLI11's
+// own Range lets NaN through (every comparison with it is false).
+CLI::Validator FiniteNumber()
+{
+  return CLI::Validator(
+    [](const std::string& text)
+    {
+      try
+      {
+        ParseNumber(text);
+        return std::string();
+      }
+      catch (const std::invalid_argument& e)
+      {
+        return std::string(e.what());
+      }
+    },
+    "");
+}
+
 // --material and the coefficients that override it.
 void AddMaterialOptions(CLI::App& command, SceneOptions& o)
 {
@@ -252,6 +272,14 @@ void AddSceneOptions(CLI::App& command, SceneOptions& o)
   AddChoice(command, "--normals", o.Normals,
     "auto: the file's normals if it has them, else computed (default)");
   AddNormalsSettings(command, o.Computed);
+  AddTrustOptions(command, o.AllowOutsideReferences);
+}
+
+void AddTrustOptions(CLI::App& command, bool& allowOutsideReferences)
+{
+  command.add_flag("--allow-outside-references", allowOutsideReferences,
+    "Read the files that the mesh names (MTL libraries, texture maps, glTF buffers and images) "
+    "also where they lie outside the mesh's folder: for meshes you trust (default: refused)");
 }
 
 void AddOrbitOptions(CLI::App& command, SceneOptions& o)
@@ -313,6 +341,7 @@ void AddNormalsSettings(CLI::App& command, NormalsSettings& s)
     .add_option("--feature-angle", s.FeatureAngle,
       "Computed normals: split vertices where faces meet at more than DEG degrees "
       "(default: no splitting)")
+    ->check(FiniteNumber())
     ->check(CLI::Range(0.0, 180.0))
     ->option_text("DEG");
   command.add_flag(

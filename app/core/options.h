@@ -170,6 +170,10 @@ struct SceneOptions
   bool NormalGlyphs = false; // a line along each vertex normal
   NormalsMode Normals = NormalsMode::Auto;
   NormalsSettings Computed; // how normals are computed, when they are
+  // --allow-outside-references: the files a mesh names (MTL, maps, glTF
+  // buffers and images) may lie outside its folder. The user's trust, from
+  // the command line only: a scene file cannot give itself this.
+  bool AllowOutsideReferences = false;
 
   /**
    * The material after the --ka/--kd/--ks/--ns overrides; with --texture,
@@ -224,6 +228,9 @@ void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
 
 /** Declares --orbit and --fps (render's, and scene files'). */
 void AddOrbitOptions(CLI::App& command, SceneOptions& options);
+
+/** Declares --allow-outside-references on command. */
+void AddTrustOptions(CLI::App& command, bool& allowOutsideReferences);
 
 /** Declares --weighting, --feature-angle and --orient on command. */
 void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);

@@ -18,6 +18,18 @@ std::string LowerExtension(const std::string& path)
   return ext;
 }
 
+std::string OutputIdentity(const std::string& path)
+{
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  if (error)
+  {
+    return path;
+  }
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, error);
+  return (error ? absolute.lexically_normal() : resolved).string();
+}
+
 std::string CheckWritableFolder(const std::string& path)
 {
   const std::string folder = std::filesystem::path(path).parent_path().string();

@@ -134,6 +134,7 @@ std::vector<std::string> SceneArguments(const SceneOptions& s)
     add("--view-angle", Number(s.ViewAngle));
   }
   flag("--orthographic", s.Orthographic);
+  flag("--allow-outside-references", s.AllowOutsideReferences);
   if (s.ParallelScale)
   {
     add("--parallel-scale", Number(*s.ParallelScale));

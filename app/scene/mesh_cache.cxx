@@ -1,7 +1,17 @@
 #include "scene/mesh_cache.h"
 
+#include "shadelabCheckedFile.h"
+#include "shadelabMeshReadError.h"
+
 namespace shadelab
 {
+namespace
+{
+// The largest image a texture can be (MaxImagePixels, 8192 x 8192) as 16-bit
+// RGBA without compression: a larger file is no texture shadelab would draw.
+constexpr std::uint64_t MaxTextureFileBytes = 512ULL << 20;
+}
+
 const LoadedMesh& MeshCache::Get(const SceneOptions& o)
 {
   const bool lit = o.ShadingRule == Shading::Gouraud || o.ShadingRule == Shading::Phong;
@@ -24,7 +34,20 @@ const LoadedTexture& MeshCache::GetTexture(
   {
     LoadedTexture loaded;
     auto image = std::make_shared<TextureImage>();
-    loaded.Error = this->Decoder(path, bytes, *image);
+    try
+    {
+      // An image file is checked as the mesh files are before the decoder
+      // opens it: /dev/zero or a FIFO would hold the decoder forever.
+      if (bytes.empty())
+      {
+        OpenChecked(path, MaxTextureFileBytes);
+      }
+      loaded.Error = this->Decoder(path, bytes, *image);
+    }
+    catch (const MeshReadError& e)
+    {
+      loaded.Error = e.what();
+    }
     if (loaded.Error.empty())
     {
       loaded.Image = image;

@@ -13,8 +13,47 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
 namespace shadelab
 {
+namespace
+{
+// A mesh whose picture would be blank, said instead of drawn: points so far
+// apart that their extent overflows (vertices at 1e308, a glTF node scaled
+// by 1e308), or all on one line or at one point (an all-zero node matrix),
+// where no triangle has any area.
+std::string Undrawable(vtkPolyData* mesh)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  double diagonal = 0;
+  int flat = 0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double extent = bounds[2 * axis + 1] - bounds[2 * axis];
+    diagonal += extent * extent;
+    flat += extent == 0;
+  }
+  if (!std::isfinite(diagonal))
+  {
+    char span[64];
+    std::snprintf(span, sizeof span, "%g to %g", std::min({ bounds[0], bounds[2], bounds[4] }),
+      std::max({ bounds[1], bounds[3], bounds[5] }));
+    return std::string("its points span more than a double can measure (") + span +
+      "): nothing can be drawn";
+  }
+  if (flat >= 2)
+  {
+    return "all its points lie on one line: no triangle has an area to draw";
+  }
+  return {};
+}
+}
+
 ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals)
 {
   auto normals = vtkSmartPointer<vtkShadelabMeshNormals>::New();
@@ -81,6 +120,7 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   // computed on the file's vertices (FileVertex), the split points would
   // only get their vertex's normal again.
   reader->SetReadNormals(options.Normals != NormalsMode::Compute);
+  reader->SetAllowOutsideReferences(options.AllowOutsideReferences);
   {
     const MessageScope messages;
     const bool read = reader->GetExecutive()->Update();
@@ -94,6 +134,11 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   lap("read");
   vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
   result.NormalsFromFile = mesh->GetPointData()->GetNormals() != nullptr;
+  if (const std::string problem = Undrawable(mesh); !problem.empty())
+  {
+    result.Error = problem;
+    return result;
+  }
 
   if (options.Normals == NormalsMode::File && !result.NormalsFromFile)
   {

@@ -1,5 +1,6 @@
 #include "shadelabGLTFDocument.h"
 
+#include "shadelabCheckedFile.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
@@ -116,7 +117,7 @@ Json ParseJson(std::string_view text)
 {
   try
   {
-    Json root = Json::parse(text.begin(), text.end());
+    Json root = ParseWithin<Json>(text);
     if (!root.is_object())
     {
       Fail("the glTF JSON is not an object");
@@ -143,7 +144,7 @@ void CheckAsset(const Json& root)
   for (const Json& extension : List(root, "extensionsRequired"))
   {
     // dump(): the name in quotes, escaped onto one line.
-    Fail("requires the extension " + extension.dump() + ", which shadelab does not read");
+    Fail("requires the extension " + JsonExcerpt(extension) + ", which shadelab does not read");
   }
 }
 
@@ -185,11 +186,26 @@ int HexDigit(char c)
                               : -1;
 }
 
-// A relative URI as the path of a file beside the document, which must be a
-// plain file if it exists.
-std::string FilePath(
-  const std::string& documentName, std::string_view uri, const std::string& where)
+// What a file that the document refers to says when it cannot be read:
+// "buffer 0: 'mesh.bin': cannot open: No such file or directory".
+template <typename Action>
+auto Referred(const std::string& where, std::string_view uri, Action action)
 {
+  try
+  {
+    return action();
+  }
+  catch (const MeshReadError& error)
+  {
+    throw MeshReadError(where + ": " + Quote(uri) + ": " + error.what(), error.GetCode());
+  }
+}
+
+// A relative URI as the path of a file in the document's folder or below.
+std::string FilePath(const std::string& documentName, bool allowOutside, std::string_view uri,
+  const std::string& where)
+{
+  const std::string folder = std::filesystem::path(documentName).parent_path().string();
   const auto colon = uri.find(':');
   if (uri.empty() || (colon != std::string_view::npos && uri.find('/') > colon) || uri[0] == '/')
   {
@@ -212,36 +228,16 @@ std::string FilePath(
     decoded += static_cast<char>(16 * high + low);
     i += 2;
   }
-  // A plain file: a relative uri can name a device or a pipe
-  // ("../../dev/zero"), which would be read forever or block the opening.
-  const std::filesystem::path path = std::filesystem::path(documentName).parent_path() / decoded;
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-  {
-    Fail(where + ": " + Quote(uri) + " is not a regular file");
-  }
-  return path.string();
-}
-
-// What a file that the document refers to says when it cannot be read:
-// "buffer 0: 'mesh.bin': cannot open: No such file or directory".
-template <typename Action>
-auto Referred(const std::string& where, std::string_view uri, Action action)
-{
-  try
-  {
-    return action();
-  }
-  catch (const MeshReadError& error)
-  {
-    throw MeshReadError(where + ": " + Quote(uri) + ": " + error.what(), error.GetCode());
-  }
+  // Inside the document's folder unless trusted; a plain file, checked
+  // where it is read (a relative uri can name a device or a pipe).
+  return Referred(
+    where, uri, [&] { return ResolveReference(documentName, folder, decoded, allowOutside); });
 }
 
 // Each buffer as a view of the GLB's BIN chunk (no copy) or of bytes that
 // `document` keeps: a file's or a data URI's.
-void LoadBuffers(Document& document, const std::string& fileName, const GlbChunks* glb)
+void LoadBuffers(
+  Document& document, const std::string& fileName, bool allowOutside, const GlbChunks* glb)
 {
   const Json& list = List(document.Root, "buffers");
   for (std::size_t b = 0; b < list.size(); ++b)
@@ -273,7 +269,7 @@ void LoadBuffers(Document& document, const std::string& fileName, const GlbChunk
       }
       else
       {
-        const std::string path = FilePath(fileName, uri, where);
+        const std::string path = FilePath(fileName, allowOutside, uri, where);
         document.Storage.push_back(std::make_unique<std::string>(Referred(
           where, uri, [&] { return vtkShadelabFileReader::ReadFileBytes(path.c_str()); })));
         source = Quote(uri);
@@ -291,7 +287,7 @@ void LoadBuffers(Document& document, const std::string& fileName, const GlbChunk
 
 // Every image, as a file's path or its bytes: a document whose image is
 // missing is as broken as one whose buffer is, and is refused now.
-void LoadImages(Document& document, const std::string& fileName)
+void LoadImages(Document& document, const std::string& fileName, bool allowOutside)
 {
   const Json& images = List(document.Root, "images");
   for (std::size_t i = 0; i < images.size(); ++i)
@@ -316,7 +312,7 @@ void LoadImages(Document& document, const std::string& fileName)
     }
     else
     {
-      const std::string path = FilePath(fileName, uri, where);
+      const std::string path = FilePath(fileName, allowOutside, uri, where);
       Referred(where, uri, [&] { vtkShadelabFileReader::CheckReadable(path.c_str()); });
       document.Images.push_back({ path, {} });
     }
@@ -343,7 +339,7 @@ std::string_view ViewBytes(
   return buffer.substr(offset, length);
 }
 
-Document Load(const std::string& fileName, std::string fileBytes)
+Document Load(const std::string& fileName, std::string fileBytes, bool allowOutside)
 {
   Document document;
   document.Storage.push_back(std::make_unique<std::string>(std::move(fileBytes)));
@@ -356,8 +352,8 @@ Document Load(const std::string& fileName, std::string fileBytes)
   }
   document.Root = ParseJson(isGlb ? glb.Json : bytes);
   CheckAsset(document.Root);
-  LoadBuffers(document, fileName, isGlb ? &glb : nullptr);
-  LoadImages(document, fileName);
+  LoadBuffers(document, fileName, allowOutside, isGlb ? &glb : nullptr);
+  LoadImages(document, fileName, allowOutside);
   return document;
 }
 }

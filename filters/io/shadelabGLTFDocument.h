@@ -45,8 +45,12 @@ struct Document
   std::vector<std::unique_ptr<std::string>> Storage;
 };
 
-/** The document in `fileBytes`, read from `fileName` (whose folder holds its files). */
-Document Load(const std::string& fileName, std::string fileBytes);
+/**
+ * The document in `fileBytes`, read from `fileName`, whose folder holds its
+ * files: a buffer or image uri that leads elsewhere is refused unless
+ * allowOutside (shadelabCheckedFile.h).
+ */
+Document Load(const std::string& fileName, std::string fileBytes, bool allowOutside);
 
 /**
  * The bytes of bufferView `index`, which `referrer` uses; throws unless it

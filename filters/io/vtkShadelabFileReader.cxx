@@ -1,5 +1,6 @@
 #include "vtkShadelabFileReader.h"
 
+#include "shadelabCheckedFile.h"
 #include "shadelabMeshReadError.h"
 
 #include <vtkErrorCode.h>
@@ -9,53 +10,13 @@
 #include <vtkPolyData.h>
 
 #include <sys/resource.h>
-#include <sys/stat.h>
 
-#include <algorithm>
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <fstream>
-#include <memory>
 #include <new>
 
 namespace
 {
-struct FileCloser
-{
-  void operator()(std::FILE* file) const { std::fclose(file); }
-};
-using FilePointer = std::unique_ptr<std::FILE, FileCloser>;
-
-[[noreturn]] void FailErrno(const char* what, int error)
-{
-  throw shadelab::MeshReadError(std::string(what) + ": " + std::strerror(error),
-    error == ENOENT ? vtkErrorCode::FileNotFoundError : vtkErrorCode::CannotOpenFileError);
-}
-
-// Opens for reading and returns the size, or 0 where the file (a pipe)
-// does not know it. fopen() succeeds on a directory; fstat() catches that.
-FilePointer Open(const char* fileName, std::size_t& size)
-{
-  FilePointer file(std::fopen(fileName, "rb"));
-  if (!file)
-  {
-    FailErrno("cannot open", errno);
-  }
-  struct stat info;
-  if (fstat(fileno(file.get()), &info) != 0)
-  {
-    FailErrno("cannot open", errno);
-  }
-  if (S_ISDIR(info.st_mode))
-  {
-    FailErrno("cannot open", EISDIR);
-  }
-  size = S_ISREG(info.st_mode) ? static_cast<std::size_t>(info.st_size) : 0;
-  return file;
-}
-
 // Reading needs the file's bytes and, for the mesh made from them, about as
 // many again (points and faces in double and 64-bit ids). A file bigger than
 // half of what the process can get fails here with a message, rather than
@@ -112,34 +73,14 @@ std::uint64_t vtkShadelabFileReader::AvailableMemory()
 
 std::string vtkShadelabFileReader::ReadFileBytes(const char* fileName)
 {
-  std::size_t size = 0;
-  FilePointer file = Open(fileName, size);
-  CheckMemoryFor(size);
-  std::string bytes(size, '\0');
-  std::size_t used = std::fread(bytes.data(), 1, bytes.size(), file.get());
-  // A file without a size (or one that grew) is read on to its end. A read
-  // that fills the buffer exactly has not met the end yet, so one byte tells
-  // whether more come: growing the buffer on spec would leave a file of the
-  // size it said in twice its memory (the zeroed tail stays resident).
-  int next = EOF;
-  while (used == bytes.size() && (next = std::fgetc(file.get())) != EOF)
-  {
-    bytes.resize(std::max<std::size_t>(2 * bytes.size(), 1 << 16));
-    bytes[used++] = static_cast<char>(next);
-    used += std::fread(bytes.data() + used, 1, bytes.size() - used, file.get());
-  }
-  if (std::ferror(file.get()))
-  {
-    FailErrno("cannot read", errno);
-  }
-  bytes.resize(used);
-  return bytes;
+  shadelab::CheckedFile file = shadelab::OpenChecked(fileName);
+  CheckMemoryFor(file.GetSize());
+  return file.ReadAll();
 }
 
 void vtkShadelabFileReader::CheckReadable(const char* fileName)
 {
-  std::size_t size;
-  Open(fileName, size);
+  shadelab::OpenChecked(fileName);
 }
 
 int vtkShadelabFileReader::RequestData(
@@ -173,6 +114,12 @@ int vtkShadelabFileReader::RequestData(
     this->SetErrorCode(vtkErrorCode::UnknownError);
     vtkErrorMacro(<< "out of memory");
   }
+  catch (const std::exception& error)
+  {
+    // A library's exception (the JSON parser's, say): still one error.
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+    vtkErrorMacro(<< error.what());
+  }
   return 0;
 }
 
@@ -181,4 +128,6 @@ void vtkShadelabFileReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "ReadNormals: " << (this->ReadNormals ? "On" : "Off") << "\n";
+  os << indent << "AllowOutsideReferences: " << (this->AllowOutsideReferences ? "On" : "Off")
+     << "\n";
 }

@@ -41,9 +41,20 @@ public:
   vtkBooleanMacro(ReadNormals, bool);
 
   /**
-   * The whole file in memory; throws MeshReadError "cannot open: <strerror>"
-   * and the like. Also for the files that a mesh file refers to (glTF's
-   * buffers).
+   * Whether the files that the mesh file names (an MTL library, its maps, a
+   * glTF buffer or image) may lie outside the mesh file's folder (default
+   * off: one that resolves elsewhere, through "../", an absolute path or a
+   * symbolic link, is refused unread). On for files you trust.
+   */
+  vtkSetMacro(AllowOutsideReferences, bool);
+  vtkGetMacro(AllowOutsideReferences, bool);
+  vtkBooleanMacro(AllowOutsideReferences, bool);
+
+  /**
+   * The whole file in memory, once shadelab::OpenChecked found it a regular
+   * file that the memory can take; throws MeshReadError "cannot open:
+   * <strerror>", "is not a regular file but a FIFO" and the like. Also for
+   * the files that a mesh file refers to (glTF's buffers).
    */
   static std::string ReadFileBytes(const char* fileName);
 
@@ -68,6 +79,7 @@ protected:
 
   char* FileName = nullptr;
   bool ReadNormals = true;
+  bool AllowOutsideReferences = false;
 
 private:
   vtkShadelabFileReader(const vtkShadelabFileReader&) = delete;

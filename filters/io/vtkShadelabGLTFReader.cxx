@@ -354,7 +354,7 @@ private:
 
 void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
-  const Document document = Load(fileName, ReadFileBytes(fileName));
+  const Document document = Load(fileName, ReadFileBytes(fileName), this->AllowOutsideReferences);
   const std::vector<MeshInstance> instances = SceneMeshes(document.Root);
   CheckMemoryFor(document, instances);
   MeshBuilder builder(document);

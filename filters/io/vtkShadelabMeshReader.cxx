@@ -89,11 +89,12 @@ private:
 };
 
 template <class Reader>
-void ReadWith(const char* fileName, bool readNormals, vtkPolyData* triangles)
+void ReadWith(const char* fileName, vtkShadelabFileReader* settings, vtkPolyData* triangles)
 {
   vtkNew<Reader> reader;
   reader->SetFileName(fileName);
-  reader->SetReadNormals(readNormals);
+  reader->SetReadNormals(settings->GetReadNormals());
+  reader->SetAllowOutsideReferences(settings->GetAllowOutsideReferences());
   NestedReader(reader).Update();
   triangles->ShallowCopy(reader->GetOutput());
 }
@@ -109,15 +110,15 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   const std::string extension = LowerExtension(fileName);
   if (extension == ".obj")
   {
-    ReadWith<vtkShadelabOBJReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabOBJReader>(fileName, this, triangles);
   }
   else if (extension == ".ply")
   {
-    ReadWith<vtkShadelabPLYReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabPLYReader>(fileName, this, triangles);
   }
   else if (extension == ".stl")
   {
-    ReadWith<vtkShadelabSTLReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabSTLReader>(fileName, this, triangles);
   }
   else if (extension == ".vtp")
   {
@@ -129,15 +130,15 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   }
   else if (extension == ".gltf" || extension == ".glb")
   {
-    ReadWith<vtkShadelabGLTFReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabGLTFReader>(fileName, this, triangles);
   }
   else if (extension == ".off")
   {
-    ReadWith<vtkShadelabOFFReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabOFFReader>(fileName, this, triangles);
   }
   else if (extension == ".vtk")
   {
-    ReadWith<vtkShadelabLegacyVTKReader>(fileName, this->ReadNormals, triangles);
+    ReadWith<vtkShadelabLegacyVTKReader>(fileName, this, triangles);
   }
   else
   {

@@ -1,5 +1,6 @@
 #include "vtkShadelabOBJReader.h"
 
+#include "shadelabCheckedFile.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabMtlParser.h"
 #include "shadelabObjVertices.h"
@@ -322,10 +323,12 @@ std::vector<shadelab::MtlMaterial> vtkShadelabOBJReader::ReadLibraries(
   const std::filesystem::path folder = std::filesystem::path(fileName).parent_path();
   for (const std::string& library : libraries)
   {
-    const std::filesystem::path path = folder / library;
+    std::filesystem::path path;
     std::string text;
     try
     {
+      path = shadelab::ResolveReference(
+        fileName, folder.string(), library, this->AllowOutsideReferences);
       text = ReadFileBytes(path.c_str());
     }
     catch (const shadelab::MeshReadError& e)
@@ -351,12 +354,23 @@ std::vector<shadelab::MtlMaterial> vtkShadelabOBJReader::ReadLibraries(
     }
     for (shadelab::MtlMaterial& m : parsed.Materials)
     {
-      // Map files are named relative to the MTL's folder.
+      // Map files are named relative to the MTL's folder, and lie in the
+      // mesh's, like the library.
       for (shadelab::MtlMap* map : { &m.KdMap, &m.KaMap })
       {
         if (!map->File.empty())
         {
-          map->File = (path.parent_path() / map->File).lexically_normal().string();
+          try
+          {
+            map->File = shadelab::ResolveReference(
+              fileName, path.parent_path().string(), map->File, this->AllowOutsideReferences);
+          }
+          catch (const shadelab::MeshReadError& e)
+          {
+            throw shadelab::MeshReadError("material library " + shadelab::Quote(library) +
+                ": map " + shadelab::Quote(map->File) + " " + e.what(),
+              e.GetCode());
+          }
         }
       }
       materials.push_back(std::move(m));

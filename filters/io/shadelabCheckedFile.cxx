@@ -1,0 +1,150 @@
+#include "shadelabCheckedFile.h"
+
+#include "shadelabMeshReadError.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace shadelab
+{
+namespace
+{
+[[noreturn]] void FailErrno(const char* what, int error)
+{
+  throw MeshReadError(std::string(what) + ": " + std::strerror(error),
+    error == ENOENT ? vtkErrorCode::FileNotFoundError : vtkErrorCode::CannotOpenFileError);
+}
+
+// Inside the folder or below it: no step of the relative path climbs out.
+bool Inside(const std::filesystem::path& path, const std::filesystem::path& folder)
+{
+  const std::filesystem::path relative = path.lexically_relative(folder);
+  return !relative.empty() && *relative.begin() != "..";
+}
+}
+
+CheckedFile::CheckedFile(CheckedFile&& other) noexcept
+  : Descriptor(other.Descriptor)
+  , Size(other.Size)
+{
+  other.Descriptor = -1;
+}
+
+CheckedFile::~CheckedFile()
+{
+  if (this->Descriptor >= 0)
+  {
+    close(this->Descriptor);
+  }
+}
+
+std::string CheckedFile::ReadAll()
+{
+  std::string bytes(this->Size, '\0');
+  std::size_t used = 0;
+  while (used < bytes.size())
+  {
+    const ssize_t n = read(this->Descriptor, bytes.data() + used, bytes.size() - used);
+    if (n < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (n < 0)
+    {
+      FailErrno("cannot read", errno);
+    }
+    if (n == 0)
+    {
+      break; // it shrank since it was opened: what is there
+    }
+    used += static_cast<std::size_t>(n);
+  }
+  // Bytes appended since the opening are not read: the size was checked.
+  bytes.resize(used);
+  return bytes;
+}
+
+const char* FileKind(unsigned int mode)
+{
+  switch (mode & S_IFMT)
+  {
+    case S_IFDIR:
+      return "a folder";
+    case S_IFIFO:
+      return "a FIFO";
+    case S_IFSOCK:
+      return "a socket";
+    case S_IFCHR:
+      return "a character device";
+    case S_IFBLK:
+      return "a block device";
+    case S_IFREG:
+      return "a regular file";
+    default:
+      return "not a regular file";
+  }
+}
+
+CheckedFile OpenChecked(const std::string& path, std::uint64_t maxBytes)
+{
+  // O_NONBLOCK: opening a FIFO for reading returns at once instead of
+  // waiting for a writer; it changes nothing for a regular file's reads.
+  const int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0)
+  {
+    FailErrno("cannot open", errno);
+  }
+  CheckedFile file(fd, 0);
+  struct stat info;
+  if (fstat(fd, &info) != 0)
+  {
+    FailErrno("cannot open", errno);
+  }
+  if (S_ISDIR(info.st_mode))
+  {
+    FailErrno("cannot open", EISDIR); // as open() for writing would say
+  }
+  if (!S_ISREG(info.st_mode))
+  {
+    throw MeshReadError(std::string("is not a regular file but ") + FileKind(info.st_mode),
+      vtkErrorCode::CannotOpenFileError);
+  }
+  const auto size = static_cast<std::uint64_t>(info.st_size);
+  if (maxBytes > 0 && size > maxBytes)
+  {
+    throw MeshReadError("is " + std::to_string(size >> 20) + " MiB, more than the " +
+        std::to_string(maxBytes >> 20) + " MiB allowed",
+      vtkErrorCode::UnknownError);
+  }
+  file.Size = size;
+  return file;
+}
+
+std::string ResolveReference(const std::string& meshFile, const std::string& base,
+  const std::string& reference, bool allowOutside)
+{
+  const std::filesystem::path path = (std::filesystem::path(base) / reference).lexically_normal();
+  if (allowOutside)
+  {
+    return path.string();
+  }
+  // Both with every symbolic link followed (as far as the path exists), so
+  // that a link inside the folder to elsewhere is outside too.
+  std::error_code error;
+  std::filesystem::path folder = std::filesystem::path(meshFile).parent_path();
+  folder = std::filesystem::weakly_canonical(folder.empty() ? "." : folder, error);
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(path, error);
+  if (error || folder.empty() || !Inside(resolved, folder))
+  {
+    throw MeshReadError("lies outside the mesh's folder, so it is not read "
+                        "(--allow-outside-references reads it)",
+      vtkErrorCode::CannotOpenFileError);
+  }
+  return path.string();
+}
+}

@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene_cache.h"
+#include "shadelabJsonProblem.h"
 
 #include <vtkRenderer.h>
 
@@ -104,7 +105,7 @@ int RunProbe(const ProbeOptions& o)
     probe.Rendered = PixelRgb(picture.Picture, probe.At.X, probe.At.Y);
     if (o.Json)
     {
-      std::cout << ProbeJson(probe).dump() << "\n";
+      std::cout << JsonText(ProbeJson(probe)) << "\n";
     }
     else
     {

@@ -5,6 +5,7 @@
 #include "desktop/inspector.h"
 
 #include "probe/probe_json.h"
+#include "shadelabJsonProblem.h"
 
 #include <vtkArrowSource.h>
 #include <vtkPolyDataMapper.h>
@@ -147,7 +148,7 @@ bool Inspector::Reprobe()
     }
     probe.RenderedFrom = "the window's 8-bit pixel, read without the arrows";
     this->Probed = probe;
-    std::cout << "shadelab: probe: " << ProbeJson(probe).dump() << std::endl;
+    std::cout << "shadelab: probe: " << JsonText(ProbeJson(probe)) << std::endl;
   }
   this->DrawArrows();
   if (this->ProbeChanged)

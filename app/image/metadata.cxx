@@ -3,6 +3,7 @@
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "scene/scene_parts.h"
+#include "shadelabJsonProblem.h"
 #include "shadelabVersion.h"
 
 #include <vtkCamera.h>
@@ -182,6 +183,6 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   // OpenImageIO's EXR writer stamps the current time unless DateTime is
   // set; an empty one keeps the file a function of the scene alone.
   return { { "Software", std::string("shadelab ") + ShadelabVersion },
-    { "ImageDescription", j.dump() }, { "DateTime", "" } };
+    { "ImageDescription", JsonText(j) }, { "DateTime", "" } };
 }
 }

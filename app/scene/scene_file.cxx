@@ -1,14 +1,15 @@
 #include "scene/scene_file.h"
 
+#include "core/output_path.h"
 #include "scene/scene_file_settings.h"
 #include "scene/scene_file_values.h"
+#include "shadelabCheckedFile.h"
 #include "shadelabJsonProblem.h"
+#include "shadelabMeshReadError.h"
 #include "shadelabSceneSchema.h" // generated from data/scene.schema.json
 
-#include <cerrno>
-#include <cstring>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 namespace shadelab
@@ -22,17 +23,24 @@ const std::vector<std::string> ShotKeys{ "name", "mesh", "output", "shading", "r
   "background", "normals", "weighting", "feature_angle", "orient", "pixel_type", "ssaa", "up",
   "edges", "edge_color", "edge_width", "normal_glyphs", "orbit", "fps" };
 
+// A scene of a hundred thousand shots is a few MB; more is not a scene.
+constexpr std::uint64_t MaxSceneFileBytes = 64ULL << 20;
+
 // The file's JSON (comments allowed): "" or the problem.
 std::string ParseSceneJson(const std::string& path, json& scene)
 {
-  std::ifstream in(path);
-  if (!in)
+  std::string text;
+  try
   {
-    return std::string("cannot read: ") + std::strerror(errno);
+    text = OpenChecked(path, MaxSceneFileBytes).ReadAll();
+  }
+  catch (const MeshReadError& e)
+  {
+    return e.what();
   }
   try
   {
-    scene = json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    scene = ParseWithin<json>(text, /*comments=*/true);
   }
   catch (const json::exception& e)
   {
@@ -130,7 +138,7 @@ std::vector<Shot> ReadShots(
     for (const Shot& expanded :
       ExpandShotOutput(merged, outputTemplate, where, i, list.size(), shot))
     {
-      const auto [other, added] = outputs.emplace(expanded.Output, prefix);
+      const auto [other, added] = outputs.emplace(OutputIdentity(expanded.Output), prefix);
       if (!added)
       {
         // The shot's resolved output, wherever its template came from.

@@ -1,5 +1,7 @@
 #include "scene/scene_file_values.h"
 
+#include "shadelabJsonProblem.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
@@ -20,7 +22,7 @@ std::string Join(const std::vector<std::string>& words)
 
 std::string Quoted(const json& value)
 {
-  return value.dump();
+  return JsonExcerpt(value);
 }
 
 void ExpectObject(const json& value, const std::string& path, const std::vector<std::string>& known)

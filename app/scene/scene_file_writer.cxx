@@ -1,6 +1,7 @@
 // A scene file written from SceneOptions (scene_file.h): the inverse of
 // reading one, with the same keys, for the inspector's Save scene.
 #include "scene/scene_file.h"
+#include "shadelabJsonProblem.h"
 
 #include <nlohmann/json.hpp>
 
@@ -146,6 +147,6 @@ std::string WriteSceneText(const SceneOptions& s, const std::string& output)
   {
     shot["ssaa"] = s.Supersampling;
   }
-  return shot.dump(2) + "\n";
+  return JsonText(shot, 2) + "\n";
 }
 }

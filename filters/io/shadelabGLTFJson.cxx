@@ -1,5 +1,6 @@
 #include "shadelabGLTFJson.h"
 
+#include "shadelabJsonProblem.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
 
@@ -23,7 +24,7 @@ std::uint64_t AsUnsigned(const Json& value, const std::string& place)
 {
   if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
   {
-    Fail(place + " is " + Quote(value.dump()) + ", not an integer >= 0");
+    Fail(place + " is " + Quote(JsonExcerpt(value)) + ", not an integer >= 0");
   }
   return value.get<std::uint64_t>();
 }
@@ -89,7 +90,7 @@ double Number(const Json& object, const char* key, const std::string& where, dou
   const Json& value = object[key];
   if (!value.is_number() || !std::isfinite(value.get<double>()))
   {
-    Fail(Place(where, key) + " is " + Quote(value.dump()) + ", not a number");
+    Fail(Place(where, key) + " is " + Quote(JsonExcerpt(value)) + ", not a number");
   }
   return value.get<double>();
 }
@@ -111,7 +112,7 @@ std::vector<double> Numbers(const Json& object, const char* key, const std::stri
   {
     if (!item.is_number() || !std::isfinite(item.get<double>()))
     {
-      Fail(Place(where, key) + " holds " + Quote(item.dump()) + ", not a number");
+      Fail(Place(where, key) + " holds " + Quote(JsonExcerpt(item)) + ", not a number");
     }
     numbers.push_back(item.get<double>());
   }
@@ -127,7 +128,7 @@ std::string String(const Json& object, const char* key, const std::string& where
   const Json& value = object[key];
   if (!value.is_string())
   {
-    Fail(Place(where, key) + " is " + Quote(value.dump()) + ", not a string");
+    Fail(Place(where, key) + " is " + Quote(JsonExcerpt(value)) + ", not a string");
   }
   return value.get<std::string>();
 }

@@ -7,7 +7,7 @@
  * exactly one number ("1.5x" is malformed, not 1.5). Blank lines are skipped
  * but still counted, so that messages name the line a user's editor shows.
  * With a comment character (OFF's '#'), the text from it to the line's end
- * is blank too.
+ * is blank too. A UTF-8 byte order mark at the start is skipped.
  */
 #ifndef shadelabTextScanner_h
 #define shadelabTextScanner_h
@@ -36,6 +36,12 @@ public:
     : Text(text)
     , Comment(comment)
   {
+    // A UTF-8 byte order mark (Windows editors write one) is no token: the
+    // first line would otherwise start with an unknown keyword.
+    if (this->Text.substr(0, 3) == "\xEF\xBB\xBF")
+    {
+      this->Text.remove_prefix(3);
+    }
   }
 
   /** Moves to the next line that is not blank; false at the end of the text. */

@@ -287,7 +287,7 @@ TEST(Batch, CommandLineMistakes)
     { { "render", "-o", (dir / "x.png").string() }, 2, "MESH is required unless --scene" },
     { { "render", "--scene", (dir / "none.json").string() }, 1,
       "shadelab: error: " + (dir / "none.json").string() +
-        ": cannot read: No such file or directory" },
+        ": cannot open: No such file or directory" },
   };
   for (const Case& c : cases)
   {

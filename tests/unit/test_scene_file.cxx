@@ -172,7 +172,7 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     EXPECT_TRUE(this->Shots.empty());
   }
   EXPECT_EQ(ReadSceneFile((this->Folder / "none.json").string(), "", this->Shots),
-    "cannot read: No such file or directory");
+    "cannot open: No such file or directory");
 }
 
 TEST(OutputTemplate, FillsEveryFieldAndSaysWhatIsWrong)

@@ -8,6 +8,7 @@
 #include "commands/render_command.h"
 #include "commands/view_command.h"
 #include "core/errors.h"
+#include "core/interruption.h"
 #include "image/metadata.h"
 #include "shadelabVersion.h"
 #include "vtkShadelabOutputWindow.h"
@@ -16,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <functional>
 #include <iostream>
@@ -61,6 +63,19 @@ std::optional<int> Parse(CLI::App& program, int argc, char** argv)
   }
   return std::nullopt;
 }
+
+// The command's first positional argument (its mesh), or the command's name.
+std::string FirstInput(const CLI::App& command)
+{
+  for (const CLI::Option* option : command.get_options())
+  {
+    if (option->get_positional() && !option->results().empty())
+    {
+      return option->results().front();
+    }
+  }
+  return command.get_name();
+}
 }
 
 int main(int argc, char** argv)
@@ -74,6 +89,7 @@ int main(int argc, char** argv)
   // fails (EPIPE, EFBIG) and the error is reported instead.
   std::signal(SIGPIPE, SIG_IGN);
   std::signal(SIGXFSZ, SIG_IGN);
+  shadelab::CatchInterruptions();
 
   CLI::App program("shadelab: triangle meshes under the classic illumination model "
                    "(ambient + diffuse + specular) with flat, Gouraud and Phong shading.",
@@ -136,7 +152,18 @@ int main(int argc, char** argv)
       {
         shadelab::SilenceWarnings();
       }
-      return commands[i].Run();
+      try
+      {
+        return commands[i].Run();
+      }
+      catch (const std::exception& e)
+      {
+        // Whatever a library throws that no command caught is still one
+        // line, naming the input as far as the command line tells it.
+        std::string what = e.what();
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        return shadelab::ReportError(FirstInput(*added[i]), what);
+      }
     }
   }
   return shadelab::ExitUsage;

@@ -9,8 +9,10 @@
 
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <vector>
 
 namespace shadelab
@@ -65,6 +67,58 @@ void RemoveStaleTemporaries(const std::string& path)
   }
   closedir(folder);
 }
+
+// The temporaries this process is writing, for RemoveTemporariesNow: fixed
+// slots of plain bytes, so that a signal handler can read them.
+struct TemporarySlot
+{
+  std::atomic<bool> Used{ false };
+  std::atomic<bool> Ready{ false };
+  char Path[PATH_MAX] = {};
+};
+TemporarySlot Temporaries[64];
+
+// The slot that now names temporary, or -1 when all are taken (it is then
+// only left for the next run's stale-temporary removal).
+int RegisterTemporary(const std::string& temporary)
+{
+  if (temporary.size() >= PATH_MAX)
+  {
+    return -1;
+  }
+  for (int i = 0; i < static_cast<int>(std::size(Temporaries)); ++i)
+  {
+    bool expected = false;
+    if (Temporaries[i].Used.compare_exchange_strong(expected, true))
+    {
+      std::memcpy(Temporaries[i].Path, temporary.c_str(), temporary.size() + 1);
+      Temporaries[i].Ready = true;
+      return i;
+    }
+  }
+  return -1;
+}
+
+void ReleaseTemporary(int& slot)
+{
+  if (slot >= 0)
+  {
+    Temporaries[slot].Ready = false;
+    Temporaries[slot].Used = false;
+    slot = -1;
+  }
+}
+}
+
+void RemoveTemporariesNow()
+{
+  for (TemporarySlot& slot : Temporaries)
+  {
+    if (slot.Ready)
+    {
+      unlink(slot.Path);
+    }
+  }
 }
 
 OutputFile::OutputFile(std::string path)
@@ -96,6 +150,7 @@ OutputFile::OutputFile(std::string path)
     if (flock(this->Descriptor, LOCK_EX) != 0 ||
       (fstat(this->Descriptor, &status) == 0 && status.st_nlink > 0))
     {
+      this->Slot = RegisterTemporary(this->Temporary);
       return; // locked and still there (or no locks here: written unlocked)
     }
     close(this->Descriptor);
@@ -115,6 +170,7 @@ OutputFile::~OutputFile()
   {
     unlink(this->Temporary.c_str());
   }
+  ReleaseTemporary(this->Slot);
 }
 
 bool OutputFile::Fail(const char* what, int error)
@@ -178,6 +234,7 @@ std::string OutputFile::Commit()
     this->Fail(nullptr, errno);
     return this->Failure;
   }
+  ReleaseTemporary(this->Slot);
   this->Temporary.clear();
   // The rename is an entry of the folder: synced, it survives a power loss.
   const int folder = open(FolderOf(this->Path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

@@ -45,9 +45,18 @@ private:
 
   std::string Path;
   std::string Temporary;
+  int Slot = -1; // in the table that RemoveTemporariesNow reads
   int Descriptor = -1;
   std::string Failure;
 };
+
+/**
+ * Removes every temporary that an OutputFile of this process is writing:
+ * for a process about to end at once (a signal's hard stop), so that no
+ * partial file stays behind. Async-signal-safe; the OutputFiles are not
+ * used again.
+ */
+void RemoveTemporariesNow();
 
 /** Writes bytes to path through an OutputFile: "" or "cannot write: REASON". */
 std::string WriteFile(const std::string& path, std::string_view bytes);

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/exit_without_teardown.h"
 #include "core/heap_policy.h"
+#include "core/interruption.h"
 #include "core/phase_timer.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
@@ -20,10 +21,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
-#include <signal.h>
-
 #include <algorithm>
-#include <csignal>
 #include <deque>
 #include <filesystem>
 #include <iostream>
@@ -36,31 +34,6 @@ namespace shadelab
 {
 namespace
 {
-volatile std::sig_atomic_t Interrupted = 0; // the signal that asked us to stop
-
-// SIGINT and SIGTERM set Interrupted while it lives; the old handlers come back after.
-class InterruptCatcher
-{
-public:
-  InterruptCatcher()
-  {
-    Interrupted = 0;
-    struct sigaction action = {};
-    action.sa_handler = [](int signal) { Interrupted = signal; };
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &this->OldInt);
-    sigaction(SIGTERM, &action, &this->OldTerm);
-  }
-  ~InterruptCatcher()
-  {
-    sigaction(SIGINT, &this->OldInt, nullptr);
-    sigaction(SIGTERM, &this->OldTerm, nullptr);
-  }
-
-private:
-  struct sigaction OldInt = {}, OldTerm = {};
-};
-
 // How many pictures may be with the writer, submitted and not collected:
 // enough that encoding (one thread a picture in the writer) keeps pace with
 // rendering on two cores; each holds its pixels, so few (BENCHMARKS.md,
@@ -128,7 +101,7 @@ public:
     // An animation's frames, each handed to the writer as the next renders.
     for (FramePlace frame = FramesOf(shot); frame.Index < frame.Count; ++frame.Index)
     {
-      if (frame.Index > 0 && Interrupted)
+      if (frame.Index > 0 && Interruption())
       {
         this->FailFrame(shot, frame, shot.Output, "interrupted before its last frame: not written");
         return;
@@ -364,26 +337,24 @@ int RenderShots(
     }
   }
   KeepBlocksInHeapUpTo(largestPicture + (std::size_t{ 1 } << 20));
-  const InterruptCatcher catcher;
   Batch batch(o, commandLine);
   ProgressBar progress(static_cast<long long>(mine.size()), o.Quiet || mine.size() < 2);
   std::size_t done = 0;
-  for (; done < mine.size() && !Interrupted; ++done)
+  for (; done < mine.size() && !Interruption(); ++done)
   {
     progress.Show(static_cast<long long>(done), mine[done]->Output);
     batch.Run(*mine[done]);
   }
   batch.Finish();
   progress.Finish();
-  if (Interrupted)
+  if (const int signal = Interruption())
   {
-    std::cerr << "shadelab: interrupted (" << (Interrupted == SIGINT ? "SIGINT" : "SIGTERM")
-              << ") after " << done << " of " << mine.size()
-              << " shots: " << done - batch.Failed - batch.Skipped << " written, " << batch.Skipped
-              << " skipped, " << batch.Failed
+    std::cerr << "shadelab: interrupted (" << SignalName(signal) << ") after " << done << " of "
+              << mine.size() << " shots: " << done - batch.Failed - batch.Skipped << " written, "
+              << batch.Skipped << " skipped, " << batch.Failed
               << " failed; every picture there is whole; --skip-existing renders the rest"
               << std::endl;
-    return 128 + Interrupted;
+    return 128 + signal;
   }
   if (batch.Failed > 0 && mine.size() > 1)
   {

@@ -10,14 +10,42 @@
 #include "image/texture_decoding.h"
 #include "image/writer_replies.h"
 
+#include "core/output_file.h"
+#include "image/video_output.h"
+
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
-int main()
+namespace
 {
+// shadelab ended without closing the pipe (SIGKILL, or its grace after
+// SIGTERM ran out): nothing it asked for is wanted any more. What is being
+// written is removed, not left partial, and ffmpeg goes too.
+void ParentGone(int)
+{
+  shadelab::RemoveTemporariesNow();
+  shadelab::StopVideoEncodersNow();
+  _exit(1);
+}
+}
+
+// argv[1], where given: the process id of the shadelab that started it.
+int main(int argc, char** argv)
+{
+  struct sigaction gone = {};
+  gone.sa_handler = ParentGone;
+  sigemptyset(&gone.sa_mask);
+  sigaction(SIGUSR1, &gone, nullptr);
+  prctl(PR_SET_PDEATHSIG, SIGUSR1);
+  if (argc > 1 && getppid() != std::atoi(argv[1]))
+  {
+    ParentGone(SIGUSR1); // it died before the line above
+  }
   // Ctrl-C reaches the whole process group: the writer finishes the picture
   // it has (whole, renamed into place) and ends when shadelab closes the pipe.
   std::signal(SIGINT, SIG_IGN);

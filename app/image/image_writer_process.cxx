@@ -51,7 +51,10 @@ ImageWriterProcess::ImageWriterProcess()
   posix_spawn_file_actions_adddup2(&actions, toChild[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fromChild[1], STDOUT_FILENO);
   const std::string path = SiblingExecutable("shadelab-image-writer");
-  char* const argv[] = { const_cast<char*>(path.c_str()), nullptr };
+  // Our process id: the writer dies with us (PR_SET_PDEATHSIG), and so
+  // checks that we are still its parent once it has asked for that.
+  std::string parent = std::to_string(getpid());
+  char* const argv[] = { const_cast<char*>(path.c_str()), parent.data(), nullptr };
   const int spawned = posix_spawn(&this->Child, path.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
   close(toChild[0]);

@@ -5,10 +5,13 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -36,6 +39,71 @@ std::string LastLine(std::string text)
   const auto newline = text.find_last_of('\n');
   return newline == std::string::npos ? text : text.substr(newline + 1);
 }
+
+std::atomic<pid_t> RunningEncoder{ -1 }; // for StopVideoEncodersNow
+
+// Whether the MP4 in fd is whole: its top-level boxes, one after another,
+// end exactly at the file's end, and the index (moov) and the frames (mdat)
+// are among them. ffmpeg that met a full disk or a file-size limit can end
+// with status 0 and a file cut short ("moov atom not found" to players).
+bool WholeMp4(int fd)
+{
+  struct stat info;
+  if (fstat(fd, &info) != 0)
+  {
+    return false;
+  }
+  const auto end = static_cast<std::uint64_t>(info.st_size);
+  bool moov = false, mdat = false;
+  std::uint64_t at = 0;
+  while (at < end)
+  {
+    unsigned char header[16];
+    if (end - at < 8 || pread(fd, header, 8, static_cast<off_t>(at)) != 8)
+    {
+      return false;
+    }
+    std::uint64_t size = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      size = size << 8 | header[i];
+    }
+    if (size == 1) // a 64-bit size follows the type
+    {
+      if (end - at < 16 || pread(fd, header + 8, 8, static_cast<off_t>(at + 8)) != 8)
+      {
+        return false;
+      }
+      size = 0;
+      for (int i = 8; i < 16; ++i)
+      {
+        size = size << 8 | header[i];
+      }
+    }
+    else if (size == 0) // the last box, to the file's end
+    {
+      size = end - at;
+    }
+    if (size < 8 || size > end - at)
+    {
+      return false;
+    }
+    const std::string type(reinterpret_cast<const char*>(header) + 4, 4);
+    moov = moov || type == "moov";
+    mdat = mdat || type == "mdat";
+    at += size;
+  }
+  return moov && mdat;
+}
+}
+
+void StopVideoEncodersNow()
+{
+  const pid_t child = RunningEncoder.load();
+  if (child > 0)
+  {
+    kill(child, SIGKILL);
+  }
 }
 
 VideoEncoder::~VideoEncoder()
@@ -118,6 +186,10 @@ std::string VideoEncoder::Open(const ImageRequest& first)
   posix_spawn_file_actions_destroy(&actions);
   close(pipe[0]);
   this->ToChild = pipe[1];
+  if (spawned == 0)
+  {
+    RunningEncoder = this->Child;
+  }
   if (spawned != 0)
   {
     this->Child = -1;
@@ -153,7 +225,13 @@ std::string VideoEncoder::Add(const ImageRequest& frame)
 
 std::string VideoEncoder::Finish()
 {
-  const std::string ended = this->Wait();
+  std::string ended = this->Wait();
+  if (ended.empty() && !WholeMp4(this->Video.Descriptor()))
+  {
+    // It said why at -v error, if it said anything.
+    const std::string said = LastLine(this->Log.Read());
+    ended = "ffmpeg left the video unfinished" + (said.empty() ? "" : ": " + said);
+  }
   return ended.empty() ? this->Video.WriteTo(this->Path) : ended;
 }
 
@@ -172,6 +250,7 @@ std::string VideoEncoder::Wait()
   while (waitpid(this->Child, &status, 0) < 0 && errno == EINTR)
   {
   }
+  RunningEncoder = -1;
   this->Child = -1;
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
   {

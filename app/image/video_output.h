@@ -15,6 +15,12 @@
 
 namespace shadelab
 {
+/**
+ * Kills the ffmpeg that an encoder runs, if one does: for a writer about to
+ * end at once. Async-signal-safe.
+ */
+void StopVideoEncodersNow();
+
 class VideoEncoder : public Encoder
 {
 public:

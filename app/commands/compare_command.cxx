@@ -44,6 +44,13 @@ CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
   return compare;
 }
 
+namespace
+{
+// A comparison picture's largest area: its float pixels (256 MiB) and the
+// panels' it is composed of, at most as many again, stay well within 2 GiB.
+constexpr long long MaxComparisonPixels = 4096LL * 4096LL;
+}
+
 int RunCompare(const CompareOptions& o, const std::string& commandLine)
 {
   Comparison plan;
@@ -58,6 +65,18 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
     return ExitUsage;
   }
   const std::vector<Panel>& panels = plan.Panels;
+  // The panels are kept until the picture is composed: both within bounds,
+  // said now rather than after rendering them (or the writer failing).
+  const ComparisonLayout layout =
+    LayOut(static_cast<int>(panels.size()) + (plan.DifferenceA >= 0 ? 1 : 0), o.Scene.Size.Width,
+      o.Scene.Size.Height, plan.Columns, plan.DifferenceA >= 0);
+  if (static_cast<long long>(layout.Width) * layout.Height > MaxComparisonPixels)
+  {
+    return ReportError(o.Output,
+      "the comparison of " + std::to_string(panels.size()) + " panels would be " +
+        std::to_string(layout.Width) + "x" + std::to_string(layout.Height) +
+        " pixels, more than 4096x4096: fewer panels or a smaller --size");
+  }
   if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
   {
     return ReportError(o.Output, error);

@@ -11,7 +11,6 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkLightRepresentation.h>
-#include <vtkMapper.h>
 
 #include <algorithm>
 #include <cmath>
@@ -138,8 +137,6 @@ void Inspector::SetUpWindow()
   this->Overlay->SetLayer(1);
   this->Overlay->InteractiveOff(); // the mouse goes to the panel beneath
   this->Window->AddRenderer(this->Overlay);
-  // Edges and glyphs drawn on the surface must win the depth test.
-  vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
   this->DifferenceRenderer->AddActor(this->DifferenceImage);
   this->DifferenceRenderer->GetActiveCamera()->ParallelProjectionOn();
   this->DifferenceRenderer->InteractiveOff();

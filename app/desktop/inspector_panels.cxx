@@ -15,6 +15,8 @@ namespace shadelab
 void Inspector::Apply()
 {
   SceneOptions base = this->State.Scene;
+  base.Edges = this->State.Edges; // the surface's code makes room for lines over it
+  base.NormalGlyphs = this->State.Glyphs;
   ShowTerms(base, this->State.Ambient, this->State.Diffuse, this->State.Specular);
   std::vector<Panel> panels;
   if (this->State.Compare)

@@ -136,6 +136,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
       parts[drawn.Parts.front()].Surface, options.Ambient, lights);
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
+    drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

@@ -17,7 +17,8 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
     this->Specular == o.Specular && this->VertexKd == o.VertexKd &&
     this->KdTexture == o.KdTexture && this->KaTexture == o.KaTexture &&
-    this->KsTexture == o.KsTexture && this->AllFeatures == o.AllFeatures;
+    this->KsTexture == o.KsTexture && this->AllFeatures == o.AllFeatures &&
+    this->BehindLines == o.BehindLines;
 }
 
 namespace
@@ -323,6 +324,26 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 }
 }
 
+namespace
+{
+// ShaderFeatures::BehindLines. The slope is taken where VTK takes
+// derivatives, in uniform control flow: appended to the rule's own code
+// there (a second replacement of the tag would take the first's place).
+void AddOffsetBehindLines(std::vector<ShaderReplacement>& r)
+{
+  for (ShaderReplacement& each : r)
+  {
+    if (!each.Vertex && each.Tag == "//VTK::UniformFlow::Impl")
+    {
+      each.Code += "  float shadelabDepthSlope = "
+                   "length(vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z)));\n";
+    }
+  }
+  r.push_back({ false, "//VTK::Depth::Impl",
+    "  gl_FragDepth = gl_FragCoord.z + 2.0 * shadelabDepthSlope + 0.000032;\n" });
+}
+}
+
 std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& features)
 {
   ShaderFeatures f = features;
@@ -353,6 +374,10 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   if (f.ReadsTexel())
   {
     AddTexelLookup(r);
+  }
+  if (f.BehindLines)
+  {
+    AddOffsetBehindLines(r);
   }
   return r;
 }

@@ -45,6 +45,12 @@ struct ShaderFeatures
   // uniforms at run time, for up to AllFeaturesMaxLights lights.
   // It has no texture code.
   bool AllFeatures = false;
+  // Lines are drawn over the surface (edges, normal glyphs): the surface's
+  // depth goes back by VTK's polygon offset for polygons, twice the depth's
+  // slope in the pixel and two units of 0.000016, so that a line lying on
+  // it wins the depth test (VTK's own offset needs its global coincident
+  // mode, which would change every scene's code).
+  bool BehindLines = false;
 
   bool Textured() const
   {

@@ -160,6 +160,12 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Modified();
 }
 
+void vtkShadelabShading::SetBehindLines(bool behind)
+{
+  this->Features.BehindLines = behind;
+  this->Modified();
+}
+
 void vtkShadelabShading::SetAllFeatures(bool all)
 {
   this->Features.AllFeatures = all;

@@ -84,6 +84,13 @@ public:
   void RemoveAllLights();
   ///@}
 
+  /**
+   * Whether lines are drawn over the surface (edges, normal glyphs): its
+   * depth then goes back by a polygon offset so that they show
+   * (ShaderFeatures::BehindLines). Default off, and off the code has none.
+   */
+  void SetBehindLines(bool behind);
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 

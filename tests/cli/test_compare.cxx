@@ -232,3 +232,19 @@ TEST(Compare, BadModesAndDifferencesAreOneLineErrors)
   EXPECT_EQ(folder.ExitCode, 1);
   EXPECT_TRUE(dir.Files().empty());
 }
+
+// A comparison picture beyond 4096x4096 is refused before anything renders,
+// in one line that says what to change (400 panels once took 3.7 GB, then
+// "the image writer failed").
+TEST(Compare, APictureBeyondTheLimitIsRefusedFirst)
+{
+  TempDir dir;
+  const RunResult r = RunShadelab({ "compare", TestMesh("spot.obj").string(), "-o",
+    (dir / "big.png").string(), "--modes", "flat,phong", "--size", "3000x3000" });
+  EXPECT_EQ(r.ExitCode, 1) << r.Stderr;
+  EXPECT_NE(
+    r.Stderr.find("more than 4096x4096: fewer panels or a smaller --size"), std::string::npos)
+    << r.Stderr;
+  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 1) << r.Stderr;
+  EXPECT_TRUE(FilesIn(dir.path()).empty());
+}

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 using namespace shadelab_test;
 
@@ -98,4 +99,110 @@ TEST(Interrupt, SigintLeavesWholePicturesAndSkipExistingFinishes)
 TEST(Interrupt, SigtermLeavesWholePicturesAndSkipExistingFinishes)
 {
   InterruptAndFinish(SIGTERM, "SIGTERM");
+}
+
+namespace
+{
+// The processes that pid started (its image writer), from /proc.
+std::vector<int> Children(int pid)
+{
+  std::vector<int> children;
+  const std::filesystem::path tasks = "/proc/" + std::to_string(pid) + "/task";
+  std::error_code error;
+  for (const auto& task : std::filesystem::directory_iterator(tasks, error))
+  {
+    std::ifstream list(task.path() / "children");
+    for (int child; list >> child;)
+    {
+      children.push_back(child);
+    }
+  }
+  return children;
+}
+
+// Whether pid still runs (a zombie waiting for its reaper has ended).
+bool Running(int pid)
+{
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line))
+  {
+    return false;
+  }
+  const auto close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] != 'Z';
+}
+
+int StartedWriter(int shadelab)
+{
+  const auto start = std::chrono::steady_clock::now();
+  for (;;)
+  {
+    if (const std::vector<int> children = Children(shadelab); !children.empty())
+    {
+      return children.front();
+    }
+    if (std::chrono::steady_clock::now() - start > std::chrono::seconds(30))
+    {
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+bool EndsWithin(int pid, std::chrono::seconds bound)
+{
+  const auto start = std::chrono::steady_clock::now();
+  while (Running(pid))
+  {
+    if (std::chrono::steady_clock::now() - start > bound)
+    {
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return true;
+}
+}
+
+// Work that never reaches a point where the run can stop by itself (here:
+// the writer is stopped, so its answer never comes) ends GraceSeconds after
+// SIGTERM all the same: exit 143, nothing at the output's name, and the
+// writer, once it runs again, follows its parent.
+TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
+{
+  TempDir dir;
+  const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o",
+                                  (dir / "spot.png").string(), "--size", "64x64" },
+    dir / "stdout", dir / "stderr");
+  ASSERT_GT(pid, 0);
+  const int writer = StartedWriter(pid);
+  ASSERT_GT(writer, 0);
+  kill(writer, SIGSTOP);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto signalled = std::chrono::steady_clock::now();
+  kill(pid, SIGTERM);
+  EXPECT_EQ(WaitShadelab(pid), 128 + SIGTERM);
+  // The bound stated in interruption.h: the grace (2 s) and a fraction.
+  EXPECT_LT(std::chrono::steady_clock::now() - signalled, std::chrono::milliseconds(3500));
+  EXPECT_NE(Slurp(dir / "stderr").find("shadelab: interrupted (SIGTERM)"), std::string::npos)
+    << Slurp(dir / "stderr");
+  kill(writer, SIGCONT);
+  EXPECT_TRUE(EndsWithin(writer, std::chrono::seconds(10))) << "the writer outlived shadelab";
+  EXPECT_EQ(FilesIn(dir.path()), (std::vector<std::string>{ "stderr", "stdout" }));
+}
+
+// After a SIGKILL nothing of the run stays: the writer dies with its parent.
+TEST(Interrupt, SigkillLeavesNoProcessBehind)
+{
+  TempDir dir;
+  const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o",
+                                  (dir / "spot.png").string(), "--size", "64x64" },
+    dir / "stdout", dir / "stderr");
+  ASSERT_GT(pid, 0);
+  const int writer = StartedWriter(pid);
+  ASSERT_GT(writer, 0);
+  kill(pid, SIGKILL);
+  EXPECT_EQ(WaitShadelab(pid), 128 + SIGKILL);
+  EXPECT_TRUE(EndsWithin(writer, std::chrono::seconds(10))) << "the writer outlived shadelab";
 }

@@ -1,0 +1,119 @@
+// Files from the wild: every one of Debian's assimp-testmodels (about 600
+// files in some 50 formats, /usr/share/assimp/models) in one batch, which
+// must neither crash, nor hang, nor take more than 2 GB: each file renders
+// or is refused in one line that names it.
+#include "cli_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <set>
+#include <sstream>
+#include <thread>
+
+using namespace shadelab_test;
+
+namespace
+{
+const std::filesystem::path Models = "/usr/share/assimp/models";
+
+// JSON's string syntax for a path (the models' names are plain ASCII).
+std::string JsonString(const std::string& text)
+{
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    quoted += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+}
+
+TEST(AssimpModels, EachRendersOrIsRefusedInOneLine)
+{
+  if (!std::filesystem::is_directory(Models))
+  {
+    GTEST_SKIP() << Models << " is missing (Debian's assimp-testmodels; scripts/setup installs it)";
+  }
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(Models))
+  {
+    if (entry.is_regular_file())
+    {
+      files.push_back(entry.path().string());
+    }
+  }
+  ASSERT_GT(files.size(), 100u);
+  TempDir dir;
+  std::ostringstream scene;
+  scene << R"({ "output": ")" << (dir / "{index}.png").string()
+        << R"(", "size": [32, 32], "shots": [)";
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    scene << (i ? "," : "") << R"({ "mesh": )" << JsonString(files[i]) << " }";
+  }
+  scene << "] }";
+  WriteText(dir / "scene.json", scene.str());
+
+  const int pid = StartShadelab(
+    { "render", "--scene", (dir / "scene.json").string(), "--quiet" }, dir / "out", dir / "err");
+  ASSERT_GT(pid, 0);
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0)
+  {
+    if (std::chrono::steady_clock::now() - start > std::chrono::minutes(10))
+    {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      FAIL() << "no end after 10 minutes: a hang";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_TRUE(WIFEXITED(status)) << "died of signal " << WTERMSIG(status);
+  EXPECT_LE(WEXITSTATUS(status), 1);
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  EXPECT_LT(usage.ru_maxrss, 2L << 20) << "KiB at the peak: more than 2 GB";
+
+  // Each line an error naming one of the files, or the batch's summary.
+  std::istringstream err(Slurp(dir / "err"));
+  std::set<std::string> refused;
+  std::size_t summaries = 0;
+  for (std::string line; std::getline(err, line);)
+  {
+    const std::string prefix = "shadelab: error: ";
+    if (line.rfind(prefix, 0) != 0)
+    {
+      ADD_FAILURE() << "not an error line: " << line;
+      continue;
+    }
+    if (line.find(" shots failed") != std::string::npos)
+    {
+      ++summaries;
+      continue;
+    }
+    const auto named = std::find_if(files.begin(), files.end(),
+      [&](const std::string& f)
+      { return line.compare(prefix.size(), f.size() + 2, f + ": ") == 0; });
+    if (named == files.end())
+    {
+      ADD_FAILURE() << "names no model: " << line;
+      continue;
+    }
+    EXPECT_TRUE(refused.insert(*named).second) << "refused twice: " << line;
+  }
+  EXPECT_LE(summaries, 1u);
+  // Every other file was drawn.
+  std::size_t pictures = 0;
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    pictures += std::filesystem::exists(dir / (std::to_string(i) + ".png"));
+  }
+  EXPECT_EQ(pictures + refused.size(), files.size());
+  std::cout << files.size() << " files: " << pictures << " drawn, " << refused.size()
+            << " refused in one line\n";
+}

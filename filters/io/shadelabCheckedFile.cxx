@@ -47,25 +47,35 @@ std::string CheckedFile::ReadAll()
 {
   std::string bytes(this->Size, '\0');
   std::size_t used = 0;
-  while (used < bytes.size())
+  const auto next = [this](char* to, std::size_t count)
   {
-    const ssize_t n = read(this->Descriptor, bytes.data() + used, bytes.size() - used);
-    if (n < 0 && errno == EINTR)
+    ssize_t n;
+    while ((n = read(this->Descriptor, to, count)) < 0 && errno == EINTR)
     {
-      continue;
     }
     if (n < 0)
     {
       FailErrno("cannot read", errno);
     }
-    if (n == 0)
-    {
-      break; // it shrank since it was opened: what is there
-    }
-    used += static_cast<std::size_t>(n);
+    return static_cast<std::size_t>(n);
+  };
+  for (std::size_t n = 1; used < bytes.size() && n > 0; used += n)
+  {
+    n = next(bytes.data() + used, bytes.size() - used);
   }
-  // Bytes appended since the opening are not read: the size was checked.
-  bytes.resize(used);
+  bytes.resize(used); // it shrank since it was opened: what is there
+  // Its end, past the size it said: /proc's files say 0 and hold a few KiB.
+  // One that goes on past the slack (appended to while read) is refused.
+  constexpr std::size_t Slack = 1 << 20;
+  char more[1 << 12];
+  for (std::size_t n; used == this->Size && (n = next(more, sizeof more)) > 0;)
+  {
+    bytes.append(more, n);
+    if (bytes.size() > this->Size + Slack)
+    {
+      throw MeshReadError("grew past its size while it was read", vtkErrorCode::UnknownError);
+    }
+  }
   return bytes;
 }
 

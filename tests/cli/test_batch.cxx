@@ -200,37 +200,6 @@ TEST(Batch, WriterErrorsOfPicturesInFlightGoToTheirOwnShots)
     (std::set<std::string>{ "scene.json", "a.png", "c.png", "e.png", "f.png" }));
 }
 
-// Shots to one file (its name spelt three ways, which the scene file's check
-// of distinct outputs lets through), in flight together: the file is the last
-// shot's picture, as when they were written one after the other. The first
-// is large and 16-bit (its floats sent, quantised in the writer), the others
-// tiny, so that it would finish last if nothing kept the order; the last is
-// also rendered to a file of its own to compare with.
-TEST(Batch, TheLastOfShotsToOneFileIsTheOneLeft)
-{
-  TempDir dir;
-  const std::string scene = (dir / "scene.json").string();
-  const std::string same = (dir / "same.png").string();
-  WriteText(scene,
-    R"({ "mesh": ")" + TestMesh("spot.obj").string() + R"(", "output": ")" + same +
-      R"(", "size": [32, 24], "shots": [ { "pixel_type": "uint16", "size": [1920, 1080] },)"
-      R"( { "material": "gold",)"
-      R"( "output": ")" +
-      (dir / "./same.png").string() + R"(" }, { "material": "chrome", "output": ")" +
-      (dir / "././same.png").string() + R"(" }, { "material": "chrome", "output": ")" +
-      (dir / "chrome.png").string() + R"(" } ] })");
-  for (int run = 0; run < 3; ++run)
-  {
-    const RunResult r = RunShadelab({ "render", "--scene", scene });
-    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
-    const Image left = ReadImage(same);
-    const Image chrome = ReadImage(dir / "chrome.png");
-    EXPECT_EQ(left.Format, "uint8") << "run " << run;
-    EXPECT_TRUE(left.Pixels == chrome.Pixels) << "run " << run;
-    EXPECT_GT(CountCovered(chrome), 50u);
-  }
-}
-
 TEST(Batch, EachShotReportsItsOwnErrorAndAWarningOnce)
 {
   // Two differently broken meshes: each shot's error is its own, not the

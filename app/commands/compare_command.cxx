@@ -46,9 +46,10 @@ CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
 
 namespace
 {
-// A comparison picture's largest area: its float pixels (256 MiB) and the
-// panels' it is composed of, at most as many again, stay well within 2 GiB.
-constexpr long long MaxComparisonPixels = 4096LL * 4096LL;
+// A comparison picture's largest area, a square of this side: its float
+// pixels (256 MiB) and the panels' it is composed of, at most as many
+// again, stay well within 2 GiB.
+constexpr long long MaxComparisonSide = 4096;
 }
 
 int RunCompare(const CompareOptions& o, const std::string& commandLine)
@@ -70,12 +71,13 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   const ComparisonLayout layout =
     LayOut(static_cast<int>(panels.size()) + (plan.DifferenceA >= 0 ? 1 : 0), o.Scene.Size.Width,
       o.Scene.Size.Height, plan.Columns, plan.DifferenceA >= 0);
-  if (static_cast<long long>(layout.Width) * layout.Height > MaxComparisonPixels)
+  if (static_cast<long long>(layout.Width) * layout.Height > MaxComparisonSide * MaxComparisonSide)
   {
+    const std::string side = std::to_string(MaxComparisonSide);
     return ReportError(o.Output,
       "the comparison of " + std::to_string(panels.size()) + " panels would be " +
-        std::to_string(layout.Width) + "x" + std::to_string(layout.Height) +
-        " pixels, more than 4096x4096: fewer panels or a smaller --size");
+        std::to_string(layout.Width) + "x" + std::to_string(layout.Height) + " pixels, more than " +
+        side + "x" + side + ": fewer panels or a smaller --size");
   }
   if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
   {

@@ -5,13 +5,12 @@
 // the same way, an empty line followed by the image. Pictures are encoded in
 // parallel and answered in order (writer_replies.h). See
 // image_writer_process.h.
+#include "core/output_file.h"
 #include "image/image_writer_protocol.h"
 #include "image/picture_files.h"
 #include "image/texture_decoding.h"
-#include "image/writer_replies.h"
-
-#include "core/output_file.h"
 #include "image/video_output.h"
+#include "image/writer_replies.h"
 
 #include <sys/prctl.h>
 #include <unistd.h>
@@ -37,10 +36,7 @@ void ParentGone(int)
 // argv[1], where given: the process id of the shadelab that started it.
 int main(int argc, char** argv)
 {
-  struct sigaction gone = {};
-  gone.sa_handler = ParentGone;
-  sigemptyset(&gone.sa_mask);
-  sigaction(SIGUSR1, &gone, nullptr);
+  std::signal(SIGUSR1, ParentGone);
   prctl(PR_SET_PDEATHSIG, SIGUSR1);
   if (argc > 1 && getppid() != std::atoi(argv[1]))
   {

@@ -42,6 +42,17 @@ std::string LastLine(std::string text)
 
 std::atomic<pid_t> RunningEncoder{ -1 }; // for StopVideoEncodersNow
 
+// The unsigned big-endian number in bytes[0, count).
+std::uint64_t BigEndian(const unsigned char* bytes, int count)
+{
+  std::uint64_t value = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    value = value << 8 | bytes[i];
+  }
+  return value;
+}
+
 // Whether the MP4 in fd is whole: its top-level boxes, one after another,
 // end exactly at the file's end, and the index (moov) and the frames (mdat)
 // are among them. ffmpeg that met a full disk or a file-size limit can end
@@ -63,22 +74,14 @@ bool WholeMp4(int fd)
     {
       return false;
     }
-    std::uint64_t size = 0;
-    for (int i = 0; i < 4; ++i)
-    {
-      size = size << 8 | header[i];
-    }
+    std::uint64_t size = BigEndian(header, 4);
     if (size == 1) // a 64-bit size follows the type
     {
       if (end - at < 16 || pread(fd, header + 8, 8, static_cast<off_t>(at + 8)) != 8)
       {
         return false;
       }
-      size = 0;
-      for (int i = 8; i < 16; ++i)
-      {
-        size = size << 8 | header[i];
-      }
+      size = BigEndian(header + 8, 8);
     }
     else if (size == 0) // the last box, to the file's end
     {
@@ -186,10 +189,6 @@ std::string VideoEncoder::Open(const ImageRequest& first)
   posix_spawn_file_actions_destroy(&actions);
   close(pipe[0]);
   this->ToChild = pipe[1];
-  if (spawned == 0)
-  {
-    RunningEncoder = this->Child;
-  }
   if (spawned != 0)
   {
     this->Child = -1;
@@ -197,6 +196,7 @@ std::string VideoEncoder::Open(const ImageRequest& first)
     this->ToChild = -1;
     return "cannot start " + ffmpeg + ": " + std::strerror(spawned);
   }
+  RunningEncoder = this->Child;
   return {};
 }
 

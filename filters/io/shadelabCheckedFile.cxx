@@ -26,6 +26,24 @@ bool Inside(const std::filesystem::path& path, const std::filesystem::path& fold
   const std::filesystem::path relative = path.lexically_relative(folder);
   return !relative.empty() && *relative.begin() != "..";
 }
+
+// What a file that is neither regular nor a folder is, from its st_mode.
+const char* FileKind(mode_t mode)
+{
+  switch (mode & S_IFMT)
+  {
+    case S_IFIFO:
+      return "a FIFO";
+    case S_IFSOCK:
+      return "a socket";
+    case S_IFCHR:
+      return "a character device";
+    case S_IFBLK:
+      return "a block device";
+    default:
+      return "of another kind";
+  }
+}
 }
 
 CheckedFile::CheckedFile(CheckedFile&& other) noexcept
@@ -77,27 +95,6 @@ std::string CheckedFile::ReadAll()
     }
   }
   return bytes;
-}
-
-const char* FileKind(unsigned int mode)
-{
-  switch (mode & S_IFMT)
-  {
-    case S_IFDIR:
-      return "a folder";
-    case S_IFIFO:
-      return "a FIFO";
-    case S_IFSOCK:
-      return "a socket";
-    case S_IFCHR:
-      return "a character device";
-    case S_IFBLK:
-      return "a block device";
-    case S_IFREG:
-      return "a regular file";
-    default:
-      return "not a regular file";
-  }
 }
 
 CheckedFile OpenChecked(const std::string& path, std::uint64_t maxBytes)

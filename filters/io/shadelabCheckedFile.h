@@ -26,17 +26,11 @@ namespace shadelab
 class CheckedFile
 {
 public:
-  CheckedFile(int descriptor, std::uint64_t size)
-    : Descriptor(descriptor)
-    , Size(size)
-  {
-  }
   CheckedFile(CheckedFile&& other) noexcept;
   CheckedFile(const CheckedFile&) = delete;
   CheckedFile& operator=(const CheckedFile&) = delete;
   ~CheckedFile();
 
-  int GetDescriptor() const { return this->Descriptor; }
   std::uint64_t GetSize() const { return this->Size; }
 
   /** The whole file (its size when opened); throws MeshReadError "cannot read: ...". */
@@ -44,6 +38,12 @@ public:
 
 private:
   friend CheckedFile OpenChecked(const std::string& path, std::uint64_t maxBytes);
+  CheckedFile(int descriptor, std::uint64_t size)
+    : Descriptor(descriptor)
+    , Size(size)
+  {
+  }
+
   int Descriptor;
   std::uint64_t Size;
 };
@@ -55,9 +55,6 @@ private:
  * maxBytes 0: no limit of its own beyond what the memory allows.
  */
 CheckedFile OpenChecked(const std::string& path, std::uint64_t maxBytes = 0);
-
-/** The kind of a file that is not regular, from its st_mode: "a FIFO", "a folder", ... */
-const char* FileKind(unsigned int mode);
 
 /**
  * The path of the file that `reference` (as the mesh file `meshFile` names

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace shadelab_test;
@@ -150,6 +151,16 @@ int StartedWriter(int shadelab)
   }
 }
 
+// A small render of spot into dir started, and its image writer found:
+// {shadelab, writer}, -1 for one that did not start.
+std::pair<int, int> StartRenderWithWriter(const TempDir& dir)
+{
+  const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o",
+                                  (dir / "spot.png").string(), "--size", "64x64" },
+    dir / "stdout", dir / "stderr");
+  return { pid, pid > 0 ? StartedWriter(pid) : -1 };
+}
+
 bool EndsWithin(int pid, std::chrono::seconds bound)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -172,11 +183,8 @@ bool EndsWithin(int pid, std::chrono::seconds bound)
 TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
 {
   TempDir dir;
-  const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o",
-                                  (dir / "spot.png").string(), "--size", "64x64" },
-    dir / "stdout", dir / "stderr");
+  const auto [pid, writer] = StartRenderWithWriter(dir);
   ASSERT_GT(pid, 0);
-  const int writer = StartedWriter(pid);
   ASSERT_GT(writer, 0);
   kill(writer, SIGSTOP);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -196,11 +204,8 @@ TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
 TEST(Interrupt, SigkillLeavesNoProcessBehind)
 {
   TempDir dir;
-  const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o",
-                                  (dir / "spot.png").string(), "--size", "64x64" },
-    dir / "stdout", dir / "stderr");
+  const auto [pid, writer] = StartRenderWithWriter(dir);
   ASSERT_GT(pid, 0);
-  const int writer = StartedWriter(pid);
   ASSERT_GT(writer, 0);
   kill(pid, SIGKILL);
   EXPECT_EQ(WaitShadelab(pid), 128 + SIGKILL);

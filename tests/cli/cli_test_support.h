@@ -19,7 +19,8 @@ struct RunResult
 
 /**
  * Runs `shadelab ARGS...` with DISPLAY unset (headless, as in CI) and the
- * environment's NAME=VALUE settings.
+ * environment's NAME=VALUE settings; one that runs past ten minutes is
+ * stopped and exits 124.
  */
 RunResult RunShadelab(
   const std::vector<std::string>& args, const std::vector<std::string>& environment = {});

@@ -143,6 +143,25 @@ TEST(NothingLost, AFileSizeLimitIsAnErrorLikeTheOthers)
   EXPECT_TRUE(dir.Files().empty());
 }
 
+// ffmpeg meeting the limit can end with status 0 and an MP4 cut short
+// ("moov atom not found"): an error, and no file, like any other write.
+TEST(NothingLost, AnMp4CutShortByAFileSizeLimitIsNoOutput)
+{
+  TempDir dir;
+  const fs::path out = dir / "spot.mp4";
+  RunResult r;
+  {
+    const FileSizeLimit limit(20 << 10); // 30 frames of 640x480 take about 40 KB
+    r = RunShadelab(
+      { "render", Mesh, "-o", out.string(), "--size", "640x480", "--orbit", "30", "--quiet" });
+  }
+  EXPECT_EQ(r.ExitCode, 1);
+  EXPECT_EQ(r.Stderr.rfind("shadelab: error: " + out.string() + ": ", 0), 0u) << r.Stderr;
+  EXPECT_EQ(Count(r.Stderr, "\n"), 1u) << r.Stderr;
+  EXPECT_FALSE(fs::exists(out));
+  ExpectNoTemporaries(dir.Files());
+}
+
 TEST(NothingLost, ABatchOnAFullDiskReportsEachShotAndWritesThoseThatFit)
 {
   SmallDisk disk(16);

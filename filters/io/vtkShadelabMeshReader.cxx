@@ -3,6 +3,7 @@
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
+#include "shadelabXMLArraySizes.h"
 #include "vtkShadelabGLTFReader.h"
 #include "vtkShadelabLegacyVTKReader.h"
 #include "vtkShadelabOBJReader.h"
@@ -60,9 +61,18 @@ public:
   }
 
   /** Runs the reader; throws its first error if it failed or reported one. */
-  void Update()
+  void Update() { this->ThrowIfFailed(this->Executive->Update()); }
+
+  /** Runs the reader's information pass (an XML reader parses its elements). */
+  void UpdateInformation()
   {
-    const int ok = this->Executive->Update();
+    this->Reader->UpdateInformation();
+    this->ThrowIfFailed(true);
+  }
+
+private:
+  void ThrowIfFailed(bool ok)
+  {
     if (!ok || !this->First.empty())
     {
       const unsigned long code = this->Reader->GetErrorCode();
@@ -72,7 +82,6 @@ public:
     }
   }
 
-private:
   void Catch(vtkObject*, unsigned long, void* text)
   {
     if (this->First.empty())
@@ -122,10 +131,17 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   }
   else if (extension == ".vtp")
   {
-    CheckReadable(fileName);
+    // VTK reads the bytes checked here, from memory: its own reading of the
+    // file could meet another file by then.
+    std::string bytes = ReadFileBytes(fileName);
     vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(fileName);
-    NestedReader(reader).Update();
+    reader->ReadFromInputStringOn();
+    reader->SetInputString(bytes);
+    NestedReader nested(reader);
+    nested.UpdateInformation();
+    shadelab::CheckXMLPolyDataArrays(reader->GetXMLParser(), bytes);
+    std::string().swap(bytes);
+    nested.Update();
     shadelab::MakeTriangleMesh(reader->GetOutput(), triangles);
   }
   else if (extension == ".gltf" || extension == ".glb")

@@ -14,10 +14,12 @@
  * (shadelabTriangleMesh.h).
  *
  * The error of the reader it runs becomes this reader's one error, so that
- * the program prints a single line. vtkXMLPolyDataReader is given only
- * readable files (it says little about why it fails), and its output is
- * checked and triangulated as the other formats are. Its XML parser reports
- * malformed XML itself, so that message comes first.
+ * the program prints a single line. vtkXMLPolyDataReader is given the
+ * file's checked bytes (it says little about why it fails), parses their XML,
+ * and decodes the arrays only once their sizes are checked against the bytes
+ * (shadelabXMLArraySizes.h); its output is checked and triangulated as the
+ * other formats are. Its XML parser reports malformed XML itself, so that
+ * message comes first.
  */
 #ifndef vtkShadelabMeshReader_h
 #define vtkShadelabMeshReader_h

@@ -43,21 +43,28 @@ enum Mode : std::uint64_t
 
 // A node may draw a mesh that other nodes draw too, so a small file can ask
 // for any number of copies of its largest mesh. What the scene's triangle
-// primitives will take (their points with attributes and their corners, held
-// twice on the way to vtkPolyData) is counted from the accessors' counts
-// before anything is built (the accessors checked as reading them checks);
-// a scene that needs more than half of the memory there is fails here
-// rather than meet the OOM killer.
-void CheckMemoryFor(const Document& document, const std::vector<MeshInstance>& instances)
+// primitives will take is counted from the accessors' counts before anything
+// is built (the accessors checked as reading them checks).
+struct SceneSize
 {
-  const double available = static_cast<double>(vtkShadelabFileReader::AvailableMemory());
-  constexpr double pointBytes = 128, cornerBytes = 24;
-  double needed = 0;
+  std::uint64_t Points = 0;
+  std::uint64_t Corners = 0;     // of the scene's faces and strips
+  std::uint64_t FileCorners = 0; // of its meshes, each counted once
+};
+
+// See the class's description.
+constexpr std::uint64_t MaxInstancedCorners = 3 * (std::uint64_t(4) << 20);
+
+SceneSize MeasureScene(const Document& document, const std::vector<MeshInstance>& instances)
+{
+  SceneSize size;
+  std::vector<bool> counted(document.Root.contains("meshes") ? document.Root["meshes"].size() : 0);
   for (const MeshInstance& instance : instances)
   {
     const std::string meshName = "mesh " + std::to_string(instance.Mesh);
     const Json& primitives =
       List(Item(document.Root, "meshes", instance.Mesh, meshName), "primitives");
+    std::uint64_t meshCorners = 0;
     for (std::size_t p = 0; p < primitives.size(); ++p)
     {
       const Json& primitive = primitives[p];
@@ -68,21 +75,49 @@ void CheckMemoryFor(const Document& document, const std::vector<MeshInstance>& i
       {
         continue; // nothing to draw, or an error that reading it reports
       }
-      const double points = static_cast<double>(CountOf(
-        document, Unsigned(primitive["attributes"], "POSITION", where), PositionUse, where));
-      const double corners = primitive.contains("indices")
-        ? static_cast<double>(
-            CountOf(document, Unsigned(primitive, "indices", where), IndicesUse, where))
+      const std::uint64_t points =
+        CountOf(document, Unsigned(primitive["attributes"], "POSITION", where), PositionUse, where);
+      size.Points += points;
+      meshCorners += primitive.contains("indices")
+        ? CountOf(document, Unsigned(primitive, "indices", where), IndicesUse, where)
         : points;
-      needed += pointBytes * points + cornerBytes * corners;
+    }
+    size.Corners += meshCorners;
+    if (instance.Mesh < counted.size() && !counted[instance.Mesh])
+    {
+      counted[instance.Mesh] = true;
+      size.FileCorners += meshCorners;
     }
   }
+  return size;
+}
+
+// A scene that needs more than half of the memory there is fails before it
+// is built rather than meet the OOM killer (points with their attributes
+// and corners held twice on the way to vtkPolyData); and instancing, which
+// costs the file nothing, may not take a scene past MaxInstancedCorners
+// unless its meshes hold that many themselves.
+void CheckSize(const SceneSize& size)
+{
+  constexpr double pointBytes = 128, cornerBytes = 24;
+  const double needed =
+    pointBytes * static_cast<double>(size.Points) + cornerBytes * static_cast<double>(size.Corners);
+  const double available = static_cast<double>(vtkShadelabFileReader::AvailableMemory());
   if (available > 0 && needed > available / 2)
   {
     throw MeshReadError("the scene's meshes need about " +
         std::to_string(static_cast<long long>(needed / (1 << 20))) + " MiB, more than the " +
         std::to_string(static_cast<long long>(available / (1 << 20))) +
         " MiB of memory available allow",
+      vtkErrorCode::UnknownError);
+  }
+  if (size.Corners > std::max(size.FileCorners, MaxInstancedCorners))
+  {
+    throw MeshReadError("its nodes draw its meshes' " + std::to_string(size.FileCorners / 3) +
+        " triangles as " + std::to_string(size.Corners / 3) + " (about " +
+        std::to_string(size.Corners / std::max<std::uint64_t>(size.FileCorners, 1)) +
+        " times); instances may make at most " + std::to_string(MaxInstancedCorners / 3) +
+        " triangles",
       vtkErrorCode::UnknownError);
   }
 }
@@ -116,6 +151,15 @@ public:
       }
       this->AddPrimitive(primitives[p], instance.World, where);
     }
+  }
+
+  /** Room for the whole scene at once: one copy of each array, however many primitives. */
+  void Reserve(const SceneSize& size)
+  {
+    this->Mesh.Points.reserve(3 * size.Points);
+    this->Mesh.FaceIds.reserve(size.Corners);
+    this->Mesh.FaceOffsets.reserve(size.Corners / 3 + 1);
+    this->FaceParts.reserve(size.Corners / 3);
   }
 
   /** The mesh, with the attributes that only some primitives have completed. */
@@ -190,7 +234,6 @@ private:
     const std::uint64_t count = positions.Count;
     const std::vector<std::uint32_t> indices = this->Indices(primitive, count, where);
     const WorldTransform transform(world);
-    this->Mesh.Points.reserve(this->Mesh.Points.size() + 3 * count);
     this->AddFaces(static_cast<Mode>(mode), indices, transform.Mirrors(), where);
     const std::size_t first = this->Mesh.Points.size() / 3;
     for (std::uint64_t v = 0; v < count; ++v)
@@ -201,7 +244,6 @@ private:
     {
       const FloatValues normals = Attribute(attributes, "NORMAL", NormalUse, count, where);
       this->Mesh.Normals.resize(3 * first, 0.0f); // primitives before without: dropped in Finish
-      this->Mesh.Normals.reserve(3 * (first + count));
       for (std::uint64_t v = 0; v < count; ++v)
       {
         transform.Normal(&normals.Values[3 * v], this->Mesh.Normals);
@@ -272,13 +314,6 @@ private:
       Fail(where + " has " + std::to_string(n) + " vertices, which make no whole triangles");
     }
     const int part = static_cast<int>(this->Materials.size());
-    if (mode != TriangleStrip)
-    {
-      const std::size_t triangles = mode == Triangles ? n / 3 : n - 2;
-      this->Mesh.FaceIds.reserve(this->Mesh.FaceIds.size() + 3 * triangles);
-      this->Mesh.FaceOffsets.reserve(this->Mesh.FaceOffsets.size() + triangles);
-      this->FaceParts.reserve(this->FaceParts.size() + triangles);
-    }
     const vtkIdType base = static_cast<vtkIdType>(this->Mesh.Points.size() / 3);
     const auto id = [&](std::size_t k) { return base + static_cast<vtkIdType>(indices[k]); };
     const auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
@@ -356,8 +391,10 @@ void vtkShadelabGLTFReader::ReadMesh(const char* fileName, vtkPolyData* triangle
 {
   const Document document = Load(fileName, ReadFileBytes(fileName), this->AllowOutsideReferences);
   const std::vector<MeshInstance> instances = SceneMeshes(document.Root);
-  CheckMemoryFor(document, instances);
+  const SceneSize size = MeasureScene(document, instances);
+  CheckSize(size);
   MeshBuilder builder(document);
+  builder.Reserve(size);
   for (const MeshInstance& instance : instances)
   {
     builder.AddMesh(instance);

@@ -33,6 +33,12 @@
  * different counts and accessors of a type glTF does not allow for their
  * attribute. Morph targets and skins are not applied (the rest pose is
  * read).
+ *
+ * Nodes that draw one mesh many times cost the file nothing, so the scene
+ * is measured before it is built: it must fit in half the memory available,
+ * and instancing may take it to at most 4Mi (4,194,304) triangles, or to as
+ * many as its meshes hold counted once. Reading is linear in the scene's
+ * triangles.
  */
 #ifndef vtkShadelabGLTFReader_h
 #define vtkShadelabGLTFReader_h

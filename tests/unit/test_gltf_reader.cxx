@@ -569,6 +569,30 @@ TEST_F(MeshReaders, GltfDefaultSceneWithoutScenesAndWithoutNodes)
 // ---------------------------------------------------------------------------
 // Bad input
 
+// A mesh drawn by many nodes costs the file nothing: 310 KB of GLB drew one
+// 50k-triangle mesh 200 times. Instances may make 4Mi triangles, counted
+// before anything is read; 64 of these 65536 would be the most.
+TEST_F(MeshReaders, GltfInstancesMayMakeAtMostFourMebiTriangles)
+{
+  Gltf gltf;
+  const int position = gltf.Vec3({ 0, 0, 0, 1, 0, 0, 0, 1, 0 });
+  std::vector<std::uint16_t> corners;
+  for (int t = 0; t < 65536; ++t)
+  {
+    corners.insert(corners.end(), { 0, 1, 2 });
+  }
+  const int mesh = gltf.Mesh({ Primitive(position, gltf.Indices(corners)) });
+  std::vector<int> nodes;
+  for (int n = 0; n < 65; ++n)
+  {
+    nodes.push_back(gltf.Node({ { "mesh", mesh } }));
+  }
+  gltf.Scene(nodes);
+  this->ExpectError("instances.glb", gltf.Glb(),
+    { "its nodes draw its meshes' 65536 triangles as 4259840 (about 65 times); instances may "
+      "make at most 4194304 triangles" });
+}
+
 TEST_F(MeshReaders, BadGlbContainers)
 {
   const std::string glb = SquareDocument().Glb();
@@ -588,6 +612,9 @@ TEST_F(MeshReaders, BadGlbContainers)
   type[16] = 'X';
   this->ExpectError("type.glb", type, { "the GLB's first chunk is not JSON" });
   this->ExpectError("magic.gltf", glb.substr(0, 12), { "truncated", "GLB" });
+  std::string magic = glb;
+  magic[0] = 'x';
+  this->ExpectError("magic.glb", magic, { "not a GLB: it starts with 'xlTF', not 'glTF'" });
   // A buffer without a uri is the BIN chunk, which this GLB lacks.
   const std::string json = SquareDocument().Text("");
   std::string noBin;
@@ -619,11 +646,14 @@ TEST_F(MeshReaders, BadGltfDocumentsAndBuffers)
   this->ExpectError("short.gltf", gltf.Text("short.bin"),
     { "truncated: buffer 0 declares", "but 'short.bin' has 10" });
   // A uri naming a folder, a pipe (whose opening would block) or a device.
-  this->ExpectError("folder.gltf", gltf.Text("."), { "buffer 0: '.': cannot open: Is a directory" });
+  this->ExpectError(
+    "folder.gltf", gltf.Text("."), { "buffer 0: '.': cannot open: Is a directory" });
   ASSERT_EQ(mkfifo((this->Dir / "pipe").c_str(), 0600), 0);
-  this->ExpectError("pipe.gltf", gltf.Text("pipe"), { "buffer 0: 'pipe': is not a regular file but a FIFO" });
+  this->ExpectError(
+    "pipe.gltf", gltf.Text("pipe"), { "buffer 0: 'pipe': is not a regular file but a FIFO" });
   fs::create_symlink("/dev/zero", this->Dir / "zero");
-  this->ExpectError("zero.gltf", gltf.Text("zero"), { "buffer 0: 'zero': lies outside the mesh's folder" });
+  this->ExpectError(
+    "zero.gltf", gltf.Text("zero"), { "buffer 0: 'zero': lies outside the mesh's folder" });
   this->ExpectError("http.gltf", gltf.Text("http://example.com/a.bin"),
     { "is neither a data URI nor a relative file name" });
   this->ExpectError("percent.gltf", gltf.Text("a%2.bin"), { "malformed percent-escape" });
@@ -670,7 +700,10 @@ TEST_F(MeshReaders, BadGltfAccessors)
   expect("negative", [](Gltf& g) { g.Doc["accessors"][1]["count"] = -3; },
     { "accessor 1.count is '-3', not an integer >= 0" });
   expect("view", [](Gltf& g) { g.Doc["bufferViews"][0]["byteLength"] = 4096; },
-    { "bufferView 0 takes bytes 0 to 4096 of buffer 0, which has" });
+    { "bufferView 0's byteOffset 0 and byteLength 4096 go past the end of buffer 0, which has" });
+  // Near 2^64 the end wrapped round: offset and length are said apart.
+  expect("wrap", [](Gltf& g) { g.Doc["bufferViews"][0]["byteOffset"] = 18446744073709551600ULL; },
+    { "bufferView 0's byteOffset 18446744073709551600 and byteLength 48 go past the end" });
   expect("noview", [](Gltf& g) { g.Doc["accessors"][0]["bufferView"] = 7; },
     { "accessor 0 refers to bufferViews[7], but the file has 2" });
   expect("noaccessor", [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["indices"] = 9; },
@@ -683,7 +716,12 @@ TEST_F(MeshReaders, BadGltfAccessors)
     },
     { "accessor 0 is sparse" });
   expect("stride", [](Gltf& g) { g.Doc["bufferViews"][0]["byteStride"] = 6; },
-    { "bufferView 0: byteStride 6 is not a multiple of 4 from 12 to 252" });
+    { "bufferView 0: byteStride 6 is less than the 12 bytes of accessor 0's elements" });
+  // 4 was "not a multiple of 4 from 12 to 252".
+  expect("narrow", [](Gltf& g) { g.Doc["bufferViews"][0]["byteStride"] = 4; },
+    { "bufferView 0: byteStride 4 is less than the 12 bytes of accessor 0's elements" });
+  expect("odd", [](Gltf& g) { g.Doc["bufferViews"][0]["byteStride"] = 14; },
+    { "bufferView 0: byteStride 14 is not one glTF allows (a multiple of 4 from 4 to 252)" });
   // Types glTF does not allow where they are used.
   expect("ushort", [](Gltf& g) { g.Doc["accessors"][0]["componentType"] = UnsignedShort; },
     { "POSITION accessor 0 is VEC3 of UNSIGNED_SHORT, which glTF does not allow there" });

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -292,6 +293,16 @@ std::string MemoryFile::Read() const
 
 std::string MemoryFile::WriteTo(const std::string& path) const
 {
+  // A file-size limit (ulimit -f) stops the memory file too, and a writer
+  // that checks none of its writes (vtkOBJWriter) ends content with what
+  // fitted: a file as big as the limit may have been cut there.
+  struct stat held = {};
+  rlimit limit = {};
+  if (fstat(this->Memory, &held) == 0 && getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+    limit.rlim_cur != RLIM_INFINITY && static_cast<rlim_t>(held.st_size) >= limit.rlim_cur)
+  {
+    return CannotWrite(EFBIG);
+  }
   OutputFile file(path);
   std::vector<char> chunk(1 << 20);
   off_t offset = 0;
@@ -312,7 +323,13 @@ std::string WriteFileThroughMemory(
   {
     return memory.Error();
   }
-  const std::string error = write(memory.Name());
+  const std::string name = memory.Name();
+  std::string error = write(name);
+  // A writer's message names the file it was given: the user's is the output.
+  for (auto at = error.find(name); at != std::string::npos; at = error.find(name, at + path.size()))
+  {
+    error.replace(at, name.size(), path);
+  }
   return error.empty() ? memory.WriteTo(path) : error;
 }
 }

@@ -83,7 +83,11 @@ public:
 
   /** What the file holds (a log, say). */
   std::string Read() const;
-  /** Writes what it holds to path through an OutputFile: "" or "cannot write: REASON". */
+  /**
+   * Writes what it holds to path through an OutputFile: "" or "cannot
+   * write: REASON" (File too large where it holds as much as the file-size
+   * limit allows: what was written past it is lost).
+   */
   std::string WriteTo(const std::string& path) const;
 
 private:

@@ -150,10 +150,16 @@ private:
   // exist.
   bool PrepareFolder(const Shot& shot)
   {
+    const std::filesystem::path folder = std::filesystem::path(shot.Output).parent_path();
     std::error_code made;
-    if (shot.MakeFolders && !std::filesystem::path(shot.Output).parent_path().empty())
+    if (shot.MakeFolders && !folder.empty() && !std::filesystem::create_directories(folder, made) &&
+      made)
     {
-      std::filesystem::create_directories(std::filesystem::path(shot.Output).parent_path(), made);
+      // Why it could not be made (a read-only file system, say), rather than
+      // what that left: no folder.
+      this->Fail(
+        shot, shot.Output, "cannot make the folder " + folder.string() + ": " + made.message());
+      return false;
     }
     if (const std::string error = ImageWriterProcess::CheckFolder(shot.Output); !error.empty())
     {

@@ -12,6 +12,7 @@
 #include "image/video_output.h"
 #include "image/writer_replies.h"
 
+#include <fcntl.h>
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -31,6 +32,37 @@ void ParentGone(int)
   shadelab::StopVideoEncodersNow();
   _exit(1);
 }
+
+// libpng prints "libpng error: ..." on stderr before OpenImageIO returns the
+// same problem, which shadelab's one error line quotes: stderr goes to
+// /dev/null while an image decodes (the writer itself never prints there).
+class QuietStderr
+{
+public:
+  QuietStderr()
+    : Saved(dup(STDERR_FILENO))
+  {
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0)
+    {
+      dup2(null, STDERR_FILENO);
+      close(null);
+    }
+  }
+  ~QuietStderr()
+  {
+    if (this->Saved >= 0)
+    {
+      dup2(this->Saved, STDERR_FILENO);
+      close(this->Saved);
+    }
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+private:
+  int Saved;
+};
 }
 
 // argv[1], where given: the process id of the shadelab that started it.
@@ -88,6 +120,7 @@ int main(int argc, char** argv)
         [&]
         {
           auto image = std::make_unique<shadelab::TextureImage>();
+          const QuietStderr quiet;
           std::string problem = shadelab::DecodeTexture(decode, *image);
           if (!problem.empty())
           {

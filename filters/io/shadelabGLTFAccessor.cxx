@@ -86,12 +86,15 @@ const unsigned char* ViewData(
   if (view.contains("byteStride"))
   {
     layout.Stride = Unsigned(view, "byteStride", viewName);
-    if (layout.Stride < std::max<std::uint64_t>(elementBytes, 4) || layout.Stride > 252 ||
-      layout.Stride % 4 != 0)
+    const std::string stride = viewName + ": byteStride " + std::to_string(layout.Stride);
+    if (layout.Stride < elementBytes)
     {
-      Fail(viewName + ": byteStride " + std::to_string(layout.Stride) +
-        " is not a multiple of 4 from " + std::to_string(std::max<std::uint64_t>(elementBytes, 4)) +
-        " to 252, as " + where + "'s elements need");
+      Fail(stride + " is less than the " + std::to_string(elementBytes) + " bytes of " + where +
+        "'s elements");
+    }
+    if (layout.Stride < 4 || layout.Stride > 252 || layout.Stride % 4 != 0)
+    {
+      Fail(stride + " is not one glTF allows (a multiple of 4 from 4 to 252)");
     }
   }
   const std::uint64_t offset = Unsigned(accessor, "byteOffset", where, 0);

@@ -9,6 +9,7 @@
 #include <vtkBase64Utilities.h>
 #include <vtkByteSwap.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -332,9 +333,10 @@ std::string_view ViewBytes(
   const std::uint64_t length = Unsigned(view, "byteLength", viewName);
   if (offset > buffer.size() || length > buffer.size() - offset)
   {
-    Fail(viewName + " takes bytes " + std::to_string(offset) + " to " +
-      std::to_string(offset + length) + " of buffer " + std::to_string(bufferIndex) +
-      ", which has " + std::to_string(buffer.size()));
+    // Offset and length apart: their sum can pass 2^64.
+    Fail(viewName + "'s byteOffset " + std::to_string(offset) + " and byteLength " +
+      std::to_string(length) + " go past the end of buffer " + std::to_string(bufferIndex) +
+      ", which has " + std::to_string(buffer.size()) + " bytes");
   }
   return buffer.substr(offset, length);
 }
@@ -345,6 +347,17 @@ Document Load(const std::string& fileName, std::string fileBytes, bool allowOuts
   document.Storage.push_back(std::make_unique<std::string>(std::move(fileBytes)));
   const std::string_view bytes = *document.Storage.back();
   const bool isGlb = bytes.size() >= 4 && LoadUInt32(bytes, 0) == GlbMagic;
+  const std::string_view name = fileName;
+  if (!isGlb && name.size() >= 4 && ToLower(name.substr(name.size() - 4)) == ".glb")
+  {
+    // Said as what it is, rather than as JSON that fails to parse.
+    std::string start;
+    for (const char c : bytes.substr(0, 4))
+    {
+      start += std::isprint(static_cast<unsigned char>(c)) ? std::string(1, c) : "?";
+    }
+    Fail("not a GLB: it starts with '" + start + "', not 'glTF'");
+  }
   GlbChunks glb;
   if (isGlb)
   {

@@ -59,11 +59,17 @@ public:
   void ReadValues(const std::string& section, std::uint64_t count, const char* noun,
     std::uint64_t valuesEach, ScalarType type, Store&& store);
 
-  /** Reads and drops `section`'s values. */
+  /**
+   * Reads and drops `section`'s count * valuesEach values, counted as values
+   * in its messages (a FIELD array of 10^9 components in 3 tuples declares
+   * 3 * 10^9 values).
+   */
   void Skip(
     const std::string& section, std::uint64_t count, std::uint64_t valuesEach, ScalarType type)
   {
-    this->ReadValues(section, count, "values", valuesEach, type, [](std::uint64_t, double) {});
+    const std::uint64_t values =
+      valuesEach != 0 && count > UINT64_MAX / valuesEach ? UINT64_MAX : count * valuesEach;
+    this->ReadValues(section, values, "values", 1, type, [](std::uint64_t, double) {});
   }
 
   /** Skips METADATA: it runs to the next blank line. */

@@ -361,6 +361,16 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", TexturedObj);
     },
     1, { "text.png", "not an image OpenImageIO can read" } },
+  // libpng printed its own "libpng error: IHDR: Read error" line first.
+  { "TextureTruncatedPng",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "whole.png", 4, 4, { 255, 128, 0 });
+      const std::string png = Slurp(d / "whole.png");
+      WriteText(d / "cut.png", png.substr(0, 20));
+      return WithMesh(d, "st.off", TexturedQuad, { "--texture", (d / "cut.png").string() });
+    },
+    1, { "cut.png" } },
   { "FileTextureEmbeddedUnreadable",
     [](const TempDir& d)
     {

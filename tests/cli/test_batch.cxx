@@ -157,7 +157,8 @@ TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
     R"({ "output": ")" + (dir / "{name}.png").string() + R"(", "size": [64, 48], "mesh": ")" +
       mesh +
       R"(", "shots": [ { "name": "a" }, { "name": "b", "mesh": "missing.obj" }, { "name": "c" }, )" +
-      R"({ "name": "d", "output": "/proc/no/such/d.png" }, { "name": "e" } ] })");
+      R"({ "name": "d", "output": "/proc/no/such/d.png" }, { "name": "e" }, )"
+      R"({ "name": "f", "output": "/sys/shadelab/f.png" } ] })");
   const RunResult r = RunShadelab({ "render", "--scene", (dir / "scene.json").string() });
   EXPECT_EQ(r.ExitCode, 1);
   const std::string scene = (dir / "scene.json").string();
@@ -168,8 +169,14 @@ TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
   EXPECT_NE(r.Stderr.find("shadelab: error: " + scene + " shots[3]: /proc/no/such/d.png: "),
     std::string::npos)
     << r.Stderr;
-  EXPECT_NE(r.Stderr.find("shadelab: 2 of 5 shots failed"), std::string::npos) << r.Stderr;
-  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 3) << r.Stderr;
+  // A folder that cannot be made says why (sysfs refuses it: "Operation not
+  // permitted", or "Read-only file system"), not what that left: no folder.
+  const std::string folder =
+    "shots[5]: /sys/shadelab/f.png: cannot make the folder /sys/shadelab: ";
+  EXPECT_NE(r.Stderr.find(folder), std::string::npos) << r.Stderr;
+  EXPECT_EQ(r.Stderr.find(folder + "No such file"), std::string::npos) << r.Stderr;
+  EXPECT_NE(r.Stderr.find("shadelab: 3 of 6 shots failed"), std::string::npos) << r.Stderr;
+  EXPECT_EQ(std::count(r.Stderr.begin(), r.Stderr.end(), '\n'), 4) << r.Stderr;
   EXPECT_EQ(Names(dir.Files()), (std::set<std::string>{ "scene.json", "a.png", "c.png", "e.png" }));
 }
 

@@ -143,6 +143,30 @@ TEST(NothingLost, AFileSizeLimitIsAnErrorLikeTheOthers)
   EXPECT_TRUE(dir.Files().empty());
 }
 
+// normals writes through a memory file (VTK's writers open their own):
+// VTK's message named that, /proc/PID/fd/N, instead of the output.
+TEST(NothingLost, NormalsUnderAFileSizeLimitNameTheirOutput)
+{
+  TempDir dir;
+  for (const std::string ext : { ".ply", ".vtp", ".obj" })
+  {
+    SCOPED_TRACE(ext);
+    const fs::path out = dir / ("spot" + ext);
+    RunResult r;
+    {
+      const FileSizeLimit limit(8192);
+      r = RunShadelab({ "normals", Mesh, "-o", out.string() });
+    }
+    EXPECT_EQ(r.ExitCode, 1);
+    EXPECT_EQ(r.Stderr.rfind("shadelab: error: " + out.string() + ": cannot write", 0), 0u)
+      << r.Stderr;
+    EXPECT_EQ(r.Stderr.find("/proc/"), std::string::npos) << r.Stderr;
+    EXPECT_EQ(Count(r.Stderr, "\n"), 1u) << r.Stderr;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  EXPECT_TRUE(dir.Files().empty());
+}
+
 // ffmpeg meeting the limit can end with status 0 and an MP4 cut short
 // ("moov atom not found"): an error, and no file, like any other write.
 TEST(NothingLost, AnMp4CutShortByAFileSizeLimitIsNoOutput)

@@ -1104,6 +1104,9 @@ TEST_F(MeshReaders, BadLegacyVtk)
     "DIMENSIONS 2 2 1\nORIGIN 0 0 0\nSPACING 1 1 1\n",
     { "STRUCTURED_POINTS", "not POLYDATA" });
   this->ExpectError("magic.vtk", "garbage", { "not a legacy VTK file" });
+  this->ExpectError("components.vtk",
+    header + points + "FIELD f 1\nbig 1000000000 3 float\n0 0 0\n",
+    { "FIELD array big declares 3000000000 values, more than a" });
   this->ExpectError("lines.vtk", header + points + "LINES 1 3\n2 0 1\n", { "no triangles" });
 }
 

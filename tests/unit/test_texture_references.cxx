@@ -486,7 +486,8 @@ TEST_F(GltfTextures, BadTextureReferences)
         { { "buffer", 0 }, { "byteOffset", 800 }, { "byteLength", 41 } });
       doc["images"][0] = { { "bufferView", 3 }, { "mimeType", "image/png" } };
     },
-    { "bufferView 3 takes bytes 800 to 841 of buffer 0, which has 840" });
+    { "bufferView 3's byteOffset 800 and byteLength 41 go past the end of buffer 0, which has "
+      "840" });
   this->ExpectEditError([](Json& doc) { doc["images"][0]["uri"] = "data:image/png;base64,iVBO!"; },
     { "image 0", "malformed base64" });
   this->ExpectEditError(

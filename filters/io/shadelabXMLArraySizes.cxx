@@ -2,11 +2,14 @@
 
 #include "shadelabMeshReadError.h"
 #include "vtkShadelabFileReader.h"
+#include "vtkShadelabOutputWindow.h"
 
 #include <vtkBase64Utilities.h>
+#include <vtkCommand.h>
 #include <vtkDataCompressor.h>
 #include <vtkLZ4DataCompressor.h>
 #include <vtkLZMADataCompressor.h>
+#include <vtkNew.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -15,9 +18,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
+#include <istream>
 #include <limits>
 #include <optional>
+#include <streambuf>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace shadelab
@@ -65,6 +72,10 @@ public:
     if (at > this->DecodedSize() || n > this->DecodedSize() - at)
     {
       return false;
+    }
+    if (n == 0)
+    {
+      return true;
     }
     if (!this->Base64)
     {
@@ -186,6 +197,13 @@ Header ReadHeader(const FileLayout& layout, const Encoded& data, const std::stri
       "its compression header lists " + std::to_string(blocks) +
         " blocks, more than the file can hold");
   }
+  if (blocks > 0 && (header.BlockSize == 0 || header.LastBlockSize > header.BlockSize))
+  {
+    // VTK divides by the block size and finds the last block by the two.
+    throw ArrayProblem(where,
+      "its compression header's block sizes (" + std::to_string(header.BlockSize) + ", last " +
+        std::to_string(header.LastBlockSize) + ") are not a block size and a remainder");
+  }
   header.Blocks = Words(layout, data, 3 * word, blocks, where, "compression header");
   header.HeaderBytes = (3 + blocks) * word;
   Bytes compressed = 0;
@@ -208,26 +226,39 @@ Header ReadHeader(const FileLayout& layout, const Encoded& data, const std::stri
   return header;
 }
 
-unsigned WordSize(const char* type)
+// How VTK holds a value of the array's type: bytes in the file (Bit arrays
+// pack eight values a byte) and bytes in memory (a String is a std::string).
+struct ValueType
 {
-  const std::string_view name = type ? type : "";
-  if (name == "Int8" || name == "UInt8" || name == "Char")
+  Bytes FileBits = 0; // 0: a type VTK does not read
+  Bytes MemoryBytes = 0;
+  bool Integer = false;
+};
+
+ValueType TypeOf(vtkXMLDataElement* array)
+{
+  const char* attribute = array->GetAttribute("type");
+  const std::string_view name = attribute ? attribute : "";
+  for (const auto& [type, bytes, integer] :
+    std::initializer_list<std::tuple<const char*, Bytes, bool>>{ { "Int8", 1, true },
+      { "UInt8", 1, true }, { "Char", 1, true }, { "Int16", 2, true }, { "UInt16", 2, true },
+      { "Int32", 4, true }, { "UInt32", 4, true }, { "Float32", 4, false }, { "Int64", 8, true },
+      { "UInt64", 8, true }, { "Float64", 8, false } })
   {
-    return 1;
+    if (name == type)
+    {
+      return { 8 * bytes, bytes, integer };
+    }
   }
-  if (name == "Int16" || name == "UInt16")
+  if (name == "Bit")
   {
-    return 2;
+    return { 1, 1, false };
   }
-  if (name == "Int32" || name == "UInt32" || name == "Float32")
+  if (name == "String")
   {
-    return 4;
+    return { 8, sizeof(std::string), false }; // at least its terminating NUL in the file
   }
-  if (name == "Int64" || name == "UInt64" || name == "Float64")
-  {
-    return 8;
-  }
-  return 0; // String and Bit arrays: their header is checked, their size not known here
+  return {};
 }
 
 // The text between an element's start tag and the next tag: its inline data,
@@ -245,31 +276,28 @@ std::string_view InlineText(const FileLayout& layout, vtkXMLDataElement* element
   return file.substr(begin, end - begin);
 }
 
-std::string_view Format(vtkXMLDataElement* array)
-{
-  const char* format = array->GetAttribute("format");
-  return format ? format : "";
-}
-
-// The encoded data of a binary or appended array; nothing for ASCII (and for
-// an appended array without an offset, which VTK refuses itself).
+// The encoded data of an array that VTK reads as binary, decided as VTK
+// decides it: an offset attribute makes it appended whatever its format
+// says (an offset VTK cannot parse is 0), else format "binary" is inline
+// base64; nothing for the rest, which VTK reads as ASCII.
 std::optional<Encoded> BinaryData(
   const FileLayout& layout, vtkXMLDataElement* array, const std::string& where)
 {
-  const std::string_view format = Format(array);
-  if (format == "binary")
+  if (!array->GetAttribute("offset"))
   {
-    return Encoded(InlineText(layout, array), true);
-  }
-  if (format != "appended" || !layout.HasAppended)
-  {
+    const char* format = array->GetAttribute("format");
+    if (format && std::string_view(format) == "binary")
+    {
+      return Encoded(InlineText(layout, array), true);
+    }
     return std::nullopt;
+  }
+  if (!layout.HasAppended)
+  {
+    throw ArrayProblem(where, "it has an offset, but the file has no appended data");
   }
   long long offset = 0;
-  if (!array->GetScalarAttribute("offset", offset))
-  {
-    return std::nullopt;
-  }
+  array->GetScalarAttribute("offset", offset);
   if (offset < 0 || static_cast<Bytes>(offset) >= layout.Appended.size())
   {
     throw ArrayProblem(where,
@@ -279,23 +307,48 @@ std::optional<Encoded> BinaryData(
   return Encoded(layout.Appended.substr(static_cast<std::size_t>(offset)), layout.AppendedBase64);
 }
 
+// The first `count` whitespace-separated integers of an ASCII array (VTK
+// reads that many and ignores the rest); nothing if there are fewer.
+std::optional<long long> AsciiValue(std::string_view text, Bytes index)
+{
+  const std::string copy(text);
+  const char* at = copy.c_str();
+  long long value = 0;
+  for (Bytes i = 0; i <= index; ++i)
+  {
+    char* end = nullptr;
+    value = std::strtoll(at, &end, 10);
+    if (end == at)
+    {
+      return std::nullopt;
+    }
+    at = end;
+  }
+  return value;
+}
+
 class ArrayChecker
 {
 public:
-  ArrayChecker(const FileLayout& layout)
+  explicit ArrayChecker(const FileLayout& layout)
     : Layout(layout)
   {
   }
 
   /**
-   * Checks one array that VTK will read as `values` values (tuples times
-   * components), adding what it decodes to the total.
+   * Checks that one array holds the `values` values (tuples times
+   * components) VTK will read from it, without counting what VTK allocates
+   * for them: Allocate does.
    */
   void Check(vtkXMLDataElement* array, Bytes values, const std::string& where)
   {
-    const Bytes wordSize = WordSize(array->GetAttribute("type"));
-    const Bytes need = Times(values, wordSize);
-    if (Format(array) == "ascii")
+    const ValueType type = TypeOf(array);
+    if (type.FileBits == 0)
+    {
+      return; // VTK refuses the type itself
+    }
+    const std::optional<Encoded> data = BinaryData(this->Layout, array, where);
+    if (!data)
     {
       const Bytes room = (InlineText(this->Layout, array).size() + 1) / 2;
       if (values > room)
@@ -304,69 +357,71 @@ public:
           "declares " + std::to_string(values) + " values, but its text holds at most " +
             std::to_string(room));
       }
-      this->Add(need, where);
-      return;
-    }
-    const std::optional<Encoded> data = BinaryData(this->Layout, array, where);
-    if (!data)
-    {
       return;
     }
     const Header header = ReadHeader(this->Layout, *data, where);
-    if (wordSize != 0 && header.Size != need)
+    const Bytes need = (Times(values, type.FileBits) + 7) / 8;
+    // A String's values are as long as they are: at least a NUL each.
+    if (type.MemoryBytes == sizeof(std::string) ? header.Size < need : header.Size != need)
     {
       throw ArrayProblem(where,
         "it decodes to " + std::to_string(header.Size) + " bytes, but its " +
           std::to_string(values) + " values of " + array->GetAttribute("type") + " are " +
           std::to_string(need));
     }
-    this->Add(header.Size, where);
+    // Decoding holds a block at a time beside the array.
+    this->Add(header.BlockSize, where);
+    this->Remove(header.BlockSize);
   }
 
-  /** The last of an offsets array's `values` integers (checked before): the connectivity's length.
-   */
-  std::optional<long long> LastValue(
-    vtkXMLDataElement* array, Bytes values, const std::string& where)
+  /** Counts what VTK allocates for `values` values of the array's type. */
+  void Allocate(vtkXMLDataElement* array, Bytes values, const std::string& where)
   {
-    const char* type = array->GetAttribute("type");
-    const Bytes wordSize = WordSize(type);
-    if (values == 0 || wordSize == 0)
+    const ValueType type = TypeOf(array);
+    this->Add(type.FileBits == 1 ? (values + 7) / 8 : Times(values, type.MemoryBytes), where);
+  }
+
+  /**
+   * The last of an offsets array's `values` integers (checked before): the
+   * connectivity's length, as VTK will read it.
+   */
+  Bytes LastValue(vtkXMLDataElement* array, Bytes values, const std::string& where)
+  {
+    const ValueType type = TypeOf(array);
+    if (!type.Integer)
     {
-      return std::nullopt;
+      throw ArrayProblem(where, "its type is not an integer type");
     }
-    if (Format(array) == "ascii")
-    {
-      const std::string text(InlineText(this->Layout, array));
-      const std::size_t end = text.find_last_not_of(" \t\r\n");
-      if (end == std::string::npos)
-      {
-        return std::nullopt;
-      }
-      const std::size_t begin = text.find_last_of(" \t\r\n", end);
-      return std::strtoll(text.c_str() + (begin == std::string::npos ? 0 : begin + 1), nullptr, 10);
-    }
+    const Bytes wordSize = type.MemoryBytes;
+    const auto negative = [&]() -> Bytes
+    { throw ArrayProblem(where, "its last offset is negative"); };
+    const auto unreadable = [&]() -> Bytes
+    { throw ArrayProblem(where, "its last value cannot be decoded"); };
     const std::optional<Encoded> data = BinaryData(this->Layout, array, where);
     if (!data)
     {
-      return std::nullopt;
+      const std::optional<long long> last = AsciiValue(InlineText(this->Layout, array), values - 1);
+      return !last ? unreadable() : *last < 0 ? negative() : static_cast<Bytes>(*last);
     }
     const Header header = ReadHeader(this->Layout, *data, where);
     const Bytes at = (values - 1) * wordSize;
-    if (this->Layout.Compressor &&
-      (header.BlockSize == 0 || at / header.BlockSize >= header.Blocks.size()))
-    {
-      return std::nullopt; // VTK finds the array too short when it reads it
-    }
     unsigned char word[8] = {};
     if (!this->Layout.Compressor)
     {
-      data->Read(header.HeaderBytes + at, wordSize, word);
+      if (!data->Read(header.HeaderBytes + at, wordSize, word))
+      {
+        return unreadable();
+      }
     }
     else
     {
       // The block that holds the last value, decompressed: no bigger than
-      // the array, whose size Check has already counted.
+      // the array, whose size Check has held to its count.
       const Bytes block = at / header.BlockSize;
+      if (block >= header.Blocks.size())
+      {
+        return unreadable();
+      }
       Bytes start = 0;
       for (Bytes i = 0; i < block; ++i)
       {
@@ -382,17 +437,14 @@ public:
         this->Layout.Compressor->Uncompress(
           compressed.data(), compressed.size(), decoded.data(), decoded.size()) != size)
       {
-        return std::nullopt; // VTK says what is wrong when it reads it
+        return unreadable();
       }
       std::memcpy(word, decoded.data() + at % header.BlockSize, wordSize);
     }
     const Bytes raw = Word(word, static_cast<unsigned>(wordSize), this->Layout.BigEndian);
-    const bool isSigned = type[0] == 'I';
-    if (isSigned && wordSize < 8 && (raw >> (8 * wordSize - 1)))
-    {
-      return -1; // negative: VTK's check of the offsets refuses it
-    }
-    return static_cast<long long>(raw);
+    const char* name = array->GetAttribute("type");
+    const bool isSigned = name[0] == 'I';
+    return isSigned && (raw >> (8 * wordSize - 1)) ? negative() : raw;
   }
 
 private:
@@ -415,6 +467,8 @@ private:
           " bytes: a decompression bomb, not a mesh");
     }
   }
+
+  void Remove(Bytes bytes) { this->Total -= std::min(bytes, this->Total); }
 
   const FileLayout& Layout;
   Bytes Total = 0;
@@ -466,31 +520,145 @@ vtkSmartPointer<vtkDataCompressor> CompressorNamed(const char* name)
     "\" is none of VTK's (vtkZLibDataCompressor, vtkLZ4DataCompressor, vtkLZMADataCompressor)");
 }
 
+// The file's bytes as a stream that VTK's parser can seek in, uncopied.
+class ViewBuffer : public std::streambuf
+{
+public:
+  explicit ViewBuffer(std::string_view bytes)
+  {
+    char* begin = const_cast<char*>(bytes.data());
+    this->setg(begin, begin, begin + bytes.size());
+  }
+
+protected:
+  pos_type seekoff(off_type offset, std::ios_base::seekdir from, std::ios_base::openmode) override
+  {
+    char* base = from == std::ios_base::beg ? this->eback()
+      : from == std::ios_base::cur          ? this->gptr()
+                                            : this->egptr();
+    if (offset < this->eback() - base || offset > this->egptr() - base)
+    {
+      return pos_type(off_type(-1));
+    }
+    this->setg(this->eback(), base + offset, this->egptr());
+    return pos_type(this->gptr() - this->eback());
+  }
+
+  pos_type seekpos(pos_type position, std::ios_base::openmode mode) override
+  {
+    return this->seekoff(off_type(position), std::ios_base::beg, mode);
+  }
+};
+
+// The parser's first error as one line; its warnings dropped (VTK's reader
+// gives them again when it reads the file).
+struct FirstError
+{
+  explicit FirstError(vtkObject* parser)
+  {
+    parser->AddObserver(vtkCommand::ErrorEvent, this, &FirstError::Catch);
+    parser->AddObserver(vtkCommand::WarningEvent, this, &FirstError::Ignore);
+  }
+  void Catch(vtkObject*, unsigned long, void* text)
+  {
+    if (this->Text.empty())
+    {
+      this->Text = vtkShadelabOutputWindow::OneLine(static_cast<const char*>(text));
+    }
+  }
+  void Ignore(vtkObject*, unsigned long, void*) {}
+  std::string Text;
+};
+
+// The one DataArray named `name` of a cells element: VTK takes the first
+// of its time step, so a second one (time steps) is not read at all.
+vtkXMLDataElement* CellArray(vtkXMLDataElement* cells, const char* name, const std::string& where)
+{
+  vtkXMLDataElement* found = nullptr;
+  for (int a = 0; a < cells->GetNumberOfNestedElements(); ++a)
+  {
+    vtkXMLDataElement* array = cells->GetNestedElement(a);
+    const char* arrayName = array->GetAttribute("Name");
+    if (arrayName && std::string_view(arrayName) == name)
+    {
+      if (found)
+      {
+        throw MeshReadError(where + " has more than one " + name + " array (time steps?)");
+      }
+      found = array;
+    }
+  }
+  return found;
+}
+
 void CheckCells(
   ArrayChecker& arrays, vtkXMLDataElement* cells, Bytes count, const std::string& piece)
 {
   const std::string kind = cells->GetName();
-  vtkXMLDataElement* offsets =
-    cells->FindNestedElementWithNameAndAttribute("DataArray", "Name", "offsets");
-  vtkXMLDataElement* connectivity =
-    cells->FindNestedElementWithNameAndAttribute("DataArray", "Name", "connectivity");
+  vtkXMLDataElement* offsets = CellArray(cells, "offsets", kind + " of " + piece);
+  vtkXMLDataElement* connectivity = CellArray(cells, "connectivity", kind + " of " + piece);
   if (!offsets || !connectivity || count == 0)
   {
     return; // VTK names a missing array itself
   }
   const std::string where = kind + " offsets of " + piece;
   arrays.Check(offsets, count, where);
-  const std::optional<long long> length = arrays.LastValue(offsets, count, where);
-  if (length && *length >= 0)
+  arrays.Allocate(offsets, Plus(count, 1), where);
+  const Bytes length = arrays.LastValue(offsets, count, where);
+  const std::string connectivityWhere = kind + " connectivity of " + piece;
+  arrays.Check(connectivity, length, connectivityWhere);
+  arrays.Allocate(connectivity, length, connectivityWhere);
+}
+
+// The point and cell counts of all pieces: VTK allocates the first piece's
+// arrays for all of them at once.
+struct Totals
+{
+  Bytes Points = 0;
+  Bytes Cells = 0;
+};
+
+Bytes CellCount(vtkXMLDataElement* piece, const std::string& where)
+{
+  Bytes cells = 0;
+  for (const char* cellKind : { "Verts", "Lines", "Strips", "Polys" })
   {
-    arrays.Check(connectivity, static_cast<Bytes>(*length), kind + " connectivity of " + piece);
+    cells = Plus(cells, Count(piece, (std::string("NumberOf") + cellKind).c_str(), where));
   }
+  return cells;
+}
+
+Totals CountAll(vtkXMLDataElement* polyData)
+{
+  Totals totals;
+  for (int p = 0, number = 0; p < polyData->GetNumberOfNestedElements(); ++p)
+  {
+    vtkXMLDataElement* piece = polyData->GetNestedElement(p);
+    if (std::string_view(piece->GetName()) == "Piece")
+    {
+      const std::string where = "piece " + std::to_string(++number);
+      totals.Points = Plus(totals.Points, Count(piece, "NumberOfPoints", where));
+      totals.Cells = Plus(totals.Cells, CellCount(piece, where));
+    }
+  }
+  return totals;
 }
 }
 
-void CheckXMLPolyDataArrays(vtkXMLDataParser* parser, std::string_view file)
+void CheckXMLPolyDataArrays(std::string_view file)
 {
-  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  // A parser of its own: VTK's reader reads the FieldData arrays already
+  // when it reads the elements.
+  ViewBuffer buffer(file);
+  std::istream stream(&buffer);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetStream(&stream);
+  FirstError errors(parser);
+  if (!parser->Parse())
+  {
+    throw MeshReadError(errors.Text.empty() ? "cannot be parsed as XML" : errors.Text);
+  }
+  vtkXMLDataElement* root = parser->GetRootElement();
   vtkXMLDataElement* polyData = root ? root->FindNestedElementWithName("PolyData") : nullptr;
   if (!polyData)
   {
@@ -520,9 +688,9 @@ void CheckXMLPolyDataArrays(vtkXMLDataParser* parser, std::string_view file)
   }
 
   ArrayChecker arrays(layout);
-  const int pieceCount = polyData->GetNumberOfNestedElements();
+  const Totals totals = CountAll(polyData);
   int pieceNumber = 0;
-  for (int p = 0; p < pieceCount; ++p)
+  for (int p = 0; p < polyData->GetNumberOfNestedElements(); ++p)
   {
     vtkXMLDataElement* element = polyData->GetNestedElement(p);
     const std::string_view kind = element->GetName();
@@ -532,7 +700,9 @@ void CheckXMLPolyDataArrays(vtkXMLDataParser* parser, std::string_view file)
       {
         vtkXMLDataElement* array = element->GetNestedElement(a);
         const std::string where = "FieldData array " + ArrayName(array);
-        arrays.Check(array, Times(Count(array, "NumberOfTuples", where), Components(array)), where);
+        const Bytes values = Times(Count(array, "NumberOfTuples", where), Components(array));
+        arrays.Check(array, values, where);
+        arrays.Allocate(array, values, where);
       }
       continue;
     }
@@ -542,11 +712,7 @@ void CheckXMLPolyDataArrays(vtkXMLDataParser* parser, std::string_view file)
     }
     const std::string piece = "piece " + std::to_string(++pieceNumber);
     const Bytes points = Count(element, "NumberOfPoints", piece);
-    Bytes cells = 0;
-    for (const char* cellKind : { "Verts", "Lines", "Strips", "Polys" })
-    {
-      cells = Plus(cells, Count(element, (std::string("NumberOf") + cellKind).c_str(), piece));
-    }
+    const Bytes cells = CellCount(element, piece);
     for (int s = 0; s < element->GetNumberOfNestedElements(); ++s)
     {
       vtkXMLDataElement* section = element->GetNestedElement(s);
@@ -559,6 +725,11 @@ void CheckXMLPolyDataArrays(vtkXMLDataParser* parser, std::string_view file)
           vtkXMLDataElement* array = section->GetNestedElement(a);
           const std::string where = name + " array " + ArrayName(array) + " of " + piece;
           arrays.Check(array, Times(pointArrays ? points : cells, Components(array)), where);
+          if (pieceNumber == 1)
+          {
+            arrays.Allocate(
+              array, Times(pointArrays ? totals.Points : totals.Cells, Components(array)), where);
+          }
         }
       }
       else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys")

@@ -61,18 +61,9 @@ public:
   }
 
   /** Runs the reader; throws its first error if it failed or reported one. */
-  void Update() { this->ThrowIfFailed(this->Executive->Update()); }
-
-  /** Runs the reader's information pass (an XML reader parses its elements). */
-  void UpdateInformation()
+  void Update()
   {
-    this->Reader->UpdateInformation();
-    this->ThrowIfFailed(true);
-  }
-
-private:
-  void ThrowIfFailed(bool ok)
-  {
+    const int ok = this->Executive->Update();
     if (!ok || !this->First.empty())
     {
       const unsigned long code = this->Reader->GetErrorCode();
@@ -82,6 +73,7 @@ private:
     }
   }
 
+private:
   void Catch(vtkObject*, unsigned long, void* text)
   {
     if (this->First.empty())
@@ -134,14 +126,12 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
     // VTK reads the bytes checked here, from memory: its own reading of the
     // file could meet another file by then.
     std::string bytes = ReadFileBytes(fileName);
+    shadelab::CheckXMLPolyDataArrays(bytes);
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->ReadFromInputStringOn();
     reader->SetInputString(bytes);
-    NestedReader nested(reader);
-    nested.UpdateInformation();
-    shadelab::CheckXMLPolyDataArrays(reader->GetXMLParser(), bytes);
     std::string().swap(bytes);
-    nested.Update();
+    NestedReader(reader).Update();
     shadelab::MakeTriangleMesh(reader->GetOutput(), triangles);
   }
   else if (extension == ".gltf" || extension == ".glb")

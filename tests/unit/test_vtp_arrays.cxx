@@ -5,7 +5,9 @@
 #include "shadelabXMLArraySizes.h"
 
 #include <vtkCellArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -162,7 +164,8 @@ TEST_F(MeshReaders, VtpArraySizesMustMatchTheCounts)
 {
   std::string vtp = Vtp(Quad(), Layout::AppendedRaw, true);
   const std::size_t header = AppendedStart(vtp) + OffsetOf(vtp, "N");
-  PutWord(vtp, header + 8, 3u << 30); // its one (last) block of 3 GiB
+  PutWord(vtp, header + 4, 3u << 30); // its one block, of 3 GiB
+  PutWord(vtp, header + 8, 3u << 30);
   this->ExpectError(
     "block.vtp", vtp, { "it decodes to 3221225472 bytes, but its 12 values of Float32 are 48" });
 
@@ -180,6 +183,62 @@ TEST_F(MeshReaders, VtpArraySizesMustMatchTheCounts)
   this->ExpectError("ascii.vtp", vtp, { "declares 3000000000 values, but its text holds at most" });
 }
 
+// VTK reads an array with an offset as appended whatever its format says, and
+// divides by the block size: neither slips past.
+TEST_F(MeshReaders, VtpArraysAreCheckedAsVtkReadsThem)
+{
+  std::string vtp = Vtp(Quad(), Layout::AppendedRaw, true);
+  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N"), 1u << 28);
+  const std::size_t n = vtp.find("Name=\"N\"");
+  vtp.replace(vtp.find("format=\"appended\"", n), 17, "format=\"ascii\"   ");
+  this->ExpectError("format.vtp", vtp, { "lists 268435456 blocks" });
+
+  vtp = Vtp(Quad(), Layout::AppendedRaw, true);
+  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N") + 4, 0);
+  this->ExpectError(
+    "zero.vtp", vtp, { "block sizes (0, last 48) are not a block size and a remainder" });
+}
+
+// FieldData is read while VTK reads the elements: checked before that.
+TEST_F(MeshReaders, VtpFieldDataCountsAreCheckedFirst)
+{
+  vtkSmartPointer<vtkPolyData> quad = Quad();
+  vtkNew<vtkIntArray> version;
+  version->SetName("version");
+  version->InsertNextValue(3);
+  quad->GetFieldData()->AddArray(version);
+  std::string vtp = Vtp(quad, Layout::Ascii, false);
+  Replace(vtp, "NumberOfTuples=\"1\"", "NumberOfTuples=\"1000000000\"");
+  this->ExpectError("field.vtp", vtp,
+    { "FieldData array 'version'", "declares 1000000000 values, but its text holds at most" });
+}
+
+// VTK allocates the first piece's arrays for the points of every piece: a
+// wide array on a one-point piece, then 10,000 points.
+TEST_F(MeshReaders, VtpFirstPieceArraysAreCountedForAllPieces)
+{
+  const auto zeros = [](int n)
+  {
+    std::string text;
+    for (int i = 0; i < n; ++i)
+    {
+      text += "0 ";
+    }
+    return text;
+  };
+  const std::string points =
+    "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">";
+  const std::string vtp = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+                          "byte_order=\"LittleEndian\" header_type=\"UInt32\"><PolyData>"
+                          "<Piece NumberOfPoints=\"1\"><PointData><DataArray type=\"Float64\" "
+                          "Name=\"wide\" NumberOfComponents=\"100000\" format=\"ascii\">" +
+    zeros(100000) + "</DataArray></PointData>" + points + zeros(3) +
+    "</DataArray></Points></Piece><Piece NumberOfPoints=\"10000\">" + points + zeros(30000) +
+    "</DataArray></Points></Piece></PolyData></VTKFile>\n";
+  this->ExpectError("pieces.vtp", vtp,
+    { "PointData array 'wide' of piece 1: the arrays up to here decode to 7630 MiB" });
+}
+
 // The connectivity's length is the offsets' last value, read before VTK
 // allocates it: in text, raw, base64 and compressed.
 TEST_F(MeshReaders, VtpConnectivityLongerThanItsData)
@@ -190,6 +249,12 @@ TEST_F(MeshReaders, VtpConnectivityLongerThanItsData)
   vtp.replace(six, 1, "600000000000");
   this->ExpectError(
     "text.vtp", vtp, { "Polys connectivity of piece 1", "declares 600000000000 values" });
+  // VTK reads as many offsets as there are cells, and no more.
+  vtp = Vtp(Quad(), Layout::Ascii, false);
+  Replace(vtp, "NumberOfPolys=\"2\"", "NumberOfPolys=\"1\"");
+  const std::size_t polys = vtp.find("Name=\"offsets\"", vtp.find("<Polys>"));
+  vtp.replace(vtp.find('3', vtp.find('>', polys)), 1, "600000000000");
+  this->ExpectError("first.vtp", vtp, { "declares 600000000000 values" });
 
   for (const Layout layout : { Layout::Binary, Layout::AppendedRaw, Layout::AppendedBase64 })
   {

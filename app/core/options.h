@@ -1,4 +1,4 @@
-// The command line's options (DESIGN.md, "Command line"), declared once and
+// The command line's options (doc/design.md, "Command line"), declared once and
 // shared by every command that renders a mesh.
 #ifndef shadelab_options_h
 #define shadelab_options_h

@@ -1,4 +1,4 @@
-// Explaining a pixel (DESIGN.md, "Explaining a pixel"): which triangle lies
+// Explaining a pixel (doc/design.md, "Explaining a pixel"): which triangle lies
 // under pixel (X, Y) of the picture a scene makes, and how the lecture's
 // equation gives its colour there under the scene's rule, from the mesh and
 // camera as `render` draws them. What `shadelab probe` prints; the window

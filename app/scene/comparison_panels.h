@@ -46,7 +46,7 @@ std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base)
 
 /**
  * Leaves only the chosen terms of the illumination in scene, by zeroing the
- * others' coefficients: the shaders then hold no code for them (DESIGN.md,
+ * others' coefficients: the shaders then hold no code for them (doc/design.md,
  * generated for what the scene needs).
  */
 void ShowTerms(SceneOptions& scene, bool ambient, bool diffuse, bool specular);

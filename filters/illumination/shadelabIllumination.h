@@ -1,4 +1,4 @@
-// The inputs of the lecture's illumination model (DESIGN.md, "The
+// The inputs of the lecture's illumination model (doc/design.md, "The
 // illumination model"): materials, lights, and the shading and reflection
 // rules. Plain data, shared by the shader generator, the CPU oracle and the
 // program.

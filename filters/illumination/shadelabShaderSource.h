@@ -1,5 +1,5 @@
 // The lecture's equation and shading rules as GLSL, generated for what a
-// scene needs and nothing more (DESIGN.md, "The shading rules"): the number
+// scene needs and nothing more (doc/design.md, "The shading rules"): the number
 // and kinds of lights compiled in, no specular code when ks is zero, lighting
 // in the vertex stage for Gouraud, in the fragment stage for Phong, and for
 // flat in the fragment stage with one triangle's inputs (its provoking

@@ -1,5 +1,5 @@
 // The lecture's illumination model and shading rules in double precision:
-// the oracle for tests and accuracy measurements (DESIGN.md, "The
+// the oracle for tests and accuracy measurements (doc/design.md, "The
 // illumination model"). Each function mirrors, line by line, a GLSL function
 // of the same name in shadelabShaderSource.cxx, so that a reader can hold one
 // against the other.

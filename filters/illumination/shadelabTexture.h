@@ -1,4 +1,4 @@
-// Texture maps for the lecture's kd, ka and ks (DESIGN.md, "Meshes in"): an
+// Texture maps for the lecture's kd, ka and ks (doc/design.md, "Command line"): an
 // image of linear RGB, how it wraps and filters, and its lookup as OpenGL
 // defines it (texel centres at (i + 0.5)/size, GL_REPEAT, GL_CLAMP_TO_EDGE
 // and GL_MIRRORED_REPEAT, GL_NEAREST and GL_LINEAR without mipmaps), in

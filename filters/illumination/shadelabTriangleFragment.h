@@ -1,4 +1,4 @@
-// One fragment of a triangle under each shading rule (DESIGN.md, "The
+// One fragment of a triangle under each shading rule (doc/design.md, "The
 // shading rules"), through the oracle: where the rule evaluates the
 // equation, with which normal, and how the rasteriser mixes what it gives.
 // What the oracle tests expect of a pixel and what `shadelab probe` explains.

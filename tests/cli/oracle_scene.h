@@ -10,7 +10,7 @@
 // with normals and uchar colours where the scene has vertex colours; with an
 // MTL file and `usemtl` where its cells are parts of their own materials). A whole
 // scene can be scaled and translated (mesh, lights, camera, parallel scale).
-// The expected image follows DESIGN.md's shading rules through the oracle's
+// The expected image follows doc/design.md's shading rules through the oracle's
 // functions, in world coordinates: the ray through each pixel centre meets
 // the mesh in double precision (filters/groundtruth/shadelabPixelRays.h) and
 // the fragment it meets is shaded by its rule
@@ -782,7 +782,7 @@ private:
     return false;
   }
 
-  // The rules of DESIGN.md through the oracle's functions.
+  // The rules of doc/design.md through the oracle's functions.
   void Shade(int t, const std::array<double, 3>& w, bool front, Expected& e) const
   {
     shadelab::TriangleFragment f;

@@ -1,4 +1,4 @@
-// Bad input (DESIGN.md, "Command line"): a one-line error on stderr naming
+// Bad input (doc/design.md, "Command line"): a one-line error on stderr naming
 // the input and the problem, a non-zero exit, no crash and no output file.
 #include "cli_test_support.h"
 

@@ -1,4 +1,4 @@
-// `shadelab probe` (DESIGN.md, "Explaining a pixel"), pixel by pixel over
+// `shadelab probe` (doc/design.md, "Explaining a pixel"), pixel by pixel over
 // the bunny (perspective) and the teapot (orthographic), for each rule and
 // both reflection models, under point, directional and spot lights: the
 // oracle is the sum of its terms, `rendered` is render's float picture at

@@ -140,7 +140,7 @@ vtkSmartPointer<vtkPolyData> MakeMesh(
   return mesh;
 }
 
-// The angle-weighted vertex normals of DESIGN.md in long double: the sum
+// The angle-weighted vertex normals of doc/design.md in long double: the sum
 // over a vertex's faces of the face's angle there times its unit normal,
 // normalised; faces of no area add nothing.
 std::vector<Vec3> AngleWeightedOracle(

@@ -56,7 +56,8 @@ CLI::App* AddProbeCommand(CLI::App& program, ProbeOptions& o)
     ->allow_extra_args(false) // one pixel an occurrence: MESH may follow it
     ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   probe->add_flag("--json", o.Json,
-    "One JSON object per pixel, one a line, instead of the text (README.md lists the keys)");
+    "One JSON object per pixel, one a line, instead of the text (doc/user/probe.md lists the "
+    "keys)");
   probe->add_flag("-q,--quiet", o.Quiet, "No warnings");
   probe->footer(CameraHelp);
   return probe;

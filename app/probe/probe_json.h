@@ -1,5 +1,5 @@
 // A pixel explained, as JSON: the contract of `shadelab probe --json`
-// (doc/design.md, "Explaining a pixel"; README.md lists every key).
+// (doc/design.md, "Explaining a pixel"; doc/user/probe.md lists every key).
 #ifndef shadelab_probe_json_h
 #define shadelab_probe_json_h
 

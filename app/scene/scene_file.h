@@ -1,6 +1,6 @@
 // Scene files: `shadelab render --scene FILE.json` takes every
 // scene option, and many shots, from one JSON file. The format is
-// data/scene.schema.json (`shadelab render --print-schema`); README.md
+// data/scene.schema.json (`shadelab render --print-schema`); doc/user/scenes-and-batches.md
 // shows it. Every value goes through the command line's own parsers, so a
 // key means exactly what its option means.
 #ifndef shadelab_scene_file_h

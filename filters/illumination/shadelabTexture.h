@@ -76,8 +76,8 @@ struct TextureMap
 /**
  * What a surface's texture map stands for: kd, ka or both are factor x
  * texel; ks, where Ks is set, is ks + KsScale x (texel - 1), the part
- * KsScale of ks times the texel (a glTF metal's m B of its ks, README
- * "Materials from glTF").
+ * KsScale of ks times the texel (a glTF metal's m B of its ks,
+ * doc/user/formats-and-materials.md, "Materials from glTF").
  */
 struct SurfaceTexture
 {

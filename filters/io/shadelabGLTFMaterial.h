@@ -2,8 +2,8 @@
  * @brief   a glTF material in the lecture's terms
  *
  * glTF's metallic-roughness model has no ka, kd, ks, ns; LectureMaterial
- * maps it by a common Blinn-Phong approximation (README, "Materials from
- * glTF"): with base colour B (baseColorFactor's r g b), metallic m and
+ * maps it by a common Blinn-Phong approximation (doc/user/formats-and-materials.md,
+ * "Materials from glTF"): with base colour B (baseColorFactor's r g b), metallic m and
  * roughness r (their factors, each clamped to [0, 1]; defaults 1, 1, 1 as
  * the specification says),
  *

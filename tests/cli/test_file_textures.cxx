@@ -29,9 +29,9 @@ namespace
 using Rgb = std::array<double, 3>;
 
 // BoxTextured's material has glTF's default metallic factor 1, which the
-// glTF mapping makes kd = ka = 0 (README, "Materials from glTF"): its texture
-// would multiply nothing. The copies written here say metallic 0, so that
-// kd = ka = 1 x texel. The .gltf is copied beside its buffer and image.
+// glTF mapping makes kd = ka = 0 (doc/user/formats-and-materials.md, "Materials from glTF"): its
+// texture would multiply nothing. The copies written here say metallic 0, so that kd = ka = 1 x
+// texel. The .gltf is copied beside its buffer and image.
 void SetNotMetallic(json& document)
 {
   document.at("materials").at(0).at("pbrMetallicRoughness")["metallicFactor"] = 0;

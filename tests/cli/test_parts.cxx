@@ -39,7 +39,7 @@ const Rgb RedKa{ 0.25, 0, 0 }, RedKd{ 0.75, 0.125, 0.0625 }, RedKs{ 0.5, 0.5, 0.
 // The same square as glTF, one primitive per triangle, with the materials
 // "left" (part 0) and "right" (part 1): base colours B, metallic 0 and
 // roughness 1, which the reader maps to kd = ka = B, ks = 0.04, ns = 0
-// (README, "Materials from glTF"). The buffer holds the six corners as
+// (doc/user/formats-and-materials.md, "Materials from glTF"). The buffer holds the six corners as
 // float x y z, then a colour for each; with `vertexColors` they are COLOR_0.
 std::string GltfText(bool vertexColors)
 {

@@ -1,5 +1,5 @@
 // shadelab-bench-png PICTURE.png...: the cost of PNG's zlib level and row
-// filter (scripts/bench-png; BENCHMARKS.md, "PNG encoding"). Each picture's
+// filter (scripts/bench-png; doc/benchmarks-log.md, "PNG encoding"). Each picture's
 // pixels are encoded into memory through OpenImageIO at each level and
 // filter, the median time of ROUNDS and the size printed as a markdown
 // table, and each encoding decoded again from memory (as textures are) to

@@ -1,7 +1,7 @@
 // The end of a command whose every output is on disk: the process leaves
 // without freeing what it holds. Tearing down VTK's contexts and scenes,
 // OSMesa and the image writer's pipe takes a 1080p screenshot about 30 ms
-// (BENCHMARKS.md, "One 1080p screenshot"), and the kernel frees it all anyway.
+// (doc/benchmarks-log.md, "One 1080p screenshot"), and the kernel frees it all anyway.
 #ifndef shadelab_exit_without_teardown_h
 #define shadelab_exit_without_teardown_h
 

@@ -36,7 +36,7 @@ namespace
 {
 // How many pictures may be with the writer, submitted and not collected:
 // enough that encoding (one thread a picture in the writer) keeps pace with
-// rendering on two cores; each holds its pixels, so few (BENCHMARKS.md,
+// rendering on two cores; each holds its pixels, so few (doc/benchmarks-log.md,
 // "Many shots").
 constexpr std::size_t PicturesInFlight = 3;
 
@@ -329,7 +329,7 @@ int RenderShots(
   // largest mmap threshold, so each came from fresh pages, faulted in and
   // zeroed, and went back on free: with the 8-bit pixels sent, a quarter of
   // a 1080p batch's CPU time in the kernel. Kept in the heap instead, the
-  // next picture reuses them (BENCHMARKS.md, "Many shots"); so do an 8-bit
+  // next picture reuses them (doc/benchmarks-log.md, "Many shots"); so do an 8-bit
   // file's smaller buffers from the start. Only up to the
   // largest picture: a large mesh's arrays stay mapped, so that each goes
   // back to the system when freed rather than raising the heap's peak.

@@ -103,7 +103,7 @@ std::string ImageEncoder::Open(const ImageRequest& first)
   if (LowerExtension(first.Path) == ".png")
   {
     // zlib level 4 with every row's filter "up", chosen by measurement at
-    // 1080p (BENCHMARKS.md, "PNG encoding"): 2.5-3x faster than
+    // 1080p (doc/benchmarks-log.md, "PNG encoding"): 2.5-3x faster than
     // OpenImageIO's level 6 with libpng's adaptive filter, for files 6-8%
     // larger. Only the file's size changes: PNG is lossless.
     this->Spec.attribute("png:compressionLevel", 4);

@@ -41,7 +41,9 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
   // pictures (render, compare).
   view->remove_option(view->get_option("--ssaa"));
   view->get_option("MESH")->required();
-  view->get_option("--size")->description("Window size in pixels (default 1024x768)");
+  view->get_option("--size")->description(
+    "The 3D view's size in pixels (default 1024x768, made smaller in the same shape where the "
+    "window with its controls would not fit the screen; a given size is kept)");
   view
     ->add_option("--interactive-shading", o.InteractiveShading,
       "A cheaper rule while the mouse drags; the full rule returns on release")

@@ -25,8 +25,9 @@ struct ViewOptions
   std::optional<Shading> InteractiveShading; // the rule while the mouse drags
   bool Compare = false;                      // start in the comparison layout
   ComparisonOptions Panels;                  // its panels, as compare's
-  int MeasureDrag = 0; // frames of a simulated drag to time, then exit (scripts/bench-view)
-  bool Quiet = false;  // no warnings
+  bool SizeGiven = false; // --size was given: the window keeps it even where the screen is smaller
+  int MeasureDrag = 0;    // frames of a simulated drag to time, then exit (scripts/bench-view)
+  bool Quiet = false;     // no warnings
 };
 
 /** Declares the view command and its options on the program. */

@@ -291,15 +291,17 @@ std::string MemoryFile::Read() const
   return text;
 }
 
-std::string MemoryFile::WriteTo(const std::string& path) const
+bool MemoryFile::AtSizeLimit() const
 {
-  // A file-size limit (ulimit -f) stops the memory file too, and a writer
-  // that checks none of its writes (vtkOBJWriter) ends content with what
-  // fitted: a file as big as the limit may have been cut there.
   struct stat held = {};
   rlimit limit = {};
-  if (fstat(this->Memory, &held) == 0 && getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
-    limit.rlim_cur != RLIM_INFINITY && static_cast<rlim_t>(held.st_size) >= limit.rlim_cur)
+  return fstat(this->Memory, &held) == 0 && getrlimit(RLIMIT_FSIZE, &limit) == 0 &&
+    limit.rlim_cur != RLIM_INFINITY && static_cast<rlim_t>(held.st_size) >= limit.rlim_cur;
+}
+
+std::string MemoryFile::WriteTo(const std::string& path) const
+{
+  if (this->AtSizeLimit())
   {
     return CannotWrite(EFBIG);
   }
@@ -325,6 +327,10 @@ std::string WriteFileThroughMemory(
   }
   const std::string name = memory.Name();
   std::string error = write(name);
+  if (!error.empty() && memory.AtSizeLimit())
+  {
+    return CannotWrite(EFBIG); // the cause, whatever the writer made of it
+  }
   // A writer's message names the file it was given: the user's is the output.
   for (auto at = error.find(name); at != std::string::npos; at = error.find(name, at + path.size()))
   {

@@ -81,13 +81,17 @@ public:
   /** "" while all is well, else "cannot write: REASON". */
   const std::string& Error() const { return this->Failure; }
 
+  /**
+   * Whether it holds as much as the file-size limit (ulimit -f) allows: a
+   * writer stopped there (with EFBIG, which one that checks none of its
+   * writes, vtkOBJWriter, never sees) and what came after is lost.
+   */
+  bool AtSizeLimit() const;
+
   /** What the file holds (a log, say). */
   std::string Read() const;
-  /**
-   * Writes what it holds to path through an OutputFile: "" or "cannot
-   * write: REASON" (File too large where it holds as much as the file-size
-   * limit allows: what was written past it is lost).
-   */
+  /** Writes what it holds to path through an OutputFile: "" or "cannot write: REASON" (File too
+   * large AtSizeLimit). */
   std::string WriteTo(const std::string& path) const;
 
 private:

@@ -16,9 +16,11 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSurfaceFormat>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -42,21 +44,26 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   scroll->setMinimumWidth(this->Panel->sizeHint().width() + 24);
   dock->setWidget(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
-  // Tabbed with the controls: the window keeps its size.
+  // The shader and the probe tabbed with the controls, right of the view
+  // (which stays at the window's top left, where the window tests' mouse
+  // finds it): one dock's width beside the view, so that the window fits a
+  // laptop's screen, and the controls in front at start.
   auto* shaderDock = new QDockWidget("Shader", this);
   shaderDock->setObjectName("shader dock");
   shaderDock->setWidget(this->Shaders);
   this->addDockWidget(Qt::RightDockWidgetArea, shaderDock);
   this->tabifyDockWidget(dock, shaderDock);
-  dock->raise();
   auto* probe = new QDockWidget("Probe", this);
   probe->setWidget(this->Readout);
-  // Beside the controls, not under them (the window would grow taller than
-  // the 3D view's --size) nor left of the view (which stays at the window's
-  // top left, where the window tests' mouse finds it).
   this->addDockWidget(Qt::RightDockWidgetArea, probe);
-  this->splitDockWidget(dock, probe, Qt::Horizontal);
-  inspector.ProbeChanged = [this] { this->Readout->Show(); };
+  this->tabifyDockWidget(shaderDock, probe);
+  this->Controls = dock;
+  // A probed pixel brings its readout to the front.
+  inspector.ProbeChanged = [this, probe]
+  {
+    this->Readout->Show();
+    probe->raise();
+  };
   this->Readout->TermPicked = [this](Terms term) { this->Shaders->HighlightTerm(term); };
   inspector.Changed = [this]
   {
@@ -69,7 +76,7 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   qApp->installEventFilter(this);
 }
 
-bool InspectorWindow::Open(const ImageSize& size)
+bool InspectorWindow::Open(const ImageSize& size, bool sizeGiven)
 {
   const QSize view(size.Width, size.Height);
   this->View->resize(view);
@@ -79,6 +86,9 @@ bool InspectorWindow::Open(const ImageSize& size)
   // The 3D view exactly --size, as the headless picture: the dock takes the rest.
   this->resize(this->size() + view - this->View->size());
   QApplication::processEvents();
+  // In front once shown: before, Qt keeps the last tab added in front.
+  this->Controls->raise();
+  this->FitScreen(view, sizeGiven);
   this->View->setFocus();
   this->Engine.Start();
   this->Shaders->Show(this->Engine.GetShownShaders());
@@ -88,6 +98,44 @@ bool InspectorWindow::Open(const ImageSize& size)
     this->Engine.OnKey(key);
   }
   return this->isVisible();
+}
+
+void InspectorWindow::FitScreen(const QSize& view, bool sizeGiven)
+{
+  const QRect screen = this->screen()->availableGeometry();
+  // What the window needs beside its view: the docks, and the frame a
+  // window manager adds (none without one).
+  const QSize around = this->frameGeometry().size() - this->View->size();
+  const QSize room = screen.size() - around;
+  if (view.width() > room.width() || view.height() > room.height())
+  {
+    if (sizeGiven)
+    {
+      // The picture asked for is kept: what the window shows is what
+      // Copy command and the screenshot key give.
+      ReportWarnings("view",
+        { "--size " + std::to_string(view.width()) + "x" + std::to_string(view.height()) +
+          " with the controls needs " + std::to_string(view.width() + around.width()) + "x" +
+          std::to_string(view.height() + around.height()) + " pixels, more than the screen's " +
+          std::to_string(screen.width()) + "x" + std::to_string(screen.height()) });
+    }
+    else
+    {
+      // Smaller in the same shape, so that the fitted camera frames the
+      // mesh as the headless picture of that size does.
+      const double scale = std::min(static_cast<double>(room.width()) / view.width(),
+        static_cast<double>(room.height()) / view.height());
+      const QSize fitted(std::max(1, static_cast<int>(view.width() * scale)),
+        std::max(1, static_cast<int>(view.height() * scale)));
+      this->resize(this->size() + fitted - this->View->size());
+      QApplication::processEvents();
+    }
+  }
+  if (!screen.contains(this->frameGeometry()))
+  {
+    this->move(screen.topLeft());
+    QApplication::processEvents();
+  }
 }
 
 bool InspectorWindow::eventFilter(QObject* watched, QEvent* event)
@@ -139,7 +187,7 @@ int RunView(const ViewOptions& options, const std::string& commandLine)
   char* argv[] = { name, nullptr };
   QApplication application(argc, argv);
   InspectorWindow window(inspector);
-  if (!window.Open(options.Scene.Size))
+  if (!window.Open(options.Scene.Size, options.SizeGiven))
   {
     return 0;
   }

@@ -1,7 +1,7 @@
 // shadelab-view's Qt window: the inspector's 3D view (VTK's
 // QVTKOpenGLNativeWidget showing the Inspector's render window) with the
-// control panel in a dock beside it, the running shader's panel in a dock
-// tabbed with it, and the probe's readout in a dock beside them. Every key of the key table
+// control panel in a dock beside it, the running shader's panel and the
+// probe's readout in docks tabbed with it. Every key of the key table
 // (desktop/view_keys.h) works wherever the focus is, but in a field being
 // typed into.
 #ifndef shadelab_inspector_window_h
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+class QDockWidget;
 class QVTKOpenGLNativeWidget;
 
 namespace shadelab
@@ -27,20 +28,27 @@ class InspectorWindow : public QMainWindow
 public:
   explicit InspectorWindow(Inspector& inspector);
 
-  /** Shows the window with its 3D view `size` pixels, and starts the
-   * inspector in it; whether the window is still open (a quit key may
-   * have come first). */
-  bool Open(const ImageSize& size);
+  /**
+   * Shows the window with its 3D view `size` pixels, on the screen it opens
+   * on (the view shrunk in the same shape where the whole window would not
+   * fit, unless sizeGiven: then kept, with a warning), and starts the
+   * inspector in it; whether the window is still open (a quit key may have
+   * come first).
+   */
+  bool Open(const ImageSize& size, bool sizeGiven = false);
 
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+  void FitScreen(const QSize& view, bool sizeGiven);
+
   Inspector& Engine;
   QVTKOpenGLNativeWidget* View;
   ControlPanel* Panel;
   ShaderPanel* Shaders;
   ProbePanel* Readout;
+  QDockWidget* Controls = nullptr; // the controls' dock, in front at start
   bool Started = false;
   std::vector<std::string> EarlyKeys; // pressed before the inspector started
 };

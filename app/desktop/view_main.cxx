@@ -36,6 +36,7 @@ int main(int argc, char** argv)
     std::cerr << "shadelab: error: " << e.what() << " (see shadelab view --help)" << std::endl;
     return shadelab::ExitUsage;
   }
+  view.SizeGiven = program.get_subcommands().front()->count("--size") > 0;
   if (view.Quiet)
   {
     shadelab::SilenceWarnings();

@@ -144,7 +144,8 @@ TEST(NothingLost, AFileSizeLimitIsAnErrorLikeTheOthers)
 }
 
 // normals writes through a memory file (VTK's writers open their own):
-// VTK's message named that, /proc/PID/fd/N, instead of the output.
+// VTK's message named that, /proc/PID/fd/N, instead of the output, or (VTP)
+// was its executive's; an OBJ came out cut, with exit 0.
 TEST(NothingLost, NormalsUnderAFileSizeLimitNameTheirOutput)
 {
   TempDir dir;
@@ -158,10 +159,7 @@ TEST(NothingLost, NormalsUnderAFileSizeLimitNameTheirOutput)
       r = RunShadelab({ "normals", Mesh, "-o", out.string() });
     }
     EXPECT_EQ(r.ExitCode, 1);
-    EXPECT_EQ(r.Stderr.rfind("shadelab: error: " + out.string() + ": cannot write", 0), 0u)
-      << r.Stderr;
-    EXPECT_EQ(r.Stderr.find("/proc/"), std::string::npos) << r.Stderr;
-    EXPECT_EQ(Count(r.Stderr, "\n"), 1u) << r.Stderr;
+    EXPECT_EQ(r.Stderr, "shadelab: error: " + out.string() + ": " + TooLarge + "\n");
     EXPECT_FALSE(fs::exists(out));
   }
   EXPECT_TRUE(dir.Files().empty());

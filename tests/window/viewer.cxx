@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -24,12 +25,16 @@ namespace
 // An X server for this test program: Xvfb on the first free display,
 // which it names through -displayfd once it accepts connections; -noreset,
 // or a client connecting just as the last one left (xdotool, then the
-// window) would be dropped by the server's reset.
+// window) would be dropped by the server's reset. Its screen is
+// $SHADELAB_TEST_SCREEN (default 1280x1024), and $SHADELAB_TEST_WINDOW_MANAGER
+// names a window manager to run on it (default none).
 class XServer : public ::testing::Environment
 {
 public:
   void SetUp() override
   {
+    const char* size = std::getenv("SHADELAB_TEST_SCREEN");
+    const std::string screen = std::string(size && *size ? size : "1280x1024") + "x24";
     int fds[2];
     ASSERT_EQ(pipe(fds), 0);
     this->Pid = fork();
@@ -37,7 +42,7 @@ public:
     {
       close(fds[0]);
       const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", screen.c_str(), "-nolisten",
         "tcp", "-noreset", static_cast<char*>(nullptr));
       _exit(127);
     }
@@ -51,18 +56,42 @@ public:
     close(fds[0]);
     ASSERT_FALSE(number.empty()) << "Xvfb did not start (is the xvfb package installed?)";
     setenv("DISPLAY", (":" + number).c_str(), 1);
+    const char* manager = std::getenv("SHADELAB_TEST_WINDOW_MANAGER");
+    if (manager && *manager && std::string(manager) != "none")
+    {
+      this->Manager = fork();
+      if (this->Manager == 0)
+      {
+        execlp(manager, manager, static_cast<char*>(nullptr));
+        _exit(127);
+      }
+      // Managing once it has set the root window's _NET_SUPPORTING_WM_CHECK.
+      for (int i = 0; i < 100 &&
+           Run("xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | "
+               "grep -q 'window id'") != 0;
+           ++i)
+      {
+        std::this_thread::sleep_for(100ms);
+      }
+      ASSERT_EQ(waitpid(this->Manager, nullptr, WNOHANG), 0)
+        << manager << " did not start (is its package installed?)";
+    }
   }
   void TearDown() override
   {
-    if (this->Pid > 0)
+    for (const pid_t pid : { this->Manager, this->Pid })
     {
-      kill(this->Pid, SIGTERM);
-      waitpid(this->Pid, nullptr, 0);
+      if (pid > 0)
+      {
+        kill(pid, SIGTERM);
+        waitpid(pid, nullptr, 0);
+      }
     }
   }
 
 private:
   pid_t Pid = -1;
+  pid_t Manager = -1;
 };
 
 const auto* const Server = ::testing::AddGlobalTestEnvironment(new XServer);

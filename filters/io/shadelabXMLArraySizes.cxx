@@ -16,7 +16,8 @@
 #include <vtkZLibDataCompressor.h>
 
 #include <algorithm>
-#include <cstdlib>
+#include <cctype>
+#include <charconv>
 #include <cstring>
 #include <initializer_list>
 #include <istream>
@@ -311,18 +312,21 @@ std::optional<Encoded> BinaryData(
 // reads that many and ignores the rest); nothing if there are fewer.
 std::optional<long long> AsciiValue(std::string_view text, Bytes index)
 {
-  const std::string copy(text);
-  const char* at = copy.c_str();
+  const char* at = text.data();
+  const char* const end = at + text.size();
   long long value = 0;
   for (Bytes i = 0; i <= index; ++i)
   {
-    char* end = nullptr;
-    value = std::strtoll(at, &end, 10);
-    if (end == at)
+    while (at < end && std::isspace(static_cast<unsigned char>(*at)))
+    {
+      ++at;
+    }
+    const auto [next, problem] = std::from_chars(at, end, value);
+    if (problem != std::errc())
     {
       return std::nullopt;
     }
-    at = end;
+    at = next;
   }
   return value;
 }

@@ -100,6 +100,12 @@ std::size_t OffsetOf(const std::string& vtp, const std::string& name)
   return std::stoul(vtp.substr(offset, vtp.find('"', offset) - offset));
 }
 
+// Where the raw appended array named `name` starts: its binary header.
+std::size_t HeaderOf(const std::string& vtp, const std::string& name)
+{
+  return AppendedStart(vtp) + OffsetOf(vtp, name);
+}
+
 void PutWord(std::string& vtp, std::size_t at, std::uint32_t value)
 {
   std::string bytes;
@@ -148,12 +154,12 @@ TEST_F(MeshReaders, VtpOffsetOutsideTheAppendedData)
 TEST_F(MeshReaders, VtpBlockCountBeyondTheFile)
 {
   std::string vtp = Vtp(Quad(), Layout::AppendedRaw, true);
-  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N"), 1u << 28);
+  PutWord(vtp, HeaderOf(vtp, "N"), 1u << 28);
   this->ExpectError("blocks.vtp", vtp,
     { "PointData array 'N'", "lists 268435456 blocks, more than the file can hold" });
 
   vtp = Vtp(Quad(), Layout::AppendedRaw, true);
-  const std::size_t header = AppendedStart(vtp) + OffsetOf(vtp, "N");
+  const std::size_t header = HeaderOf(vtp, "N");
   PutWord(vtp, header + 12, 1u << 30); // the one block's compressed size
   this->ExpectError("compressed.vtp", vtp, { "compressed blocks add up to 1073741824 bytes" });
 }
@@ -163,14 +169,14 @@ TEST_F(MeshReaders, VtpBlockCountBeyondTheFile)
 TEST_F(MeshReaders, VtpArraySizesMustMatchTheCounts)
 {
   std::string vtp = Vtp(Quad(), Layout::AppendedRaw, true);
-  const std::size_t header = AppendedStart(vtp) + OffsetOf(vtp, "N");
+  const std::size_t header = HeaderOf(vtp, "N");
   PutWord(vtp, header + 4, 3u << 30); // its one block, of 3 GiB
   PutWord(vtp, header + 8, 3u << 30);
   this->ExpectError(
     "block.vtp", vtp, { "it decodes to 3221225472 bytes, but its 12 values of Float32 are 48" });
 
   vtp = Vtp(Quad(), Layout::AppendedRaw, false);
-  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N"), 4000);
+  PutWord(vtp, HeaderOf(vtp, "N"), 4000);
   this->ExpectError("raw.vtp", vtp, { "its header says 4000 bytes, but only" });
 
   vtp = Vtp(Quad(), Layout::Binary, true);
@@ -188,13 +194,13 @@ TEST_F(MeshReaders, VtpArraySizesMustMatchTheCounts)
 TEST_F(MeshReaders, VtpArraysAreCheckedAsVtkReadsThem)
 {
   std::string vtp = Vtp(Quad(), Layout::AppendedRaw, true);
-  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N"), 1u << 28);
+  PutWord(vtp, HeaderOf(vtp, "N"), 1u << 28);
   const std::size_t n = vtp.find("Name=\"N\"");
   vtp.replace(vtp.find("format=\"appended\"", n), 17, "format=\"ascii\"   ");
   this->ExpectError("format.vtp", vtp, { "lists 268435456 blocks" });
 
   vtp = Vtp(Quad(), Layout::AppendedRaw, true);
-  PutWord(vtp, AppendedStart(vtp) + OffsetOf(vtp, "N") + 4, 0);
+  PutWord(vtp, HeaderOf(vtp, "N") + 4, 0);
   this->ExpectError(
     "zero.vtp", vtp, { "block sizes (0, last 48) are not a block size and a remainder" });
 }

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/interruption.h"
 #include "image/metadata.h"
+#include "settings/option_reference.h"
 #include "shadelabVersion.h"
 #include "vtkShadelabOutputWindow.h"
 
@@ -138,10 +139,18 @@ int main(int argc, char** argv)
   {
     added.push_back(command.Add(program));
   }
+  // Hidden: the build makes doc/user/options.md with it.
+  CLI::App* reference =
+    program.add_subcommand("print-reference", "Print the option reference (markdown)")->group("");
 
   if (const std::optional<int> exit = Parse(program, argc, argv))
   {
     return *exit;
+  }
+  if (reference->parsed())
+  {
+    std::cout << shadelab::OptionReference(program);
+    return 0;
   }
   commandLine = shadelab::QuoteCommandLine(argc, argv);
   for (std::size_t i = 0; i < added.size(); ++i)

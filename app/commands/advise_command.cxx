@@ -3,6 +3,7 @@
 #include "bench/speed_accuracy.h"
 #include "core/errors.h"
 #include "scene/mesh_input.h"
+#include "settings/command_line.h"
 #include "shadelabSpeedAccuracyCsv.h" // generated from data/speed_accuracy.csv
 
 #include <vtkPolyData.h>
@@ -41,7 +42,7 @@ CLI::App* AddAdviseCommand(CLI::App& program, AdviseOptions& o)
       "speed_accuracy.csv from `shadelab bench` on this machine (default: the measurements "
       "shadelab ships, BENCHMARKS.md)")
     ->option_text("CSV");
-  AddNormalsSettings(*advise, o.Normals);
+  AddSettings(*advise, o.Scene, Command::Advise);
   return advise;
 }
 
@@ -299,20 +300,21 @@ int RunAdvise(const AdviseOptions& o)
   {
     return ReportError(source, problem);
   }
-  const Model model(rows, o.Size, o.Normals.Weighting);
+  const Model model(rows, o.Size, o.Scene.Computed.Weighting);
   for (const Shading lit : LitRules)
   {
     const char* rule = ToString(lit);
     if (!model.Has(rule))
     {
       return ReportError(source,
-        std::string("no measurements of ") + rule + " with " + o.Normals.Weighting + " weighting");
+        std::string("no measurements of ") + rule + " with " + o.Scene.Computed.Weighting +
+          " weighting");
     }
   }
 
   SceneOptions scene;
   scene.Mesh = o.Mesh;
-  scene.Computed = o.Normals;
+  scene.Computed = o.Scene.Computed;
   const LoadedMesh loaded = LoadMesh(scene);
   if (!loaded.Mesh)
   {
@@ -329,7 +331,7 @@ int RunAdvise(const AdviseOptions& o)
   const std::vector<Option> options = Options(model, angle, triangles);
   std::printf("%s: %s triangles, edges turn by %.2f degrees on average (%s normals)\n",
     o.Mesh.c_str(), TriangleCountText(triangles).c_str(), angle,
-    loaded.NormalsFromFile ? "the file's" : o.Normals.Weighting.c_str());
+    loaded.NormalsFromFile ? "the file's" : o.Scene.Computed.Weighting.c_str());
   std::printf("predicted from %s at %dx%d (RMSE: the worse of sphere and torus; ms/frame: "
               "OSMesa llvmpipe)\n\n",
     source.c_str(), model.Width, model.Height);

@@ -23,7 +23,7 @@ struct AdviseOptions
   double MaxError = 0; // RMSE, on the 0..1 intensity scale
   ImageSize Size{ 1920, 1080 };
   std::string Measurements; // a speed_accuracy.csv; empty: the one shadelab ships
-  NormalsSettings Normals;
+  SceneOptions Scene;       // the settings advise takes: how normals are computed
 };
 
 CLI::App* AddAdviseCommand(CLI::App& program, AdviseOptions& options);

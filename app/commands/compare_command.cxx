@@ -11,6 +11,7 @@
 #include "scene/mesh_cache.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
+#include "settings/command_line.h"
 #include "vtkShadelabShading.h"
 
 #include <vtkActor.h>
@@ -32,8 +33,8 @@ CLI::App* AddCompareCommand(CLI::App& program, CompareOptions& o)
     "label each; --diff adds |A - B| as a heat map");
   // A panel of 1024x768 makes a three-panel picture 3 k wide: smaller by default.
   o.Scene.Size = { 512, 512 };
-  AddSceneOptions(*compare, o.Scene);
-  compare->get_option("MESH")->required();
+  compare->add_option("MESH", o.Scene.Mesh, MeshFileHelp())->required();
+  AddSettings(*compare, o.Scene, Command::Compare);
   compare->get_option("--size")->description("Each panel's size in pixels (default 512x512)");
   compare->add_option("-o,--output", o.Output, "Image file; its extension picks the format")
     ->required()

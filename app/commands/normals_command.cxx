@@ -4,6 +4,7 @@
 #include "core/output_file.h"
 #include "core/output_path.h"
 #include "scene/mesh_input.h"
+#include "settings/command_line.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPLYWriter.h"
 
@@ -26,8 +27,7 @@ CLI::App* AddNormalsCommand(CLI::App& program, NormalsOptions& o)
   normals->add_option("-o,--output", o.Output, "Output mesh: .ply .vtp .obj")
     ->required()
     ->option_text("OUT");
-  AddNormalsSettings(*normals, o.Settings);
-  AddTrustOptions(*normals, o.AllowOutsideReferences);
+  AddSettings(*normals, o.Scene, Command::Normals);
   normals->add_flag("-q,--quiet", o.Quiet, "No warnings");
   return normals;
 }
@@ -68,8 +68,8 @@ int RunNormals(const NormalsOptions& o)
   input.Mesh = o.Mesh;
   input.ShadingRule = Shading::Phong; // a lit rule: LoadMesh computes normals for those
   input.Normals = NormalsMode::Compute;
-  input.Computed = o.Settings;
-  input.AllowOutsideReferences = o.AllowOutsideReferences;
+  input.Computed = o.Scene.Computed;
+  input.AllowOutsideReferences = o.Scene.AllowOutsideReferences;
   const LoadedMesh loaded = LoadMesh(input, nullptr, true); // with face normals: files have room
   if (!loaded.Mesh)
   {

@@ -18,8 +18,7 @@ struct NormalsOptions
 {
   std::string Mesh;
   std::string Output;
-  NormalsSettings Settings;
-  bool AllowOutsideReferences = false;
+  SceneOptions Scene; // the settings normals takes: how normals are computed, trust
   bool Quiet = false; // no warnings
 };
 

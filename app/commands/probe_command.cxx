@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene_cache.h"
+#include "settings/command_line.h"
 #include "shadelabJsonProblem.h"
 
 #include <vtkRenderer.h>
@@ -27,8 +28,8 @@ CLI::App* AddProbeCommand(CLI::App& program, ProbeOptions& o)
     "Explain pixel X,Y of the picture render makes with the same options: the triangle under "
     "it, the lecture's equation term by term there, the oracle's value, the rendered and the "
     "stored value");
-  AddSceneOptions(*probe, o.Scene);
-  probe->get_option("MESH")->required();
+  probe->add_option("MESH", o.Scene.Mesh, MeshFileHelp())->required();
+  AddSettings(*probe, o.Scene, Command::Probe);
   probe->get_option("--ssaa")->description(
     "Not for probe: it explains the one sample a pixel has without anti-aliasing");
   probe

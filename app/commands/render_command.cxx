@@ -1,12 +1,12 @@
 #include "commands/render_command.h"
 
-#include "core/cli_choice.h"
 #include "core/errors.h"
 #include "core/output_path.h"
 #include "headless/batch.h"
 #include "scene/camera.h"
 #include "scene/mesh_arguments.h"
 #include "scene/scene_file.h"
+#include "settings/command_line.h"
 #include "vtkShadelabMeshReader.h"
 
 #include <CLI/CLI.hpp>
@@ -21,15 +21,13 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
 {
   CLI::App* render = program.add_subcommand(
     "render", "Render MESH headless into the image OUT, or every shot of a scene file (--scene)");
-  AddSceneOptions(*render, o.Scene);
-  AddOrbitOptions(*render, o.Scene);
-  render->get_option("--fps")->needs("--orbit");
   // render takes many meshes (files, folders, globs), rendered in one process.
-  render->remove_option(render->get_option("MESH"));
   render->add_option("MESH", o.Meshes,
     std::string("Mesh files (") + vtkShadelabMeshReader::GetKnownExtensions() +
       "), folders of them, or quoted globs; with more than one, -o is a template such as "
       "'thumbs/{mesh}.png'");
+  AddSettings(*render, o.Scene, Command::Render);
+  render->get_option("--fps")->needs("--orbit");
   // With a scene file, the file says all that these say.
   std::vector<CLI::Option*> sceneSettings =
     render->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });
@@ -38,9 +36,6 @@ CLI::App* AddRenderCommand(CLI::App& program, RenderOptions& o)
       "Image file; its extension picks the format. With --scene: an output name template for "
       "every shot, replacing the file's")
     ->option_text("OUT");
-  AddChoice(*render, "--pixel-type", o.Pixels,
-    "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise (default)");
-  sceneSettings.push_back(render->get_option("--pixel-type"));
   render
     ->add_option("--dump-shaders", o.DumpShaders,
       "Write the final GLSL of each shader program into DIR (RULE-REFLECTION.vert/.frag)")
@@ -91,7 +86,7 @@ namespace
 // OUT as a template, sharing one process. An exit status on error, else 0.
 int CommandLineShots(const RenderOptions& o, std::vector<Shot>& shots)
 {
-  Shot shot{ o.Scene, o.Output, o.Pixels, "", false, false };
+  Shot shot{ o.Scene, o.Output, "", false, false };
   if (IsOneMeshFile(o.Meshes) && o.Scene.Orbit == 0)
   {
     shot.Scene.Mesh = o.Meshes[0];

@@ -5,6 +5,7 @@
 #include "desktop/view_keys.h"
 #include "scene/camera.h"
 #include "scene/comparison_panels.h"
+#include "settings/command_line.h"
 
 #include <CLI/CLI.hpp>
 
@@ -36,11 +37,8 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
 {
   CLI::App* view =
     program.add_subcommand("view", "Open MESH in a window (needs a display) and inspect it live");
-  AddSceneOptions(*view, o.Scene);
-  // The window draws live at the screen's resolution: supersampling is for
-  // pictures (render, compare).
-  view->remove_option(view->get_option("--ssaa"));
-  view->get_option("MESH")->required();
+  view->add_option("MESH", o.Scene.Mesh, MeshFileHelp())->required();
+  AddSettings(*view, o.Scene, Command::View);
   view->get_option("--size")->description(
     "The 3D view's size in pixels (default 1024x768, made smaller in the same shape where the "
     "window with its controls would not fit the screen; a given size is kept)");

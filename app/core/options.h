@@ -1,5 +1,6 @@
-// The command line's options (doc/design.md, "Command line"), declared once and
-// shared by every command that renders a mesh.
+// The settings' values (doc/design.md, "Command line"): what decides a
+// picture, and the parsers of their text. The table of settings
+// (settings/settings_table.cxx) declares them on every command.
 #ifndef shadelab_options_h
 #define shadelab_options_h
 
@@ -11,11 +12,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-namespace CLI
-{
-class App;
-}
 
 namespace shadelab
 {
@@ -174,6 +170,7 @@ struct SceneOptions
   // buffers and images) may lie outside its folder. The user's trust, from
   // the command line only: a scene file cannot give itself this.
   bool AllowOutsideReferences = false;
+  PixelType Pixels = PixelType::Auto; // how a picture's file stores its pixels
 
   /**
    * The material after the --ka/--kd/--ks/--ns overrides; with --texture,
@@ -196,8 +193,7 @@ struct RenderOptions
   SceneOptions Scene;              // its Mesh unused: the meshes are Meshes
   std::vector<std::string> Meshes; // files, folders, globs
   std::string Output;              // with a scene file: an output template for every shot
-  PixelType Pixels = PixelType::Auto;
-  std::string DumpShaders; // a folder, or empty
+  std::string DumpShaders;         // a folder, or empty
   bool Verbose = false;
   std::string SceneFile; // --scene: the shots come from this JSON file
   bool PrintSchema = false;
@@ -215,25 +211,6 @@ std::vector<std::string> LectureMaterialNames();
 
 /** "Mesh file: .obj .ply ...": a command's MESH help, from the formats the reader knows. */
 std::string MeshFileHelp();
-
-/** Declares the scene options on a command. */
-void AddSceneOptions(CLI::App& command, SceneOptions& options);
-
-/**
- * Sets on o what args (command-line words, such as {"--shading", "flat"})
- * say, through the scene options' own parsers. Throws std::invalid_argument
- * with CLI11's message, less its leading "--option: ".
- */
-void ApplySceneArguments(SceneOptions& o, const std::vector<std::string>& args);
-
-/** Declares --orbit and --fps (render's, and scene files'). */
-void AddOrbitOptions(CLI::App& command, SceneOptions& options);
-
-/** Declares --allow-outside-references on command. */
-void AddTrustOptions(CLI::App& command, bool& allowOutsideReferences);
-
-/** Declares --weighting, --feature-angle and --orient on command. */
-void AddNormalsSettings(CLI::App& command, NormalsSettings& settings);
 
 /** text's parts between the separators (one empty part for empty text). */
 std::vector<std::string> Split(const std::string& text, char separator);

@@ -5,10 +5,10 @@
 
 #include "core/errors.h"
 #include "core/output_file.h"
-#include "core/scene_arguments.h"
 #include "image/metadata.h"
 #include "scene/comparison_panels.h"
 #include "scene/scene_file.h"
+#include "settings/command_line.h"
 
 #include <filesystem>
 #include <iostream>

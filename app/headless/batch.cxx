@@ -214,7 +214,7 @@ private:
     }
     const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());
     // An 8-bit file's picture is rendered in 8 bits, the same bytes for less.
-    const bool eightBit = ResolvePixelType(shot.Output, shot.Pixels) == PixelType::UInt8;
+    const bool eightBit = ResolvePixelType(shot.Output, shot.Scene.Pixels) == PixelType::UInt8;
     FloatImage image;
     Image8 image8;
     if (eightBit)
@@ -250,7 +250,7 @@ private:
     }
     if (const std::string error = eightBit
           ? this->Writer.Submit(shot.Output, std::move(image8), metadata, frame)
-          : this->Writer.Submit(shot.Output, image, shot.Pixels, metadata, frame);
+          : this->Writer.Submit(shot.Output, image, shot.Scene.Pixels, metadata, frame);
         !error.empty())
     {
       this->Fail(shot, shot.Output, error);

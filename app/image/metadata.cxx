@@ -3,6 +3,7 @@
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "scene/scene_parts.h"
+#include "settings/light_setting.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabVersion.h"
 

@@ -1,5 +1,7 @@
 #include "scene/comparison_panels.h"
 
+#include "settings/command_line.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

@@ -1,12 +1,10 @@
 #include "scene/scene_file.h"
 
 #include "core/output_path.h"
-#include "scene/scene_file_settings.h"
-#include "scene/scene_file_values.h"
+#include "settings/scene_keys.h"
 #include "shadelabCheckedFile.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabMeshReadError.h"
-#include "shadelabSceneSchema.h" // generated from data/scene.schema.json
 
 #include <cstdint>
 #include <filesystem>
@@ -17,11 +15,6 @@ namespace shadelab
 namespace
 {
 using namespace scene_file;
-
-const std::vector<std::string> ShotKeys{ "name", "mesh", "output", "shading", "reflection",
-  "material", "texture", "texture_wrap", "texture_filter", "ambient", "lights", "camera", "size",
-  "background", "normals", "weighting", "feature_angle", "orient", "pixel_type", "ssaa", "up",
-  "edges", "edge_color", "edge_width", "normal_glyphs", "orbit", "fps" };
 
 // A scene of a hundred thousand shots is a few MB; more is not a scene.
 constexpr std::uint64_t MaxSceneFileBytes = 64ULL << 20;
@@ -108,7 +101,8 @@ std::vector<Shot> ExpandShotOutput(const json& merged, const std::string& output
 std::vector<Shot> ReadShots(
   const json& scene, const std::string& path, const std::string& outputTemplate)
 {
-  std::vector<std::string> topKeys = ShotKeys;
+  const std::vector<std::string> shotKeys = SceneKeys();
+  std::vector<std::string> topKeys = shotKeys;
   topKeys.push_back("shots");
   ExpectObject(scene, "", topKeys);
   json defaults = scene;
@@ -124,13 +118,13 @@ std::vector<Shot> ReadShots(
   for (std::size_t i = 0; i < list.size(); ++i)
   {
     const std::string prefix = scene.contains("shots") ? "shots[" + std::to_string(i) + "]" : "";
-    ExpectObject(list[i], prefix, ShotKeys);
+    ExpectObject(list[i], prefix, shotKeys);
     const json merged = MergeShot(defaults, list[i]);
     const PathOfKey where = PathsIn(list[i], prefix);
     Shot shot;
     shot.Label = path + (prefix.empty() ? "" : " " + prefix);
     shot.MakeFolders = true;
-    ConvertShot(merged, shot, folder, where);
+    ReadSceneSettings(merged, folder, where, shot.Scene);
     if (shot.Scene.Mesh.empty())
     {
       throw SceneError{ where("mesh"), "missing: every shot needs a mesh" };
@@ -153,14 +147,9 @@ std::vector<Shot> ReadShots(
 }
 }
 
-const char* SceneSchema()
+std::string SceneSchema()
 {
-  return SceneSchemaJson;
-}
-
-const std::vector<std::string>& SceneShotKeys()
-{
-  return ShotKeys;
+  return JsonText(SceneSchemaJson(), 2) + "\n";
 }
 
 std::string ReadSceneFile(

@@ -1,14 +1,13 @@
 // Scene files: `shadelab render --scene FILE.json` takes every
 // scene option, and many shots, from one JSON file. The format is
-// data/scene.schema.json (`shadelab render --print-schema`); doc/user/scenes-and-batches.md
-// shows it. Every value goes through the command line's own parsers, so a
-// key means exactly what its option means.
+// data/scene.schema.json (`shadelab render --print-schema`, made from the
+// table of settings); doc/user/scenes-and-batches.md shows it. Every value
+// goes through the command line's own parsers, so a key means exactly what
+// its option means.
 #ifndef shadelab_scene_file_h
 #define shadelab_scene_file_h
 
 #include "core/options.h"
-
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -20,7 +19,6 @@ struct Shot
 {
   SceneOptions Scene;
   std::string Output;
-  PixelType Pixels = PixelType::Auto;
   std::string Label;        // "scene.json shots[3]" for a scene file's shot, "" on the command line
   bool MakeFolders = false; // the output came from a template: its folders are made as needed
   bool Animation = false;   // Output holds every frame of Scene.Orbit (.gif, .mp4)
@@ -33,19 +31,8 @@ struct Shot
  */
 std::string WriteSceneText(const SceneOptions& s, const std::string& output);
 
-/**
- * A light as JSON: kind, position (not a directional light's), direction
- * (not a point light's), color, a spot's half angle under halfAngleKey
- * ("half_angle" in scene files, "half_angle_deg" in a picture's
- * description) and exponent.
- */
-nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey);
-
-/** The JSON Schema of scene files (data/scene.schema.json, compiled in). */
-const char* SceneSchema();
-
-/** The keys a shot may have, in the schema's order (for tests that hold the two together). */
-const std::vector<std::string>& SceneShotKeys();
+/** The JSON Schema of scene files, as data/scene.schema.json holds it. */
+std::string SceneSchema();
 
 /**
  * Reads the shots of the scene file at path. outputTemplate, when not

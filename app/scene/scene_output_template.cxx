@@ -4,7 +4,7 @@
 #include "core/output_path.h"
 #include "scene/camera.h"
 #include "scene/scene_file.h"
-#include "scene/scene_file_values.h"
+#include "settings/json_values.h"
 
 #include <filesystem>
 #include <map>

@@ -1,6 +1,6 @@
 // The option-value parsers of the command line (app/core/options.h).
 #include "core/options.h"
-#include "core/scene_arguments.h"
+#include "settings/command_line.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // says it; a key moves the controls that show what it changed; closing the
 // window ends it. The shader panel shows the GLSL that runs, and highlights
 // the lines that the generator marked for each term.
-#include "core/scene_arguments.h"
 #include "desktop/inspector_window.h"
+#include "settings/command_line.h"
 #include "viewer.h"
 
 #include <QVTKOpenGLNativeWidget.h>

@@ -5,10 +5,10 @@
 // cleared; a Ctrl+click off the mesh hits nothing; a plain click and a
 // Ctrl+drag probe nothing. A term's line picked in the readout highlights
 // the shader lines that compute that term.
-#include "core/scene_arguments.h"
 #include "desktop/inspector_window.h"
 #include "probe/probe_json.h"
 #include "probe/probe_text.h"
+#include "settings/command_line.h"
 #include "shadelabShaderSource.h"
 #include "viewer.h"
 

@@ -1,5 +1,6 @@
-#include "scene/scene_file_values.h"
+#include "settings/json_values.h"
 
+#include "settings/command_line.h"
 #include "shadelabJsonProblem.h"
 
 #include <algorithm>

@@ -1,13 +1,14 @@
 // Reading a scene file's JSON values: each reader checks the value's type
 // and throws SceneError at its JSON path, so that every message names where
 // in the file the problem is.
-#ifndef shadelab_scene_file_values_h
-#define shadelab_scene_file_values_h
+#ifndef shadelab_json_values_h
+#define shadelab_json_values_h
 
 #include "core/options.h"
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,11 +51,14 @@ std::string Choice(const json& value, const std::string& path, const char* what,
   const std::vector<std::string>& known);
 
 /**
- * Sets what args say on o through the render command's own options, so
- * that a key means exactly what its option means; a problem becomes a
- * SceneError at path.
+ * Sets what args say on o through the settings' own options, so that a key
+ * means exactly what its option means; a problem becomes a SceneError at
+ * path.
  */
 void Apply(SceneOptions& o, const std::vector<std::string>& args, const std::string& path);
+
+/** The JSON path of a key ("mesh", "camera.position") of the shot being read. */
+using PathOfKey = std::function<std::string(const std::string& key)>;
 }
 }
 

@@ -1,0 +1,162 @@
+// The table of settings: each setting once, with its option, its scene-file
+// key, its kind (which says its type, range or choices), its help and the
+// commands that take it. The command lines, the scene files' reader and
+// writer, Copy command, the JSON Schema and the option reference all come
+// from it. The order is the help's and the scene files' keys'.
+//
+// A plain setting is one Plain entry and the code that uses its value.
+#include "settings/setting_kinds.h"
+#include "settings/special_settings.h"
+#include "vtkShadelabMeshNormals.h"
+
+namespace shadelab
+{
+namespace
+{
+using namespace settings;
+
+// The member of a SceneOptions (const or not) that a setting keeps its value in.
+#define SHADELAB_FIELD(member)                                                                     \
+  [](auto& o) -> auto&                                                                             \
+  {                                                                                                \
+    return o.member;                                                                               \
+  }
+
+constexpr CommandSet ComputedNormals = PictureCommands | Of(Command::Normals) | Of(Command::Advise);
+
+std::vector<Setting> MakeSettings()
+{
+  const Triple point{ Triple::Point }, direction{ Triple::Direction }, colour{ Triple::Colour };
+  return {
+    TextKey("name", "The shot's name, for {name} in output"),
+    Plain({ "", "mesh", "", MeshFileHelp(), 0, "", true }, File{}, SHADELAB_FIELD(Mesh)),
+    TextKey("output",
+      "Image file; a template of {mesh} {shading} {reflection} {material} {weighting} {size} "
+      "{index} {name}, and {frame} with orbit; {{ and }} are braces"),
+    Plain({ "--shading", "shading", "", "Shading rule" }, Choice<Shading>{ "shading" },
+      SHADELAB_FIELD(ShadingRule)),
+    Plain({ "--reflection", "reflection", "", "Specular term" }, Choice<Reflection>{ "reflection" },
+      SHADELAB_FIELD(ReflectionModel)),
+    MaterialSetting(),
+    ReadByParent(
+      Plain({ "--ka", "material.ka", "R,G,B", "Ambient coefficients, overriding the material" },
+        colour, SHADELAB_FIELD(Ka))),
+    ReadByParent(Plain(
+      { "--kd", "material.kd", "R,G,B", "Diffuse coefficients" }, colour, SHADELAB_FIELD(Kd))),
+    ReadByParent(Plain(
+      { "--ks", "material.ks", "R,G,B", "Specular coefficients" }, colour, SHADELAB_FIELD(Ks))),
+    ReadByParent(Plain({ "--ns", "material.ns", "X", "Specular exponent" }, Number::NonNegative(),
+      SHADELAB_FIELD(Ns))),
+    Plain({ "--texture", "texture", "IMAGE",
+            "An image (any format OpenImageIO reads; 8-bit sRGB decoded to linear) whose texel "
+            "at the mesh's texture coordinates is kd and ka, looked up per fragment under every "
+            "rule (times --kd and --ka when given)" },
+      File{}, SHADELAB_FIELD(Texture)),
+    Plain({ "--texture-wrap", "texture_wrap", "",
+            "The texture beyond [0, 1]: repeat, clamp to the edge texels, or mirror" },
+      Choice<TextureWrap>{ "texture wrap" }, SHADELAB_FIELD(TextureWrapping)),
+    Plain({ "--texture-filter", "texture_filter", "",
+            "Texel lookup: bilinear between the four nearest texel centres, or the nearest "
+            "texel; no mipmaps" },
+      Choice<TextureFilter>{ "texture filter" }, SHADELAB_FIELD(TextureFiltering)),
+    Plain({ "--ambient", "ambient", "R,G,B", "Ambient light Ia" }, colour, SHADELAB_FIELD(Ambient)),
+    LightsSetting(),
+    Plain({ "--camera-position", "camera.position", "X,Y,Z", "Camera position" }, point,
+      SHADELAB_FIELD(CameraPosition)),
+    Plain({ "--camera-focal-point", "camera.focal_point", "X,Y,Z", "Point the camera looks at" },
+      point, SHADELAB_FIELD(CameraFocalPoint)),
+    Plain({ "--camera-view-up", "camera.view_up", "X,Y,Z", "Up direction", PictureCommands,
+            "--up's axis" },
+      direction, SHADELAB_FIELD(CameraViewUp)),
+    Plain({ "--view-angle", "camera.view_angle", "DEG",
+            "Perspective camera's vertical view angle in degrees" },
+      Number{ 0, 180, true, true, "degrees" }, SHADELAB_FIELD(ViewAngle)),
+    Plain(
+      { "--orthographic", "camera.orthographic", "", "Parallel projection instead of perspective" },
+      Flag{}, SHADELAB_FIELD(Orthographic)),
+    Plain({ "--parallel-scale", "camera.parallel_scale", "S",
+            "Orthographic: half the view height in world units" },
+      Number::Positive(), SHADELAB_FIELD(ParallelScale)),
+    Plain({ "--view", "camera.view", "",
+            "Where the fitted camera looks from: for up +Y front looks along -Z, for up +Z along "
+            "+Y; iso from front, right and above" },
+      Choice<ViewPreset>{ "view" }, SHADELAB_FIELD(View)),
+    Plain({ "--azimuth", "camera.azimuth", "DEG",
+            "Turn the camera by DEG about the up axis (--camera-view-up when given, else --up's) "
+            "through the focal point" },
+      Number{}, SHADELAB_FIELD(Azimuth)),
+    Plain({ "--elevation", "camera.elevation", "DEG",
+            "Then by DEG up about the horizontal through the focal point" },
+      Number{}, SHADELAB_FIELD(Elevation)),
+    Plain({ "--zoom", "camera.zoom", "F",
+            "Magnify by F: the view angle (orthographic: the parallel scale) divided by F" },
+      Number::Positive(), SHADELAB_FIELD(Zoom)),
+    Plain({ "--fit", "camera.fit", "",
+            "How the missing camera settings are fitted: sphere, the bounding sphere fills the "
+            "view (VTK's ResetCamera); tight, the mesh's projection fills the picture" },
+      Choice<FitMode>{ "fit" }, SHADELAB_FIELD(Fit)),
+    Plain({ "--size", "size", "WxH", "Image size in pixels", PictureCommands, "", true }, Size{},
+      SHADELAB_FIELD(Size)),
+    BackgroundSetting(),
+    Plain({ "--normals", "normals", "",
+            "auto: the file's normals if it has them, else computed; file: the file's normals, "
+            "an error where it has none; compute: always computed" },
+      Choice<NormalsMode>{ "normals" }, SHADELAB_FIELD(Normals)),
+    Plain({ "--weighting", "weighting", "", "Vertex-normal weighting when normals are computed",
+            ComputedNormals },
+      NameChoice{ Names<vtkShadelabMeshNormals::Weightings>(), "weighting" },
+      SHADELAB_FIELD(Computed.Weighting)),
+    Plain({ "--feature-angle", "feature_angle", "DEG",
+            "Computed normals: split vertices where faces meet at more than DEG degrees",
+            ComputedNormals, "no splitting" },
+      ClosedRange{ 0, 180 }, SHADELAB_FIELD(Computed.FeatureAngle)),
+    Plain({ "--orient", "orient", "",
+            "Computed normals: make the faces' orientation consistent first", ComputedNormals },
+      Flag{}, SHADELAB_FIELD(Computed.Orient)),
+    Plain({ "--pixel-type", "pixel_type", "",
+            "auto: float for .exr .hdr .pfm (unclamped), 8-bit otherwise", Of(Command::Render) },
+      Choice<PixelType>{ "pixel type" }, SHADELAB_FIELD(Pixels)),
+    Plain({ "--ssaa", "ssaa", "N",
+            "Anti-aliasing: N x N samples per pixel, averaged in float before quantising; "
+            "exactly the box average of the picture rendered N times as large",
+            Of(Command::Render) | Of(Command::Compare) | Of(Command::Probe) },
+      Integer{ 1, MaxSupersampling }, SHADELAB_FIELD(Supersampling)),
+    Plain({ "--up", "up", "", "The world axis up on the screen when the camera is fitted" },
+      Choice<UpAxis>{ "up axis" }, SHADELAB_FIELD(Up)),
+    Plain({ "--edges", "edges", "", "The triangles' edges over the shading" }, Flag{},
+      SHADELAB_FIELD(Edges)),
+    Plain(
+      { "--edge-color", "edge_color", "R,G,B", "Their colour" }, colour, SHADELAB_FIELD(EdgeColor)),
+    Plain({ "--edge-width", "edge_width", "W", "Their width in pixels" },
+      Number{ 0, 16, true, false, "pixels" }, SHADELAB_FIELD(EdgeWidth)),
+    Plain({ "--normal-glyphs", "normal_glyphs", "",
+            "A line along each vertex normal (those gouraud and phong use)" },
+      Flag{}, SHADELAB_FIELD(NormalGlyphs)),
+    Plain({ "--orbit", "orbit", "N",
+            "N frames turning the camera once about the up axis through the focal point (frame "
+            "k at --azimuth plus 360*k/N degrees): into a -o template with {frame}, or one .gif "
+            "or .mp4 (through the ffmpeg program)",
+            Of(Command::Render), "none: one picture" },
+      Integer{ 1, MaxOrbitFrames }, SHADELAB_FIELD(Orbit)),
+    Plain({ "--fps", "fps", "F", "An --orbit animation's frames a second; a .gif's at most 50",
+            Of(Command::Render) },
+      Number{ 0, MaxFramesPerSecond, true, false, "frames a second" },
+      SHADELAB_FIELD(FramesPerSecond)),
+    // The user's trust, from the command line only: a scene file cannot give
+    // itself this.
+    Plain({ "--allow-outside-references", "", "",
+            "Read the files that the mesh names (MTL libraries, texture maps, glTF buffers and "
+            "images) also where they lie outside the mesh's folder: for meshes you trust",
+            PictureCommands | Of(Command::Normals), "refused" },
+      Flag{}, SHADELAB_FIELD(AllowOutsideReferences)),
+  };
+}
+#undef SHADELAB_FIELD
+}
+
+const std::vector<Setting>& Settings()
+{
+  static const std::vector<Setting> settings = MakeSettings();
+  return settings;
+}
+}

@@ -74,9 +74,19 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
   vtkProperty* p = actor->GetProperty();
   actor->GetShaderProperty()->ClearAllShaderReplacements();
   vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->RemoveAllVertexAttributeMappings();
-  p->SetInterpolation(rule == Shading::Flat ? VTK_FLAT
-      : rule == Shading::Gouraud            ? VTK_GOURAUD
-                                            : VTK_PHONG);
+  switch (rule)
+  {
+    case Shading::None:
+    case Shading::Flat:
+      p->SetInterpolation(VTK_FLAT);
+      break;
+    case Shading::Gouraud:
+      p->SetInterpolation(VTK_GOURAUD);
+      break;
+    case Shading::Phong:
+      p->SetInterpolation(VTK_PHONG);
+      break;
+  }
   p->SetAmbient(1);
   p->SetAmbientColor(m.Ka[0] * o.Ambient[0], m.Ka[1] * o.Ambient[1], m.Ka[2] * o.Ambient[2]);
   p->SetDiffuse(1);

@@ -29,6 +29,29 @@ double NonNegative(double value, const std::string& text)
   }
   return value;
 }
+// spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]], less its colour.
+Light ParseSpot(const std::string& text, const std::vector<std::string>& parts)
+{
+  if (parts.size() < 4 || parts.size() > 6)
+  {
+    throw std::invalid_argument(
+      "'" + text + "' is not spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]]");
+  }
+  Light light;
+  light.Kind = LightKind::Spot;
+  light.Position = ParseVec3(parts[1]);
+  light.Direction = ParseDirection(parts[2]);
+  light.HalfAngleDeg = ParseNumber(parts[3]);
+  if (!(light.HalfAngleDeg > 0 && light.HalfAngleDeg <= 90))
+  {
+    throw std::invalid_argument("spot half-angle '" + parts[3] + "' is outside (0, 90] degrees");
+  }
+  if (parts.size() > 4)
+  {
+    light.Exponent = ParseNonNegative(parts[4]);
+  }
+  return light;
+}
 }
 
 Vec3 ParseDirection(const std::string& text)
@@ -162,43 +185,26 @@ Light ParseLight(const std::string& text)
       "unknown light kind '" + kind + "' (known: " + JoinedNames<LightKind>(", ") + ")");
   }
   light.Kind = *known;
-  std::size_t colourAt = 0;
-  if (light.Kind != LightKind::Spot)
+  std::size_t colourAt = 2;
+  switch (light.Kind)
   {
-    if (parts.size() < 2 || parts.size() > 3)
+    case LightKind::Point:
+    case LightKind::Directional:
     {
-      throw std::invalid_argument("'" + text + "' is not " + kind +
-        (light.Kind == LightKind::Point ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
+      const bool point = light.Kind == LightKind::Point;
+      if (parts.size() < 2 || parts.size() > 3)
+      {
+        throw std::invalid_argument(
+          "'" + text + "' is not " + kind + (point ? ":X,Y,Z[:R,G,B]" : ":DX,DY,DZ[:R,G,B]"));
+      }
+      (point ? light.Position : light.Direction) =
+        point ? ParseVec3(parts[1]) : ParseDirection(parts[1]);
+      break;
     }
-    if (light.Kind == LightKind::Point)
-    {
-      light.Position = ParseVec3(parts[1]);
-    }
-    else
-    {
-      light.Direction = ParseDirection(parts[1]);
-    }
-    colourAt = 2;
-  }
-  else
-  {
-    if (parts.size() < 4 || parts.size() > 6)
-    {
-      throw std::invalid_argument(
-        "'" + text + "' is not spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]]");
-    }
-    light.Position = ParseVec3(parts[1]);
-    light.Direction = ParseDirection(parts[2]);
-    light.HalfAngleDeg = ParseNumber(parts[3]);
-    if (!(light.HalfAngleDeg > 0 && light.HalfAngleDeg <= 90))
-    {
-      throw std::invalid_argument("spot half-angle '" + parts[3] + "' is outside (0, 90] degrees");
-    }
-    if (parts.size() > 4)
-    {
-      light.Exponent = ParseNonNegative(parts[4]);
-    }
-    colourAt = 5;
+    case LightKind::Spot:
+      light = ParseSpot(text, parts);
+      colourAt = 5;
+      break;
   }
   if (parts.size() > colourAt)
   {

@@ -171,7 +171,7 @@ void Inspector::ShowLightHandle(int index)
   const std::vector<Light>& lights = this->State.Scene.Lights;
   const bool shown = index >= 0 && index < static_cast<int>(lights.size()) &&
     this->State.Lights == LightMode::Given && !this->State.Compare &&
-    lights[index].Kind != LightKind::Directional;
+    GeometryOf(lights[index].Kind).Position;
   this->HandleLight = shown ? index : -1;
   if (!shown)
   {
@@ -182,7 +182,7 @@ void Inspector::ShowLightHandle(int index)
   vtkLightRepresentation* handle = this->LightHandle->GetLightRepresentation();
   handle->SetRenderer(this->Slots.front().Renderer);
   this->LightHandle->SetCurrentRenderer(this->Slots.front().Renderer);
-  handle->SetPositional(light.Kind == LightKind::Spot);
+  handle->SetPositional(GeometryOf(light.Kind).Cone);
   Vec3 focal;
   for (int i = 0; i < 3; ++i)
   {
@@ -274,13 +274,18 @@ Light Inspector::LightAtCamera(LightKind kind) const
 
 std::vector<Light> Inspector::CameraLights(const SceneOptions& scene) const
 {
-  if (this->State.Lights == LightMode::Given)
+  switch (this->State.Lights)
   {
-    return scene.Lights;
+    case LightMode::Given:
+      return scene.Lights;
+    case LightMode::PointAtCamera:
+      return { this->LightAtCamera(LightKind::Point) };
+    case LightMode::Directional:
+      return { this->LightAtCamera(LightKind::Directional) };
+    case LightMode::Spot:
+      return { this->LightAtCamera(LightKind::Spot) };
   }
-  return { this->LightAtCamera(this->State.Lights == LightMode::PointAtCamera ? LightKind::Point
-      : this->State.Lights == LightMode::Directional ? LightKind::Directional
-                                                     : LightKind::Spot) };
+  return scene.Lights;
 }
 
 void Inspector::FollowCamera()
@@ -351,7 +356,7 @@ int Inspector::MeasureDrag()
   // the edit the light handle makes on a drag (its InteractionEvent), each
   // move drawing the full rule: the handle's own picking is not timed.
   const auto movable = std::find_if(s.Lights.begin(), s.Lights.end(),
-    [](const Light& light) { return light.Kind != LightKind::Directional; });
+    [](const Light& light) { return GeometryOf(light.Kind).Position; });
   if (this->State.Lights == LightMode::Given && movable != s.Lights.end())
   {
     const auto index = static_cast<std::size_t>(movable - s.Lights.begin());

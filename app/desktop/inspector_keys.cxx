@@ -54,8 +54,7 @@ bool Inspector::Act(ViewAction action, int which)
       s.ShadingRule = static_cast<Shading>(which); // the row is in Shading's order
       return true;
     case ViewAction::Reflection:
-      s.ReflectionModel =
-        s.ReflectionModel == Reflection::BlinnPhong ? Reflection::Phong : Reflection::BlinnPhong;
+      s.ReflectionModel = NextOf(s.ReflectionModel);
       return true;
     case ViewAction::Material:
       this->StepMaterial(which == 0 ? 1 : -1);

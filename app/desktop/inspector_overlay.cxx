@@ -101,7 +101,7 @@ void Inspector::UpdateHud()
   std::ostringstream hud;
   hud << (this->State.Compare ? "compare: " + this->Options.Panels.Modes
                               : std::string(ToString(s.ShadingRule)) + " shading")
-      << " | " << (s.ReflectionModel == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") << " | "
+      << " | " << (UsesHalfVector(s.ReflectionModel) ? "Blinn-Phong" : "Phong") << " | "
       << material.str() << " | " << Describe(this->State.Lights) << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"

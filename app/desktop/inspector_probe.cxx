@@ -192,7 +192,7 @@ void Inspector::DrawArrows()
     }
   };
   add("N", t.N, 'N');
-  const std::string specular = this->Probed->Model == Reflection::BlinnPhong ? "H" : "R";
+  const std::string specular = UsesHalfVector(this->Probed->Model) ? "H" : "R";
   for (std::size_t l = 0; l < t.Lights.size(); ++l)
   {
     const std::string number = std::to_string(l + 1);

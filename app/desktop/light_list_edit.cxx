@@ -26,7 +26,7 @@ QDoubleSpinBox* Number(const char* name, double lowest, double highest, QWidget*
 
 QString Describe(const Light& light, std::size_t index)
 {
-  const Vec3& where = light.Kind == LightKind::Directional ? light.Direction : light.Position;
+  const Vec3& where = GeometryOf(light.Kind).Position ? light.Position : light.Direction;
   return QString("%1 %2 (%3, %4, %5)")
     .arg(index + 1)
     .arg(ToString(light.Kind))
@@ -151,11 +151,12 @@ void LightListEdit::Show()
   const QSignalBlocker quietExponent(this->Exponent);
   this->Cone->setValue(light.HalfAngleDeg);
   this->Exponent->setValue(light.Exponent);
-  this->Position->setEnabled(any && light.Kind != LightKind::Directional);
-  this->Direction->setEnabled(any && light.Kind != LightKind::Point);
+  const LightGeometry g = GeometryOf(light.Kind);
+  this->Position->setEnabled(any && g.Position);
+  this->Direction->setEnabled(any && g.Direction);
   this->Color->setEnabled(any);
-  this->Cone->setEnabled(any && light.Kind == LightKind::Spot);
-  this->Exponent->setEnabled(any && light.Kind == LightKind::Spot);
+  this->Cone->setEnabled(any && g.Cone);
+  this->Exponent->setEnabled(any && g.Cone);
   this->Engine.ShowLightHandle(this->Selected);
 }
 }

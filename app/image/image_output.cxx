@@ -24,9 +24,11 @@ OIIO::TypeDesc ToTypeDesc(PixelType type)
       return OIIO::TypeDesc::HALF;
     case PixelType::Float:
       return OIIO::TypeDesc::FLOAT;
-    default:
+    case PixelType::Auto: // resolved before: the file's 8 bits
+    case PixelType::UInt8:
       return OIIO::TypeDesc::UINT8;
   }
+  return OIIO::TypeDesc::UINT8;
 }
 
 }
@@ -140,7 +142,8 @@ std::string ImageEncoder::Add(const ImageRequest& frame)
       written = this->Output->write_image(
         OIIO::TypeDesc::FLOAT, ToTopDown<float>(image, [](float v) { return v; }).data());
       break;
-    default:
+    case PixelType::Auto:
+    case PixelType::UInt8:
       written = this->Output->write_image(OIIO::TypeDesc::UINT8,
         frame.Pixels8.empty() ? Quantise<uint8_t>(image, 255).data() : frame.Pixels8.data());
       break;

@@ -14,7 +14,7 @@ ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model
 {
   ordered_json j = DescribeLight(light);
   j["L"] = t.L;
-  if (light.Kind == LightKind::Spot)
+  if (GeometryOf(light.Kind).Cone)
   {
     j["cos_angle"] = t.SpotCos;
     j["in_cone"] = t.Reaches;
@@ -24,7 +24,7 @@ ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model
   j["n_dot_l"] = t.NdotL;
   j["lit"] = t.Lit;
   j["diffuse"] = t.DiffuseTerm;
-  j[model == Reflection::BlinnPhong ? "H" : "R"] = t.HR;
+  j[UsesHalfVector(model) ? "H" : "R"] = t.HR;
   j["base"] = t.Base;
   j["power"] = t.Power;
   j["specular"] = t.SpecularTerm;
@@ -105,15 +105,18 @@ ordered_json ProbeJson(const PixelProbe& p)
     j["ks"] = *p.Shaded.Ks; // the texel's where it is ks's (a glTF metal's), else the material's
   }
   j["ia"] = p.Ia;
-  if (p.Rule == Shading::None)
+  switch (p.Rule)
   {
-    j["position"] = p.Shaded.Point;
-    j["unlit"] = p.Shaded.Color;
-  }
-  else
-  {
-    j["position"] = p.Shaded.Terms.P;
-    AddTerms(j, p, p.Shaded.Terms);
+    case Shading::None:
+      j["position"] = p.Shaded.Point;
+      j["unlit"] = p.Shaded.Color;
+      break;
+    case Shading::Flat:
+    case Shading::Gouraud:
+    case Shading::Phong:
+      j["position"] = p.Shaded.Terms.P;
+      AddTerms(j, p, p.Shaded.Terms);
+      break;
   }
   if (p.Rule == Shading::Flat)
   {

@@ -41,18 +41,33 @@ private:
   std::ostringstream Text;
 };
 
+const char* SourceText(MaterialSource source)
+{
+  switch (source)
+  {
+    case MaterialSource::File:
+      return "the material is the mesh file's";
+    case MaterialSource::Option:
+      return "the material is the options' (--material, or all of --ka --kd --ks --ns)";
+    case MaterialSource::Default:
+      return "no material of its own: the default, the options'";
+  }
+  return "";
+}
+
 std::string LightName(const Light& l, std::size_t index)
 {
+  const LightGeometry g = GeometryOf(l.Kind);
   std::string name = "light " + std::to_string(index + 1) + ": " + ToString(l.Kind);
-  if (l.Kind != LightKind::Directional)
+  if (g.Position)
   {
     name += " at " + ProbeTriple(l.Position);
   }
-  if (l.Kind != LightKind::Point)
+  if (g.Direction)
   {
     name += " shining along " + ProbeTriple(l.Direction);
   }
-  if (l.Kind == LightKind::Spot)
+  if (g.Cone)
   {
     name +=
       ", half-angle " + ProbeNumber(l.HalfAngleDeg) + " deg, exponent " + ProbeNumber(l.Exponent);
@@ -66,13 +81,13 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
   const LightTerms& t)
 {
   const Light& light = p.Lights[index];
-  const bool blinn = p.Model == Reflection::BlinnPhong;
+  const bool blinn = UsesHalfVector(p.Model);
+  const LightGeometry g = GeometryOf(light.Kind);
   out.Add(indent, LightName(light, index));
   const std::string in = indent + "  ";
   out.Add(in, "L = " + ProbeTriple(t.L),
-    light.Kind == LightKind::Directional ? "minus the direction it shines along"
-                                         : "normalize(light - P)");
-  if (light.Kind == LightKind::Spot)
+    g.Position ? "normalize(light - P)" : "minus the direction it shines along");
+  if (g.Cone)
   {
     out.Add(in, "cos angle = " + ProbeNumber(t.SpotCos),
       t.Reaches ? "inside the cone (cos half-angle " +
@@ -159,14 +174,10 @@ std::string ProbeText(const PixelProbe& p)
       ProbeNumber(p.EdgeDistance) + " px from an edge that may cover it");
   out.Add("",
     std::string("shading ") + ToString(p.Rule) + ", reflection " +
-      (p.Model == Reflection::BlinnPhong ? "Blinn-Phong" : "Phong") + "; material " + m.Name +
-      ": ka " + ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) +
-      ", ns " + ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
-  out.Add("", "part " + std::to_string(p.Part) + " \"" + p.PartName + "\"",
-    p.Source == MaterialSource::File ? "the material is the mesh file's"
-      : p.Source == MaterialSource::Option
-      ? "the material is the options' (--material, or all of --ka --kd --ks --ns)"
-      : "no material of its own: the default, the options'");
+      (UsesHalfVector(p.Model) ? "Blinn-Phong" : "Phong") + "; material " + m.Name + ": ka " +
+      ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) + ", ns " +
+      ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
+  out.Add("", "part " + std::to_string(p.Part) + " \"" + p.PartName + "\"", SourceText(p.Source));
   if (p.VertexKd)
   {
     out.Add("", "kd = " + ProbeTriple(p.Shaded.Kd),

@@ -14,7 +14,7 @@ constexpr std::uint64_t MaxTextureFileBytes = 512ULL << 20;
 
 const LoadedMesh& MeshCache::Get(const SceneOptions& o)
 {
-  const bool lit = o.ShadingRule == Shading::Gouraud || o.ShadingRule == Shading::Phong;
+  const bool lit = UsesVertexNormals(o.ShadingRule);
   const Key key{ o.Mesh, o.Normals, o.Computed.Weighting, o.Computed.FeatureAngle.value_or(-1),
     o.Computed.Orient, lit };
   auto cached = this->Meshes.find(key);

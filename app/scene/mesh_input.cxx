@@ -145,9 +145,20 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
     result.Error = "has no vertex normals (--normals file)";
     return result;
   }
-  const bool lit = options.ShadingRule == Shading::Gouraud || options.ShadingRule == Shading::Phong;
-  const bool compute = options.Normals == NormalsMode::Compute ||
-    (options.Normals == NormalsMode::Auto && !result.NormalsFromFile);
+  const bool lit = UsesVertexNormals(options.ShadingRule);
+  bool compute = false;
+  switch (options.Normals)
+  {
+    case NormalsMode::Auto:
+      compute = !result.NormalsFromFile;
+      break;
+    case NormalsMode::File:
+      compute = false;
+      break;
+    case NormalsMode::Compute:
+      compute = true;
+      break;
+  }
   if (lit && compute)
   {
     const ComputedNormals normals = ComputeNormals(mesh, options.Computed, cellNormals);

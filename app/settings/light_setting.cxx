@@ -15,26 +15,6 @@ using namespace scene_file;
 const std::vector<std::string> LightKeys{ "kind", "position", "direction", "color", "half_angle",
   "exponent" };
 
-// Which of a light's keys its kind has: position, direction, and a spot's cone.
-struct LightParts
-{
-  bool Position, Direction, Cone;
-};
-
-LightParts PartsOf(LightKind kind)
-{
-  switch (kind)
-  {
-    case LightKind::Point:
-      return { true, false, false };
-    case LightKind::Directional:
-      return { false, true, false };
-    case LightKind::Spot:
-      return { true, true, true };
-  }
-  throw std::logic_error("no such light kind");
-}
-
 std::string Triple(const Vec3& v)
 {
   return settings::NumberText(v[0]) + "," + settings::NumberText(v[1]) + "," +
@@ -50,7 +30,7 @@ std::string LightText(const json& light, const std::string& path)
     throw SceneError{ path + ".kind", "missing (" + JoinedNames<LightKind>(", ", " or ") + ")" };
   }
   const std::string kind = Choice(light["kind"], path + ".kind", "kind", Names<LightKind>());
-  const LightParts parts = PartsOf(*FromName<LightKind>(kind));
+  const LightGeometry parts = GeometryOf(*FromName<LightKind>(kind));
   // No key the kind has not; then every key it has (a spot's exponent may
   // be left out).
   const std::pair<const char*, bool> keys[] = { { "position", parts.Position },
@@ -129,7 +109,7 @@ nlohmann::ordered_json LightSchema()
 
 std::string LightArgument(const Light& light)
 {
-  const LightParts parts = PartsOf(light.Kind);
+  const LightGeometry parts = GeometryOf(light.Kind);
   std::string text = ToString(light.Kind);
   if (parts.Position)
   {
@@ -149,7 +129,7 @@ std::string LightArgument(const Light& light)
 
 nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey)
 {
-  const LightParts parts = PartsOf(light.Kind);
+  const LightGeometry parts = GeometryOf(light.Kind);
   nlohmann::ordered_json j;
   j["kind"] = ToString(light.Kind);
   if (parts.Position)

@@ -232,7 +232,8 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
     FillGlsl("  Il = shadelabLightColor[$];\n", index);
   std::string guard;
-  if (kind == LightKind::Directional)
+  const LightGeometry g = GeometryOf(kind);
+  if (!g.Position)
   {
     s += FillGlsl("  L = -shadelabLightDirection[$];\n", index);
   }
@@ -245,7 +246,7 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
       index);
     guard = "distance > shadelabTinyLength && ";
   }
-  if (kind == LightKind::Spot)
+  if (g.Cone)
   {
     s += FillGlsl(R"glsl(  float cosAngle$ = dot(-L, shadelabLightDirection[$]);
   float exponent$ = shadelabLightExponent[$];
@@ -350,7 +351,7 @@ std::string IlluminateSource(const ShaderFeatures& f)
   if (f.Specular)
   {
     s += SpecularFalloffSource + std::string(SpecularDHeadSource) +
-      (f.Model == Reflection::BlinnPhong ? BlinnPhongSpecularDBody : PhongSpecularDBody);
+      (UsesHalfVector(f.Model) ? BlinnPhongSpecularDBody : PhongSpecularDBody);
   }
   return s + IlluminateFunctionSource(f, f.Rule != Shading::Phong && f.Textured());
 }

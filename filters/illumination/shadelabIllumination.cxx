@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <stdexcept>
+
 namespace shadelab
 {
 namespace
@@ -26,6 +28,46 @@ std::vector<Material> ParseTable()
   }
   return materials;
 }
+}
+
+LightGeometry GeometryOf(LightKind kind)
+{
+  switch (kind)
+  {
+    case LightKind::Point:
+      return { true, false, false };
+    case LightKind::Directional:
+      return { false, true, false };
+    case LightKind::Spot:
+      return { true, true, true };
+  }
+  throw std::logic_error("GeometryOf: not a light kind");
+}
+
+bool UsesVertexNormals(Shading rule)
+{
+  switch (rule)
+  {
+    case Shading::None:
+    case Shading::Flat:
+      return false;
+    case Shading::Gouraud:
+    case Shading::Phong:
+      return true;
+  }
+  throw std::logic_error("UsesVertexNormals: not a shading rule");
+}
+
+bool UsesHalfVector(Reflection model)
+{
+  switch (model)
+  {
+    case Reflection::BlinnPhong:
+      return true;
+    case Reflection::Phong:
+      return false;
+  }
+  throw std::logic_error("UsesHalfVector: not a reflection model");
 }
 
 const std::vector<Material>& LectureMaterials()

@@ -77,6 +77,26 @@ struct NameTable<LightKind>
   };
 };
 
+/**
+ * What a light of a kind has: a position (point, spot), a direction it
+ * shines along (directional, spot), a cone (spot). Every branch on a light's
+ * kind asks this, so a new kind is one switch to extend.
+ */
+struct LightGeometry
+{
+  bool Position;
+  bool Direction;
+  bool Cone;
+};
+
+LightGeometry GeometryOf(LightKind kind);
+
+/** Whether the rule lights with vertex normals (gouraud, phong), which a mesh needs then. */
+bool UsesVertexNormals(Shading rule);
+
+/** Whether the model's specular vector is H, the half vector (Blinn-Phong), not R (Phong). */
+bool UsesHalfVector(Reflection model);
+
 struct Light
 {
   LightKind Kind = LightKind::Point;

@@ -71,6 +71,21 @@ std::map<std::string, Enum> NamedValues()
   return values;
 }
 
+/** The value after value in its table, the first after the last (the window's cycles). */
+template <typename Enum>
+Enum NextOf(Enum value)
+{
+  const auto& entries = NameTable<Enum>::Entries;
+  for (std::size_t i = 0; i < entries.size(); ++i)
+  {
+    if (entries[i].first == value)
+    {
+      return entries[(i + 1) % entries.size()].first;
+    }
+  }
+  return entries[0].first;
+}
+
 /**
  * The names joined by separator, the last two by `last` when given:
  * "none|flat|gouraud|phong", "point, directional or spot".

@@ -28,7 +28,8 @@ bool Usable(double len, double shortest)
 void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
 {
   t.Il = light.Color;
-  if (light.Kind == LightKind::Directional)
+  const LightGeometry g = GeometryOf(light.Kind);
+  if (!g.Position)
   {
     t.L = -light.Direction;
     t.Reaches = true;
@@ -43,7 +44,7 @@ void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
   }
   t.L = (1 / distance) * toLight;
   t.Reaches = true;
-  if (light.Kind == LightKind::Spot)
+  if (g.Cone)
   {
     t.SpotCos = dot(-t.L, light.Direction);
     t.Reaches = t.SpotCos >= light.CosCutoff;
@@ -59,7 +60,7 @@ void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
 // (base <= 0 or undefined H).
 double SpecularD(const IlluminationInputs& in, const Vec3& N, const Vec3& V, LightTerms& t)
 {
-  if (in.Model == Reflection::BlinnPhong)
+  if (UsesHalfVector(in.Model))
   {
     const Vec3 sum = t.L + V;
     const double len = length(sum);

@@ -38,7 +38,15 @@ double TexelCoordinate(double s, int size, TextureWrap wrap)
   {
     return 0;
   }
-  return wrap == TextureWrap::Clamp ? std::clamp(u, -1.0, size + 1.0) : std::fmod(u, 2.0 * size);
+  switch (wrap)
+  {
+    case TextureWrap::Clamp:
+      return std::clamp(u, -1.0, size + 1.0);
+    case TextureWrap::Repeat:
+    case TextureWrap::Mirror:
+      return std::fmod(u, 2.0 * size);
+  }
+  return 0;
 }
 }
 
@@ -63,10 +71,13 @@ Rgb SampleTexture(const TextureMap& map, double s, double t)
   const TextureImage& image = *map.Image;
   const double u = TexelCoordinate(s, image.Width, map.WrapS),
                v = TexelCoordinate(t, image.Height, map.WrapT);
-  if (map.Filter == TextureFilter::Nearest)
+  switch (map.Filter)
   {
-    return image.Texel(Wrap(static_cast<long long>(std::floor(u)), image.Width, map.WrapS),
-      Wrap(static_cast<long long>(std::floor(v)), image.Height, map.WrapT));
+    case TextureFilter::Nearest:
+      return image.Texel(Wrap(static_cast<long long>(std::floor(u)), image.Width, map.WrapS),
+        Wrap(static_cast<long long>(std::floor(v)), image.Height, map.WrapT));
+    case TextureFilter::Bilinear:
+      break;
   }
   // GL_LINEAR: the four texels whose centres surround (u, v).
   const double x = u - 0.5, y = v - 0.5;

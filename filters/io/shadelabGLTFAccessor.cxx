@@ -219,9 +219,15 @@ void Decode(const Layout& layout, Store&& store)
       return each(Load<std::uint16_t>(layout));
     case ScalarType::UInt32:
       return each(Load<std::uint32_t>(layout));
-    default:
-      return each(Load<float>(layout)); // the types glTF has end here
+    case ScalarType::Float32:
+      return each(Load<float>(layout));
+    case ScalarType::Int32: // not glTF's: its component types stop at these
+    case ScalarType::Int64:
+    case ScalarType::UInt64:
+    case ScalarType::Float64:
+      break;
   }
+  throw MeshReadError("an accessor's component type is not glTF's");
 }
 }
 

@@ -181,9 +181,15 @@ bool WithInteger(Scalar type, Read&& read)
       return read(std::uint16_t{});
     case Scalar::Int32:
       return read(std::int32_t{});
-    default:
+    case Scalar::UInt32:
       return read(std::uint32_t{});
+    case Scalar::Int64:
+    case Scalar::UInt64:
+    case Scalar::Float32:
+    case Scalar::Float64:
+      break; // not a plain face's (IsPlainFace)
   }
+  return false;
 }
 
 bool ReadFaceElement(

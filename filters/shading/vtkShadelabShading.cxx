@@ -30,6 +30,50 @@ vtkStandardNewMacro(vtkShadelabShading);
 
 using namespace shadelab;
 
+namespace
+{
+// The light's kind as the all-features program's shadelabLightKind codes it.
+int KindCode(LightKind kind)
+{
+  switch (kind)
+  {
+    case LightKind::Point:
+      return 0;
+    case LightKind::Directional:
+      return 1;
+    case LightKind::Spot:
+      return 2;
+  }
+  return 0;
+}
+
+int WrapMode(TextureWrap w)
+{
+  switch (w)
+  {
+    case TextureWrap::Repeat:
+      return vtkTextureObject::Repeat;
+    case TextureWrap::Clamp:
+      return vtkTextureObject::ClampToEdge;
+    case TextureWrap::Mirror:
+      return vtkTextureObject::MirroredRepeat;
+  }
+  return vtkTextureObject::Repeat;
+}
+
+int FilterMode(TextureFilter f)
+{
+  switch (f)
+  {
+    case TextureFilter::Bilinear:
+      return vtkTextureObject::Linear;
+    case TextureFilter::Nearest:
+      return vtkTextureObject::Nearest;
+  }
+  return vtkTextureObject::Linear;
+}
+}
+
 vtkShadelabShading::vtkShadelabShading()
   : Observer(vtkSmartPointer<vtkCallbackCommand>::New())
 {
@@ -304,13 +348,11 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
     std::vector<int> kinds;
     for (const Light& light : this->Lights)
     {
-      kinds.push_back(light.Kind == LightKind::Point ? 0
-          : light.Kind == LightKind::Directional     ? 1
-                                                     : 2);
+      kinds.push_back(KindCode(light.Kind));
     }
     program->SetUniformi("shadelabLightCount", std::min(n, AllFeaturesMaxLights));
     program->SetUniform1iv("shadelabLightKind", static_cast<int>(kinds.size()), kinds.data());
-    program->SetUniformi("shadelabReflection", this->Features.Model == Reflection::Phong ? 1 : 0);
+    program->SetUniformi("shadelabReflection", UsesHalfVector(this->Features.Model) ? 0 : 1);
   }
 
   if (this->Features.Rule == Shading::Flat)
@@ -373,16 +415,9 @@ void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
   // The sampler's settings at every draw: a texture taken over from the
   // shading before (the same image) may have had others. The object sends
   // them to OpenGL when they changed.
-  const auto wrap = [](TextureWrap w)
-  {
-    return w == TextureWrap::Clamp ? vtkTextureObject::ClampToEdge
-      : w == TextureWrap::Mirror   ? vtkTextureObject::MirroredRepeat
-                                   : vtkTextureObject::Repeat;
-  };
-  const int filter =
-    map.Filter == TextureFilter::Nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
-  this->TextureObject->SetWrapS(wrap(map.WrapS));
-  this->TextureObject->SetWrapT(wrap(map.WrapT));
+  const int filter = FilterMode(map.Filter);
+  this->TextureObject->SetWrapS(WrapMode(map.WrapS));
+  this->TextureObject->SetWrapT(WrapMode(map.WrapT));
   this->TextureObject->SetMinificationFilter(filter);
   this->TextureObject->SetMagnificationFilter(filter);
   // Kept active (its unit reserved) while the shading draws.

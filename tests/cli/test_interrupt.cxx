@@ -180,6 +180,20 @@ std::pair<int, int> StartRenderWithWriter(
   return { pid, pid > 0 ? StartedWriter(pid) : -1 };
 }
 
+// Waits (up to 30 s) until the writer's main() runs: it has its handler for
+// its parent's death then. Until the writer execs, posix_spawn (a vfork)
+// keeps shadelab suspended, and a stopped child would keep it so.
+bool ReachedMain(int writer)
+{
+  const auto start = std::chrono::steady_clock::now();
+  while (!Catches(writer, SIGUSR1) &&
+    std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+  {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return Catches(writer, SIGUSR1);
+}
+
 bool EndsWithin(int pid, std::chrono::milliseconds bound)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -205,6 +219,7 @@ TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
   const auto [pid, writer] = StartRenderWithWriter(dir, "spot.png");
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
+  ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";
   kill(writer, SIGSTOP);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill(pid, SIGTERM);
@@ -235,13 +250,7 @@ TEST(Interrupt, SigkillLeavesNoProcessBehind)
   const auto [pid, writer] = StartRenderWithWriter(dir, "spot.gif", { "--orbit", "3600" });
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
-  const auto start = std::chrono::steady_clock::now();
-  while (!Catches(writer, SIGUSR1) &&
-    std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
-  {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ASSERT_TRUE(Catches(writer, SIGUSR1)) << "the writer never reached its main()";
+  ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";
   const int input =
     open(("/proc/" + std::to_string(writer) + "/fd/0").c_str(), O_WRONLY | O_CLOEXEC);
   ASSERT_GE(input, 0);

@@ -16,9 +16,9 @@ install(DIRECTORY data/scenes DESTINATION "${SHADELAB_DATA_DIR}" COMPONENT runti
 # VTK module properties (shadelab-vtk-module-properties.cmake, which
 # vtk_module_autoinit and VTK's wrapping read); the config file loads both.
 set(cmake_dir "${CMAKE_INSTALL_LIBDIR}/cmake/shadelab")
-# The VTK modules the filters link (filters/vtk.module), for find_dependency.
-set(SHADELAB_FILTERS_VTK_COMPONENTS CommonCore CommonDataModel CommonExecutionModel FiltersCore
-  FiltersGeneral IOCore IOLegacy IOXML RenderingCore RenderingOpenGL2)
+# The VTK modules the filters link publicly (filters/vtk.module), for find_dependency.
+set(SHADELAB_FILTERS_VTK_COMPONENTS CommonCore CommonDataModel CommonExecutionModel IOCore
+  RenderingCore RenderingOpenGL2)
 string(REPLACE ";" " " SHADELAB_FILTERS_VTK_COMPONENTS "${SHADELAB_FILTERS_VTK_COMPONENTS}")
 configure_package_config_file(cmake/shadelabConfig.cmake.in
   "${CMAKE_CURRENT_BINARY_DIR}/shadelabConfig.cmake" INSTALL_DESTINATION "${cmake_dir}")

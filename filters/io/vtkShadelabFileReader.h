@@ -16,12 +16,14 @@
 #ifndef vtkShadelabFileReader_h
 #define vtkShadelabFileReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include <vtkPolyDataAlgorithm.h>
 
 #include <cstdint>
 #include <string>
 
-class vtkShadelabFileReader : public vtkPolyDataAlgorithm
+class SHADELAB_FILTERS_EXPORT vtkShadelabFileReader : public vtkPolyDataAlgorithm
 {
 public:
   vtkTypeMacro(vtkShadelabFileReader, vtkPolyDataAlgorithm);

@@ -43,9 +43,11 @@
 #ifndef vtkShadelabGLTFReader_h
 #define vtkShadelabGLTFReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabGLTFReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabGLTFReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabGLTFReader* New();

@@ -18,9 +18,11 @@
 #ifndef vtkShadelabLegacyVTKReader_h
 #define vtkShadelabLegacyVTKReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabLegacyVTKReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabLegacyVTKReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabLegacyVTKReader* New();

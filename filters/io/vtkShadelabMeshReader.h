@@ -24,9 +24,11 @@
 #ifndef vtkShadelabMeshReader_h
 #define vtkShadelabMeshReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabMeshReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabMeshReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabMeshReader* New();

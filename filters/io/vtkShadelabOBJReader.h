@@ -44,13 +44,15 @@
 #ifndef vtkShadelabOBJReader_h
 #define vtkShadelabOBJReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "shadelabMtlParser.h"
 #include "vtkShadelabFileReader.h"
 
 #include <string>
 #include <vector>
 
-class vtkShadelabOBJReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabOBJReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabOBJReader* New();

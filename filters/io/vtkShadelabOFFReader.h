@@ -30,9 +30,11 @@
 #ifndef vtkShadelabOFFReader_h
 #define vtkShadelabOFFReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabOFFReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabOFFReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabOFFReader* New();

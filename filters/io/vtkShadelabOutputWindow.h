@@ -14,6 +14,8 @@
 #ifndef vtkShadelabOutputWindow_h
 #define vtkShadelabOutputWindow_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include <vtkOutputWindow.h>
 
 #include <string>
@@ -24,7 +26,7 @@ namespace shadelab
 class MessageScope;
 }
 
-class vtkShadelabOutputWindow : public vtkOutputWindow
+class SHADELAB_FILTERS_EXPORT vtkShadelabOutputWindow : public vtkOutputWindow
 {
 public:
   static vtkShadelabOutputWindow* New();
@@ -72,7 +74,7 @@ namespace shadelab
  * more. Makes vtkShadelabOutputWindow VTK's output window if it is not yet.
  * Scopes nest on one thread: the one that runs VTK's pipelines.
  */
-class MessageScope
+class SHADELAB_FILTERS_EXPORT MessageScope
 {
 public:
   MessageScope();

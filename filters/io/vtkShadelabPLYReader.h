@@ -18,9 +18,11 @@
 #ifndef vtkShadelabPLYReader_h
 #define vtkShadelabPLYReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabPLYReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabPLYReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabPLYReader* New();

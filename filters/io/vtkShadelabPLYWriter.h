@@ -12,11 +12,13 @@
 #ifndef vtkShadelabPLYWriter_h
 #define vtkShadelabPLYWriter_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include <vtkWriter.h>
 
 class vtkPolyData;
 
-class vtkShadelabPLYWriter : public vtkWriter
+class SHADELAB_FILTERS_EXPORT vtkShadelabPLYWriter : public vtkWriter
 {
 public:
   static vtkShadelabPLYWriter* New();

@@ -17,9 +17,11 @@
 #ifndef vtkShadelabSTLReader_h
 #define vtkShadelabSTLReader_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "vtkShadelabFileReader.h"
 
-class vtkShadelabSTLReader : public vtkShadelabFileReader
+class SHADELAB_FILTERS_EXPORT vtkShadelabSTLReader : public vtkShadelabFileReader
 {
 public:
   static vtkShadelabSTLReader* New();

@@ -74,6 +74,8 @@
 #ifndef vtkShadelabMeshNormals_h
 #define vtkShadelabMeshNormals_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "shadelabNames.h"
 
 #include <vtkPolyDataAlgorithm.h>
@@ -82,7 +84,7 @@
 #include <memory>
 #include <utility>
 
-class vtkShadelabMeshNormals : public vtkPolyDataAlgorithm
+class SHADELAB_FILTERS_EXPORT vtkShadelabMeshNormals : public vtkPolyDataAlgorithm
 {
 public:
   static vtkShadelabMeshNormals* New();

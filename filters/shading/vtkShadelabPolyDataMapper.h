@@ -18,9 +18,11 @@
 #ifndef vtkShadelabPolyDataMapper_h
 #define vtkShadelabPolyDataMapper_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include <vtkOpenGLPolyDataMapper.h>
 
-class vtkShadelabPolyDataMapper : public vtkOpenGLPolyDataMapper
+class SHADELAB_FILTERS_EXPORT vtkShadelabPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
 public:
   static vtkShadelabPolyDataMapper* New();

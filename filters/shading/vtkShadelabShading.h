@@ -15,6 +15,8 @@
 #ifndef vtkShadelabShading_h
 #define vtkShadelabShading_h
 
+#include "shadelab_filtersModule.h" // the export macro
+
 #include "shadelabFaceNormalTexture.h"
 #include "shadelabShaderSource.h"
 #include "shadelabShadingOracle.h"
@@ -31,7 +33,7 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class vtkShadelabShading : public vtkObject
+class SHADELAB_FILTERS_EXPORT vtkShadelabShading : public vtkObject
 {
 public:
   static vtkShadelabShading* New();

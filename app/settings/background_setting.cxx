@@ -60,15 +60,12 @@ Setting BackgroundSetting()
     scene_file::Apply(
       o, { "--background=" + (transparent ? "transparent" : colour.FromJson(v, path)) }, path);
   };
-  s.Write = [colour](const SceneOptions& o, ordered_json& shot)
+  s.Write = [colour, given](const SceneOptions& o, ordered_json& shot)
   {
-    if (o.TransparentBackground)
+    if (!given(o).empty())
     {
-      shot["background"] = "transparent";
-    }
-    else if (o.Background != SceneOptions{}.Background)
-    {
-      shot["background"] = colour.ToJson(o.Background);
+      shot["background"] =
+        o.TransparentBackground ? ordered_json("transparent") : colour.ToJson(o.Background);
     }
   };
   s.Schema = [help = s.Help]()

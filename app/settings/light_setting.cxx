@@ -15,10 +15,10 @@ using namespace scene_file;
 const std::vector<std::string> LightKeys{ "kind", "position", "direction", "color", "half_angle",
   "exponent" };
 
+// A light's triples as --light writes them: the Triple kind's text.
 std::string Triple(const Vec3& v)
 {
-  return settings::NumberText(v[0]) + "," + settings::NumberText(v[1]) + "," +
-    settings::NumberText(v[2]);
+  return settings::Triple{ settings::Triple::Point }.Text(v);
 }
 
 // A light object of a scene file as --light's text.

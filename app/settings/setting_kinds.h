@@ -274,16 +274,17 @@ struct IsOptional<std::optional<T>> : std::true_type
 };
 
 /**
- * The setting e of kind's values, kept in field(o) (a lambda giving a
- * reference to a member of a SceneOptions, const or not; a std::optional
- * member is absent until given).
+ * The setting e of kind's values, kept in the member of a SceneOptions that
+ * member(o) gives (a std::optional member is absent until given).
  */
-template <typename Kind, typename Field>
-Setting Plain(const Entry& e, Kind kind, Field field)
+template <typename Kind, typename Stored>
+Setting Plain(const Entry& e, Kind kind, Stored& (*member)(SceneOptions&))
 {
-  using Stored = std::decay_t<decltype(field(std::declval<SceneOptions&>()))>;
   constexpr bool optional = IsOptional<Stored>::value;
   static const SceneOptions defaults;
+  // The member of a const SceneOptions too, only ever read through this.
+  const auto field = [member](const SceneOptions& o) -> const Stored&
+  { return member(const_cast<SceneOptions&>(o)); };
   Setting s;
   s.Option = e.Option;
   s.Key = e.Key;
@@ -319,8 +320,8 @@ Setting Plain(const Entry& e, Kind kind, Field field)
   if (!s.Option.empty())
   {
     const Setting names = s; // its names and help, for the option's declaration
-    s.Declare = [kind, field, names](CLI::App& c, SceneOptions& o)
-    { return kind.Declare(c, names, field(o)); };
+    s.Declare = [kind, member, names](CLI::App& c, SceneOptions& o)
+    { return kind.Declare(c, names, member(o)); };
     s.Arguments = [kind, given, option = s.Option](
                     const SceneOptions& o, std::vector<std::string>& words)
     {
@@ -336,12 +337,12 @@ Setting Plain(const Entry& e, Kind kind, Field field)
   }
   if (!s.Key.empty())
   {
-    s.Read = [kind, field, option = s.Option](const json& v, const std::string& path,
+    s.Read = [kind, member, option = s.Option](const json& v, const std::string& path,
                const std::filesystem::path& folder, SceneOptions& o)
     {
       if constexpr (Kind::ReadsDirectly)
       {
-        field(o) = kind.FromJson(v, path, folder);
+        member(o) = kind.FromJson(v, path, folder);
       }
       else
       {
@@ -363,9 +364,9 @@ Setting Plain(const Entry& e, Kind kind, Field field)
       return schema;
     };
   }
-  s.Sample = [kind, field](SceneOptions& o)
+  s.Sample = [kind, member](SceneOptions& o)
   {
-    auto& value = field(o);
+    auto& value = member(o);
     if constexpr (optional)
     {
       value = kind.Sample(typename Stored::value_type{});

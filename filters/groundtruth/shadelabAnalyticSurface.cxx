@@ -5,6 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkMath.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
@@ -19,7 +20,6 @@ namespace shadelab
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 constexpr double R = 1;                            // the torus's major radius
 constexpr double r = AnalyticSurface::MinorRadius; // its tube radius
 
@@ -111,10 +111,10 @@ vtkSmartPointer<vtkPolyData> TorusGrid(int nu, int nv)
   points.reserve(static_cast<std::size_t>(nu) * nv);
   for (int i = 0; i < nu; ++i)
   {
-    const double u = 2 * Pi * i / nu;
+    const double u = 2 * vtkMath::Pi() * i / nu;
     for (int j = 0; j < nv; ++j)
     {
-      const double v = 2 * Pi * j / nv;
+      const double v = 2 * vtkMath::Pi() * j / nv;
       points.push_back({ (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
         r * std::sin(v) });
     }

@@ -3,6 +3,7 @@
 #include "shadelabVec3.h"
 
 #include <vtkCamera.h>
+#include <vtkMath.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace shadelab
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 // vtkCamera's frame: the view-up made orthogonal to the direction of view.
 struct ViewFrame
@@ -33,7 +33,7 @@ ViewFrame FrameOf(const PinholeCamera& c)
 // (orthographic).
 double HalfHeight(const PinholeCamera& c)
 {
-  return c.Orthographic ? c.ParallelScale : std::tan(c.ViewAngle * Pi / 360);
+  return c.Orthographic ? c.ParallelScale : std::tan(c.ViewAngle * vtkMath::Pi() / 360);
 }
 
 // Distance from (x, y) to the segment from a to b, in the plane.

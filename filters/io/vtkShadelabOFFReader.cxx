@@ -26,7 +26,7 @@ using shadelab::Quote;
 using shadelab::TextScanner;
 
 // What the keyword says each vertex carries, and the counts after it.
-struct Header
+struct OffHeader
 {
   bool Normals = false;
   bool Colors = false;
@@ -39,7 +39,7 @@ const char* KeywordHelp = "(OFF, with any of the prefixes ST, C, N)";
 
 // [ST][C][N]OFF, the prefixes in any order; "OFF" may run into the first
 // count (ModelNet's "OFF1234"), which goes to `glued`.
-Header ReadKeyword(std::string_view keyword, std::string_view& glued, const TextScanner& scanner)
+OffHeader ReadKeyword(std::string_view keyword, std::string_view& glued, const TextScanner& scanner)
 {
   const auto off = keyword.find("OFF");
   if (off == std::string_view::npos)
@@ -47,7 +47,7 @@ Header ReadKeyword(std::string_view keyword, std::string_view& glued, const Text
     throw MeshReadError(
       "not an OFF file: the first word is " + Quote(keyword) + ", not a keyword " + KeywordHelp);
   }
-  Header header;
+  OffHeader header;
   std::string_view prefixes = keyword.substr(0, off);
   const auto take = [&](std::string_view prefix, bool& flag)
   {
@@ -102,7 +102,7 @@ std::uint64_t ReadCount(std::string_view token, const char* what, const TextScan
 
 // The smallest vertex line is "0 0 0\n", the smallest face "3 0 1 2\n"; the
 // last line may lack its newline.
-void CheckCounts(const Header& header, std::size_t fileSize)
+void CheckCounts(const OffHeader& header, std::size_t fileSize)
 {
   constexpr std::uint64_t vertexBytes = 6, faceBytes = 8;
   const std::uint64_t room = fileSize + 1;
@@ -115,14 +115,14 @@ void CheckCounts(const Header& header, std::size_t fileSize)
   }
 }
 
-Header ReadHeader(TextScanner& scanner, std::size_t fileSize)
+OffHeader ReadHeader(TextScanner& scanner, std::size_t fileSize)
 {
   if (!scanner.NextLine())
   {
     throw MeshReadError("not an OFF file: it has no keyword " + std::string(KeywordHelp));
   }
   std::string_view glued;
-  Header header = ReadKeyword(scanner.NextToken(), glued, scanner);
+  OffHeader header = ReadKeyword(scanner.NextToken(), glued, scanner);
   std::string_view token = glued.empty() ? scanner.NextToken() : glued;
   if (token == "BINARY")
   {
@@ -154,7 +154,7 @@ Header ReadHeader(TextScanner& scanner, std::size_t fileSize)
 
 // A vertex line is x y z [nx ny nz] [r g b [a]] [s t]: the number of colour
 // values on a line of `count` values (0, 3 or 4), or -1 if it fits none.
-int ColorValues(const Header& header, std::size_t count)
+int ColorValues(const OffHeader& header, std::size_t count)
 {
   const std::size_t fixed = 3 + (header.Normals ? 3 : 0) + (header.TextureCoordinates ? 2 : 0);
   if (!header.Colors)
@@ -164,7 +164,7 @@ int ColorValues(const Header& header, std::size_t count)
   return count == fixed + 3 ? 3 : count == fixed + 4 ? 4 : -1;
 }
 
-std::string DescribeVertex(const Header& header)
+std::string DescribeVertex(const OffHeader& header)
 {
   return std::string("x y z") + (header.Normals ? " nx ny nz" : "") +
     (header.Colors ? " r g b [a]" : "") + (header.TextureCoordinates ? " s t" : "");
@@ -187,7 +187,7 @@ struct Parsed
   bool FloatColors = false;
 };
 
-void ReadVertex(TextScanner& scanner, const Header& header, std::uint64_t v, Parsed& parsed)
+void ReadVertex(TextScanner& scanner, const OffHeader& header, std::uint64_t v, Parsed& parsed)
 {
   constexpr std::size_t maxValues = 12; // x y z, nx ny nz, r g b a, s t
   std::string_view tokens[maxValues + 1];
@@ -244,7 +244,7 @@ void ReadVertex(TextScanner& scanner, const Header& header, std::uint64_t v, Par
   }
 }
 
-void ReadFace(TextScanner& scanner, const Header& header, std::uint64_t f, Parsed& parsed)
+void ReadFace(TextScanner& scanner, const OffHeader& header, std::uint64_t f, Parsed& parsed)
 {
   const std::string name = "face " + std::to_string(f);
   const long long size = scanner.ReadInteger((name + "'s vertex count").c_str());
@@ -321,7 +321,7 @@ void vtkShadelabOFFReader::ReadMesh(const char* fileName, vtkPolyData* triangles
 {
   const std::string bytes = ReadFileBytes(fileName);
   TextScanner scanner(bytes, '#');
-  const Header header = ReadHeader(scanner, bytes.size());
+  const OffHeader header = ReadHeader(scanner, bytes.size());
 
   Parsed parsed;
   shadelab::PolygonMesh& mesh = parsed.Mesh;

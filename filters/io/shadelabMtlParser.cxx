@@ -200,6 +200,18 @@ MtlLibrary ParseMtl(std::string_view text)
       m.Translucency = 1 - ReadNumber(scanner, "Tr");
     }
   }
+  // Right by the lecture's equation, but what a user sees is a white
+  // surface (MeshLab writes Ks 1 1 1 with Ns 0): said once per material.
+  for (const MtlMaterial& material : materials)
+  {
+    const Material& m = material.Coefficients;
+    if (m.Ns == 0 && (m.Ks[0] > 0 || m.Ks[1] > 0 || m.Ks[2] > 0))
+    {
+      library.Warnings.push_back("newmtl " + Quote(m.Name) +
+        ": Ns is 0 and Ks above 0, so the specular term is Ks wherever the surface is lit "
+        "(cos^0 = 1)");
+    }
+  }
   return library;
 }
 }

@@ -2,6 +2,9 @@
 
 #include "shadelabMeshReadError.h"
 
+#include <algorithm>
+#include <cstring>
+
 namespace shadelab::ply
 {
 namespace
@@ -175,6 +178,20 @@ void AssignIndexRole(Element& element)
   throw MeshReadError("the " + element.Name + " element has no vertex_indices list");
 }
 
+}
+
+void NewlinesForBareCarriageReturns(std::string& bytes)
+{
+  if (bytes.compare(0, 4, "ply\r") != 0 || bytes.compare(0, 5, "ply\r\n") == 0)
+  {
+    return;
+  }
+  const std::size_t endHeader = bytes.find("\rend_header\r");
+  const std::size_t headerEnd =
+    endHeader == std::string::npos ? bytes.size() : endHeader + std::strlen("\rend_header\r");
+  const bool ascii = bytes.find("\rformat ascii ") < headerEnd;
+  std::replace(bytes.begin(),
+    ascii ? bytes.end() : bytes.begin() + static_cast<std::ptrdiff_t>(headerEnd), '\r', '\n');
 }
 
 Header ReadHeader(std::string_view bytes, TextScanner& scanner)

@@ -75,6 +75,14 @@ struct Header
   std::vector<Element> Elements;
 };
 
+/**
+ * A file whose lines end in a bare CR (Rhinoceros 6's exports): its
+ * header's CRs become LFs in place, and an ASCII body's too (the same
+ * length, so every offset stays); a binary body is left as it is. Files
+ * whose lines end in LF or CRLF are left alone.
+ */
+void NewlinesForBareCarriageReturns(std::string& bytes);
+
 /** Reads the header's lines and leaves `scanner` before the body's first line. */
 Header ReadHeader(std::string_view bytes, TextScanner& scanner);
 

@@ -229,7 +229,8 @@ void vtkShadelabPLYReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   shadelab::PolygonMesh mesh;
   {
     // The file's bytes go before the mesh is converted: not held beside it.
-    const std::string bytes = ReadFileBytes(fileName);
+    std::string bytes = ReadFileBytes(fileName);
+    NewlinesForBareCarriageReturns(bytes);
     shadelab::TextScanner scanner(bytes);
     Header header = ReadHeader(bytes, scanner);
     AssignRoles(header);

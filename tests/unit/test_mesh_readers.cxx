@@ -365,6 +365,20 @@ TEST_F(MeshReaders, PlyInEveryEncodingAndFormGivesTheSameSquare)
   }
 }
 
+// Rhinoceros 6 ends its lines in a bare CR: the header's, and an ASCII body's.
+TEST_F(MeshReaders, PlyLinesEndingInABareCarriageReturnReadAsLines)
+{
+  for (const std::string format : { "ascii", "binary_little_endian" })
+  {
+    SCOPED_TRACE(format);
+    std::string bytes = SquarePly(format.c_str(), SquareForm::Quad);
+    const std::size_t headerEnd = bytes.find("end_header\n") + std::strlen("end_header\n");
+    std::replace(
+      bytes.begin(), format == "ascii" ? bytes.end() : bytes.begin() + headerEnd, '\n', '\r');
+    ExpectUnitSquare(Read(this->Write("rhino.ply", bytes)));
+  }
+}
+
 TEST_F(MeshReaders, PlyWithoutAllThreeNormalComponentsHasNoNormals)
 {
   const ReadResult result = Read(this->Write("square.ply",
@@ -550,6 +564,21 @@ TEST_F(MeshReaders, ObjMaterialsMakeParts)
   const ReadResult plain = Read(this->Write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   ASSERT_TRUE(plain.Ok) << plain.Error;
   EXPECT_EQ(plain.Mesh->GetCellData()->GetArray(shadelab::PartArrayName), nullptr);
+}
+
+// The lecture's equation with ns = 0 makes the highlight ks wherever the
+// surface is lit: right, but a white surface to a user, so it is said.
+TEST_F(MeshReaders, MtlMaterialsOfNsZeroWithASpecularColourAreWarnedOfOnce)
+{
+  const shadelab::MtlLibrary library = shadelab::ParseMtl("newmtl shiny\nKs 1 1 1\nNs 0\n"
+                                                          "newmtl unset\nKs 0 0.5 0\n"
+                                                          "newmtl matte\nKs 0 0 0\nNs 0\n"
+                                                          "newmtl sharp\nKs 1 1 1\nNs 10\n");
+  ASSERT_EQ(library.Warnings.size(), 2u);
+  EXPECT_EQ(library.Warnings[0],
+    "newmtl 'shiny': Ns is 0 and Ks above 0, so the specular term is Ks wherever the surface "
+    "is lit (cos^0 = 1)");
+  EXPECT_NE(library.Warnings[1].find("newmtl 'unset'"), std::string::npos);
 }
 
 // mtllib: the parts' materials from the libraries beside the OBJ; one

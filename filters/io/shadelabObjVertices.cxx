@@ -47,6 +47,7 @@ struct SplitKeyHash
 
 void SplitVertices(ObjCorners& corners, bool texture, bool normals, PolygonMesh& mesh)
 {
+  mesh.Colors = std::move(corners.Colors); // a vertex's, copies' appended below
   if (!texture && !normals)
   {
     mesh.Points = std::move(corners.Vertices); // nothing to split by
@@ -76,6 +77,11 @@ void SplitVertices(ObjCorners& corners, bool texture, bool normals, PolygonMesh&
       {
         mesh.Points.insert(mesh.Points.end(),
           { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
+        if (!mesh.Colors.empty())
+        {
+          const float* colour = &mesh.Colors[4 * v];
+          mesh.Colors.insert(mesh.Colors.end(), { colour[0], colour[1], colour[2], colour[3] });
+        }
         point.push_back(corner);
         copied.push_back(v);
       }

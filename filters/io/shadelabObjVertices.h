@@ -30,6 +30,7 @@ constexpr vtkIdType ObjNoIndex = -1;
 struct ObjCorners
 {
   std::vector<double> Vertices;          // x y z per v
+  std::vector<float> Colors;             // r g b a per v, or empty
   std::vector<float> TextureCoordinates; // s t per vt
   std::vector<float> Normals;            // x y z per vn
   std::vector<vtkIdType> VertexIds;      // 0-based, per corner
@@ -38,8 +39,9 @@ struct ObjCorners
 };
 
 /**
- * Moves `corners` into `mesh`: the points, their texture coordinates (if
- * `texture`), normals (if `normals`) and file vertices; corners.VertexIds
+ * Moves `corners` into `mesh`: the points, their colours (a copy's its
+ * vertex's), texture coordinates (if `texture`), normals (if `normals`)
+ * and file vertices; corners.VertexIds
  * become the corners' point ids.
  */
 void SplitVertices(ObjCorners& corners, bool texture, bool normals, PolygonMesh& mesh);

@@ -11,6 +11,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -180,13 +181,22 @@ ObjData Parse(std::string_view text)
       {
         obj.Corners.Vertices.push_back(scanner.ReadDouble("vertex coordinate"));
       }
-      double extra;
+      // w, or (the common extension) r g b: the colour kept, anything else read and dropped.
+      double extra[3];
+      int extras = 0;
       for (auto token = scanner.NextToken(); !AtStatementEnd(token); token = scanner.NextToken())
       {
-        if (!shadelab::ParseNumber(token, extra))
+        double& value = extra[std::min(extras++, 2)];
+        if (!shadelab::ParseNumber(token, value))
         {
           scanner.Fail("malformed number " + Quote(token) + " after a vertex");
         }
+      }
+      if (extras == 3)
+      {
+        obj.Corners.Colors.insert(obj.Corners.Colors.end(),
+          { static_cast<float>(extra[0]), static_cast<float>(extra[1]),
+            static_cast<float>(extra[2]), 1.0f });
       }
     }
     else if (keyword == "vt")
@@ -299,6 +309,12 @@ void vtkShadelabOBJReader::ReadMesh(const char* fileName, vtkPolyData* triangles
   if (this->ReadNormals && obj.SomeCornersHaveNormals && obj.SomeCornersLackNormals)
   {
     vtkWarningMacro(<< "some faces have no vn normals, so the file's normals are ignored");
+  }
+  if (!obj.Corners.Colors.empty() &&
+    3 * obj.Corners.Colors.size() != 4 * obj.Corners.Vertices.size())
+  {
+    vtkWarningMacro(<< "some vertices have no r g b colour, so the file's colours are ignored");
+    obj.Corners.Colors.clear();
   }
   shadelab::PolygonMesh mesh;
   shadelab::SplitVertices(obj.Corners, texture, normals, mesh);

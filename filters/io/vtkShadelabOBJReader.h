@@ -6,8 +6,10 @@
  * negative indices relative to the last definition, polygons of any size)
  * and `usemtl` and `mtllib`, and ignores every other statement (o, g, s, l,
  * p, ...) and comments.
- * Extra numbers after a vertex's x y z (w, or r g b colours) are ignored, as
- * is a texture coordinate's third (w); `vt u` alone is u 0.
+ * Three numbers after a vertex's x y z are its colour, r g b in 0..1 (the
+ * "Colors" point data, opaque), when every vertex has one (when only some
+ * do, they are ignored with a warning); other extra numbers (w) are read
+ * and ignored, as is a texture coordinate's third (w); `vt u` alone is u 0.
  * Unlike vtkOBJReader it stops at the first malformed number, at an index of
  * 0 or out of range, or at a face with fewer than 3 vertices, with
  * "line N: ..." in the message; non-finite coordinates are reported by vertex

@@ -652,6 +652,44 @@ TEST_F(MeshReaders, ObjIgnoresWhatItDoesNotRender)
   ExpectUnitSquare(result);
 }
 
+// The common extension `v x y z r g b`: each point's colour is its file
+// vertex's, copies made for a second vt included.
+TEST_F(MeshReaders, ObjVertexColoursFollowTheirVerticesIntoEveryPoint)
+{
+  const std::string vertices =
+    "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 1 1 0 0 0 1\nv 0 1 0 0.5 0.25 0.125\n";
+  const std::array<std::array<double, 4>, 4> file{ { { 1, 0, 0, 1 }, { 0, 1, 0, 1 }, { 0, 0, 1, 1 },
+    { 0.5, 0.25, 0.125, 1 } } };
+  const ReadResult plain = Read(this->Write("colours.obj", vertices + "f 1 2 3\nf 1 3 4\n"));
+  ExpectUnitSquare(plain);
+  EXPECT_TRUE(plain.Warnings.empty());
+  // Vertex 1 twice, with vt 1 and vt 5: the copy is point 4.
+  const ReadResult split = Read(this->Write("split.obj",
+    vertices + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\nf 1/1 2/2 3/3\nf 1/5 3/3 4/4\n"));
+  ASSERT_TRUE(split.Ok) << split.Error;
+  ASSERT_EQ(split.Mesh->GetNumberOfPoints(), 5);
+  for (const ReadResult* result : { &plain, &split })
+  {
+    vtkDataArray* colours = result->Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName);
+    ASSERT_NE(colours, nullptr);
+    for (vtkIdType p = 0; p < result->Mesh->GetNumberOfPoints(); ++p)
+    {
+      const std::size_t v = p < 4 ? static_cast<std::size_t>(p) : 0;
+      for (int c = 0; c < 4; ++c)
+      {
+        EXPECT_EQ(colours->GetComponent(p, c), file[v][c]) << "point " << p << " component " << c;
+      }
+    }
+  }
+
+  const ReadResult some = Read(this->Write(
+    "some.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0 0 1\nv 0 1 0 1\nf 1 2 3\nf 1 3 4\n"));
+  ExpectUnitSquare(some);
+  EXPECT_EQ(some.Mesh->GetPointData()->GetArray(shadelab::ColorsArrayName), nullptr);
+  ASSERT_EQ(some.Warnings.size(), 1u);
+  EXPECT_NE(some.Warnings[0].find("some vertices have no r g b colour"), std::string::npos);
+}
+
 TEST_F(MeshReaders, ObjMixingFacesWithAndWithoutNormalsDropsThemWithAWarning)
 {
   const ReadResult result = Read(this->Write(

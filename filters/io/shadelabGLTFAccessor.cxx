@@ -27,8 +27,18 @@ constexpr ComponentName ComponentTypes[] = { { 5120, ScalarType::Int8, "BYTE" },
 
 constexpr std::string_view ElementTypes[] = { "SCALAR", "VEC2", "VEC3", "VEC4" };
 
+// A sparse accessor's elements that replace the base's: element j of
+// Values (Stride apart) becomes element Indices[j].
+struct Substitutions
+{
+  std::vector<std::uint64_t> Indices; // strictly increasing, below the accessor's count
+  const unsigned char* Values = nullptr;
+  std::uint64_t Stride = 0;
+};
+
 // An accessor with its ranges checked: element i, component c is at
-// Data + i * Stride + c * SizeOf(Type).
+// Data + i * Stride + c * SizeOf(Type), or 0 where Data is null (an
+// accessor without a bufferView), then Sparse's elements in their places.
 struct Layout
 {
   const unsigned char* Data = nullptr;
@@ -37,6 +47,7 @@ struct Layout
   int Components = 0;
   const ComponentName* Component = nullptr;
   bool Normalized = false;
+  Substitutions Sparse;
 };
 
 std::string Describe(const Layout& layout)
@@ -135,62 +146,31 @@ void CheckUse(
   }
 }
 
-// The accessor's layout for `use` (of `referrer`): its types checked
-// against the use before any range is looked at, then its ranges.
-Layout ReadLayout(const Document& document, std::uint64_t index, const AccessorUse& use,
-  const std::string& referrer)
-{
-  const std::string where = "accessor " + std::to_string(index);
-  const Json& accessor = Item(document.Root, "accessors", index, referrer);
-  if (accessor.contains("sparse"))
-  {
-    Fail(where + " is sparse, which shadelab does not read");
-  }
-  Layout layout;
-  layout.Count = Unsigned(accessor, "count", where);
-  if (layout.Count == 0)
-  {
-    Fail(where + ": count is 0");
-  }
-  layout.Component = &ReadComponentType(accessor, where);
-  layout.Components = ReadElementType(accessor, where);
-  if (accessor.contains("normalized"))
-  {
-    if (!accessor["normalized"].is_boolean())
-    {
-      Fail(where + ": normalized is not true or false");
-    }
-    layout.Normalized = accessor["normalized"].get<bool>();
-  }
-  CheckUse(layout, use, index, referrer);
-  // Without a bufferView an accessor is zeros, there for sparse accessors
-  // to fill in; as those are not read, neither is that.
-  if (!accessor.contains("bufferView"))
-  {
-    Fail(where + " has no bufferView (all zeros), which shadelab does not read");
-  }
-  layout.Data = ViewData(document, accessor, layout, where);
-  return layout;
-}
-
 // The accessor's values as T, in the host's order: one copy and one swap
 // (a no-op on little-endian hosts) of the whole range where the elements
-// are packed, element by element where a byteStride spreads them.
+// are packed, element by element where a byteStride spreads them; a sparse
+// accessor's elements copied over those before the swap.
 template <typename T>
 std::vector<T> Load(const Layout& layout)
 {
   const std::size_t elementBytes = layout.Components * sizeof(T);
-  std::vector<T> values(layout.Count * layout.Components);
-  if (layout.Stride == elementBytes)
+  std::vector<T> values(layout.Count * layout.Components); // zeros without a bufferView
+  if (layout.Data && layout.Stride == elementBytes)
   {
     std::memcpy(values.data(), layout.Data, values.size() * sizeof(T));
   }
-  else
+  else if (layout.Data)
   {
     for (std::uint64_t i = 0; i < layout.Count; ++i)
     {
       std::memcpy(&values[i * layout.Components], layout.Data + i * layout.Stride, elementBytes);
     }
+  }
+  const Substitutions& sparse = layout.Sparse;
+  for (std::size_t j = 0; j < sparse.Indices.size(); ++j)
+  {
+    std::memcpy(&values[sparse.Indices[j] * layout.Components], sparse.Values + j * sparse.Stride,
+      elementBytes);
   }
   vtkByteSwap::SwapLERange(values.data(), values.size());
   return values;
@@ -229,6 +209,106 @@ void Decode(const Layout& layout, Store&& store)
   }
   throw MeshReadError("an accessor's component type is not glTF's");
 }
+// accessor.sparse of `where` (whose layout is `base`): its indices read and
+// checked (increasing, each below the count, as glTF requires), its values'
+// range checked.
+Substitutions ReadSparse(
+  const Document& document, const Json& sparse, const Layout& base, const std::string& where)
+{
+  const std::string name = where + " sparse";
+  if (!sparse.is_object() || !sparse.contains("indices") || !sparse["indices"].is_object() ||
+    !sparse.contains("values") || !sparse["values"].is_object())
+  {
+    Fail(name + ": not an object with indices and values");
+  }
+  Layout indices;
+  indices.Count = Unsigned(sparse, "count", name);
+  if (indices.Count == 0 || indices.Count > base.Count)
+  {
+    Fail(name + ": count " + std::to_string(indices.Count) + " is not from 1 to the accessor's " +
+      std::to_string(base.Count));
+  }
+  indices.Components = 1;
+  indices.Component = &ReadComponentType(sparse["indices"], name + " indices");
+  const ScalarType type = indices.Component->Type;
+  if (type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32)
+  {
+    Fail(name + " indices: " + indices.Component->Name +
+      ", not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  }
+  indices.Data = ViewData(document, sparse["indices"], indices, name + " indices");
+  Substitutions result;
+  result.Indices.resize(indices.Count);
+  Decode(indices, [&](std::size_t k, auto value) { result.Indices[k] = value; });
+  for (std::size_t j = 0; j < result.Indices.size(); ++j)
+  {
+    if (result.Indices[j] >= base.Count || (j > 0 && result.Indices[j] <= result.Indices[j - 1]))
+    {
+      Fail(name + " index " + std::to_string(j) + " is " + std::to_string(result.Indices[j]) +
+        (result.Indices[j] >= base.Count ? ", not below the count " + std::to_string(base.Count)
+                                         : ", not above the one before it"));
+    }
+  }
+  Layout values = base;
+  values.Count = indices.Count;
+  result.Values = ViewData(document, sparse["values"], values, name + " values");
+  result.Stride = values.Stride;
+  return result;
+}
+
+// The accessor's layout for `use` (of `referrer`): its types checked
+// against the use before any range is looked at, then its ranges.
+Layout ReadLayout(const Document& document, std::uint64_t index, const AccessorUse& use,
+  const std::string& referrer)
+{
+  const std::string where = "accessor " + std::to_string(index);
+  const Json& accessor = Item(document.Root, "accessors", index, referrer);
+  Layout layout;
+  layout.Count = Unsigned(accessor, "count", where);
+  if (layout.Count == 0)
+  {
+    Fail(where + ": count is 0");
+  }
+  layout.Component = &ReadComponentType(accessor, where);
+  layout.Components = ReadElementType(accessor, where);
+  if (accessor.contains("normalized"))
+  {
+    if (!accessor["normalized"].is_boolean())
+    {
+      Fail(where + ": normalized is not true or false");
+    }
+    layout.Normalized = accessor["normalized"].get<bool>();
+  }
+  CheckUse(layout, use, index, referrer);
+  // Without a bufferView an accessor is zeros (for sparse values to fill
+  // in): no more of them than the buffers hold bytes, as for any other
+  // accessor (a morph target's zeros are as many as its mesh's positions).
+  if (accessor.contains("bufferView"))
+  {
+    layout.Data = ViewData(document, accessor, layout, where);
+  }
+  else
+  {
+    std::uint64_t bufferBytes = 0;
+    for (const std::string_view buffer : document.Buffers)
+    {
+      bufferBytes += buffer.size();
+    }
+    layout.Stride = layout.Components * SizeOf(layout.Component->Type);
+    if (layout.Count > bufferBytes / layout.Stride)
+    {
+      Fail(where + " has no bufferView and " + std::to_string(layout.Count) +
+        " elements of zeros, more bytes than the file's buffers hold (" +
+        std::to_string(bufferBytes) + ")");
+    }
+  }
+  if (accessor.contains("sparse"))
+  {
+    layout.Sparse = ReadSparse(document, accessor["sparse"], layout, where);
+  }
+  return layout;
+}
+
 }
 
 std::uint64_t CountOf(

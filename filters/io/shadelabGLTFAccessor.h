@@ -4,9 +4,9 @@
  * An accessor says where typed elements lie in a buffer view, which lies in
  * a buffer. Before anything is allocated for them, its count, component
  * type, element type, offsets and stride are checked against the view and
- * the view against its buffer. Sparse accessors, and the all-zero ones
- * without a bufferView that only they make useful, are refused as not
- * supported. What a
+ * the view against its buffer. An accessor without a bufferView is zeros;
+ * a sparse one's elements replace the base's (or the zeros) at its indices,
+ * which must increase and stay below the count, as glTF requires. What a
  * use allows (a mesh attribute's element and component types, an index's
  * unsigned integers) is checked too, and a normalized integer becomes a
  * float in 0..1.

@@ -174,6 +174,25 @@ Gltf SquareDocument(const Json& node = Json::object())
   return gltf;
 }
 
+// accessors[a].sparse: `count` elements, `indices` (UNSIGNED_BYTE) and
+// `values` (floats) in views of their own.
+void MakeSparse(Gltf& gltf, int a, std::size_t count, const std::vector<std::uint8_t>& indices,
+  const std::vector<float>& values)
+{
+  std::string i, v;
+  for (const std::uint8_t index : indices)
+  {
+    Put(i, index);
+  }
+  for (const float value : values)
+  {
+    Put(v, value);
+  }
+  gltf.Doc["accessors"][a]["sparse"] = { { "count", count },
+    { "indices", { { "bufferView", gltf.View(i) }, { "componentType", UnsignedByte } } },
+    { "values", { { "bufferView", gltf.View(v) } } } };
+}
+
 std::array<double, 3> Point(vtkPolyData* mesh, vtkIdType i)
 {
   std::array<double, 3> p;
@@ -340,6 +359,36 @@ TEST_F(MeshReaders, GltfBufferAsFileDataUriOrGlbChunkGivesTheSameMesh)
     EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 2);
     ExpectNear(Point(result.Mesh, 2), { 1, 1, 0 });
     EXPECT_EQ(result.Mesh->GetPointData()->GetNumberOfArrays(), 0);
+  }
+}
+
+// Sparse accessors (core glTF 2.0; morph targets use them): their elements
+// replace the base's, or the zeros of an accessor without a bufferView.
+TEST_F(MeshReaders, GltfSparseAccessorsReplaceTheirBasesElements)
+{
+  Gltf patched = SquareDocument();
+  std::string wrong; // the square with corner 2 at 5 5 5, put right by the sparse element
+  for (const float value : { 0, 0, 0, 1, 0, 0, 5, 5, 5, 0, 1, 0 })
+  {
+    Put(wrong, value);
+  }
+  patched.Doc["accessors"][0]["bufferView"] = patched.View(wrong);
+  MakeSparse(patched, 0, 1, { 2 }, { 1, 1, 0 });
+  Gltf zeros = SquareDocument();
+  zeros.Doc["accessors"][0].erase("bufferView");
+  MakeSparse(zeros, 0, 3, { 1, 2, 3 }, { 1, 0, 0, 1, 1, 0, 0, 1, 0 });
+  const std::vector<std::pair<std::string, const Gltf*>> cases{ { "patched", &patched },
+    { "zeros", &zeros } };
+  for (const auto& [name, gltf] : cases)
+  {
+    SCOPED_TRACE(name);
+    const ReadResult result = Read(this->Write(name + ".glb", gltf->Glb()));
+    ASSERT_TRUE(result.Ok) << result.Error;
+    ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 4);
+    for (vtkIdType i = 0; i < 4; ++i)
+    {
+      ExpectNear(Point(result.Mesh, i), { Square[3 * i], Square[3 * i + 1], Square[3 * i + 2] });
+    }
   }
 }
 
@@ -708,13 +757,39 @@ TEST_F(MeshReaders, BadGltfAccessors)
     { "accessor 0 refers to bufferViews[7], but the file has 2" });
   expect("noaccessor", [](Gltf& g) { g.Doc["meshes"][0]["primitives"][0]["indices"] = 9; },
     { "mesh 0 primitive 0 refers to accessors[9], but the file has 2" });
-  expect("zeros", [](Gltf& g) { g.Doc["accessors"][0].erase("bufferView"); },
-    { "accessor 0 has no bufferView" });
+  expect("zeros",
+    [](Gltf& g)
+    {
+      g.Doc["accessors"][0].erase("bufferView");
+      g.Doc["accessors"][0]["count"] = 1000000000000ULL;
+    },
+    { "accessor 0 has no bufferView and 1000000000000 elements of zeros, more bytes than the "
+      "file's buffers hold (" });
   expect("sparse",
     [](Gltf& g) {
       g.Doc["accessors"][0]["sparse"] = { { "count", 1 } };
     },
-    { "accessor 0 is sparse" });
+    { "accessor 0 sparse: not an object with indices and values" });
+  expect("sparsecount",
+    [](Gltf& g) {
+      MakeSparse(g, 0, 5, { 0, 1, 2, 3, 3 }, {});
+    },
+    { "accessor 0 sparse: count 5 is not from 1 to the accessor's 4" });
+  expect("sparseorder",
+    [](Gltf& g) {
+      MakeSparse(g, 0, 2, { 2, 1 }, { 0, 0, 0, 0, 0, 0 });
+    },
+    { "accessor 0 sparse index 1 is 1, not above the one before it" });
+  expect("sparserange",
+    [](Gltf& g) {
+      MakeSparse(g, 0, 1, { 4 }, { 0, 0, 0 });
+    },
+    { "accessor 0 sparse index 0 is 4, not below the count 4" });
+  expect("sparsevalues",
+    [](Gltf& g) {
+      MakeSparse(g, 0, 2, { 0, 1 }, { 0, 0, 0 });
+    },
+    { "accessor 0 sparse values needs 2 elements of 12 bytes from byte 0" });
   expect("stride", [](Gltf& g) { g.Doc["bufferViews"][0]["byteStride"] = 6; },
     { "bufferView 0: byteStride 6 is less than the 12 bytes of accessor 0's elements" });
   // 4 was "not a multiple of 4 from 12 to 252".

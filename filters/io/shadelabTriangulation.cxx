@@ -2,24 +2,51 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkContourTriangulator.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolygon.h>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace shadelab
 {
 namespace
 {
-// Ear cutting keeps the polygon's orientation and handles concave polygons;
-// where it gives up (zero area, repeated or collinear vertices) a fan keeps
-// the face's vertices connected, with degenerate triangles as the face was.
-void AddPolygon(vtkIdType size, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
-  vtkIdList* local, vtkCellArray* triangles)
+// True when the polygon visits a vertex twice: a hole joined to the outline
+// by a bridge edge that the polygon runs along both ways (LightWave's
+// exports), which vtkPolygon's ear cutting does not take.
+bool RepeatsAVertex(vtkIdType size, const vtkIdType* ids, std::vector<vtkIdType>& sorted)
 {
+  sorted.assign(ids, ids + size);
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
+// Ear cutting keeps the polygon's orientation and handles concave polygons;
+// one with a bridge to a hole goes to vtkContourTriangulator's ear cutting,
+// which is made for such polygons (it joins holes that way itself). Where
+// both give up (zero area, collinear vertices) a fan keeps the face's
+// vertices connected, with degenerate triangles as the face was.
+void AddPolygon(vtkIdType size, const vtkIdType* ids, vtkPoints* points, vtkPolygon* polygon,
+  vtkIdList* local, std::vector<vtkIdType>& sorted, vtkCellArray* triangles)
+{
+  if (RepeatsAVertex(size, ids, sorted))
+  {
+    local->SetNumberOfIds(size);
+    std::copy(ids, ids + size, local->GetPointer(0));
+    vtkNew<vtkCellArray> bridged; // kept only when the whole polygon was cut
+    if (vtkContourTriangulator::TriangulatePolygon(local, points, bridged) &&
+      bridged->GetNumberOfCells() > 0)
+    {
+      triangles->Append(bridged);
+      return;
+    }
+  }
   polygon->GetPointIds()->SetNumberOfIds(size);
   polygon->GetPoints()->SetNumberOfPoints(size);
   for (vtkIdType k = 0; k < size; ++k)
@@ -86,6 +113,7 @@ vtkSmartPointer<vtkCellArray> Triangulate(
   }
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> local;
+  std::vector<vtkIdType> sorted;
   vtkIdType size;
   const vtkIdType* ids;
   const auto addSources = [&](vtkIdType cell)
@@ -102,7 +130,7 @@ vtkSmartPointer<vtkCellArray> Triangulate(
       }
       else
       {
-        AddPolygon(size, ids, points, polygon, local, triangles);
+        AddPolygon(size, ids, points, polygon, local, sorted, triangles);
       }
       addSources(cell->GetCurrentCellId());
     }

@@ -492,6 +492,37 @@ TEST_F(MeshReaders, ObjConcavePolygonIsTriangulatedInsideItsOutline)
   EXPECT_DOUBLE_EQ(area, 3.0);
 }
 
+// A square with a square hole, joined to it by a bridge edge that the
+// polygon runs along both ways (vertices 1 and 5 twice; LightWave writes
+// such faces): a ring of area 16 - 4, every triangle facing +z and none
+// over the hole. A fan from vertex 1 would cover the hole.
+TEST_F(MeshReaders, ObjPolygonWithAHoleJoinedByABridgeKeepsItsHole)
+{
+  const ReadResult result = Read(this->Write("keyhole.obj",
+    "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 0 4 0\nv 1 1 0\nv 1 3 0\nv 3 3 0\nv 3 1 0\n"
+    "f 1 2 3 4 1 5 6 7 8 5\n"));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  double area = 0;
+  for (const auto& triangle : Triangles(result.Mesh))
+  {
+    const auto n = AreaNormal(result.Mesh, triangle);
+    EXPECT_GE(n[2], 0.0);
+    area += n[2] / 2;
+    double centroid[3] = { 0, 0, 0 };
+    for (const vtkIdType p : triangle)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centroid[k] += result.Mesh->GetPoint(p)[k] / 3;
+      }
+    }
+    EXPECT_FALSE(
+      n[2] > 0 && centroid[0] > 1 && centroid[0] < 3 && centroid[1] > 1 && centroid[1] < 3)
+      << "a triangle over the hole, centred at " << centroid[0] << " " << centroid[1];
+  }
+  EXPECT_DOUBLE_EQ(area, 12.0);
+}
+
 TEST_F(MeshReaders, ObjVertexUsedWithTwoNormalsIsSplit)
 {
   const ReadResult result = Read(this->Write("split.obj",

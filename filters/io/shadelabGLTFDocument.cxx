@@ -144,6 +144,10 @@ void CheckAsset(const Json& root)
   }
   for (const Json& extension : List(root, "extensionsRequired"))
   {
+    if (extension == "KHR_texture_transform") // read on base colour textures
+    {
+      continue;
+    }
     // dump(): the name in quotes, escaped onto one line.
     Fail("requires the extension " + JsonExcerpt(extension) + ", which shadelab does not read");
   }

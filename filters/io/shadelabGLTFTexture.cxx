@@ -1,5 +1,6 @@
 #include "shadelabGLTFTexture.h"
 
+#include <cmath>
 #include <initializer_list>
 
 namespace shadelab::gltf
@@ -38,10 +39,44 @@ void ReadSampler(const Json& root, const Json& texture, const std::string& where
   out.MinFilter = Enum(
     sampler, "minFilter", name, { gl::Nearest, gl::Linear, 9984, 9985, 9986, 9987 }, gl::Linear);
 }
+
+// textureInfo's KHR_texture_transform (of `where`): its map, and the
+// texCoord it overrides the textureInfo's with.
+UvTransform ReadTransform(const Json& info, const std::string& where, std::uint64_t& set)
+{
+  UvTransform map;
+  if (!info.contains("extensions") || !info["extensions"].is_object() ||
+    !info["extensions"].contains("KHR_texture_transform"))
+  {
+    return map;
+  }
+  const Json& extension = info["extensions"]["KHR_texture_transform"];
+  const std::string at = where + " KHR_texture_transform";
+  if (!extension.is_object())
+  {
+    Fail(at + " is not an object");
+  }
+  const std::vector<double> offset = Numbers(extension, "offset", at, 2, { 0, 0 });
+  const std::vector<double> scale = Numbers(extension, "scale", at, 2, { 1, 1 });
+  const double rotation = Number(extension, "rotation", at, 0);
+  set = Unsigned(extension, "texCoord", at, static_cast<long long>(set));
+  // Translation * rotation * scale, as the extension defines them, its
+  // rotation (counter-clockwise, with v running down the image) the rows
+  // (cos, sin) and (-sin, cos): Khronos' TextureTransformTest points its
+  // arrows at "Correct" so, and at "Error" with the rotation reversed.
+  const double c = std::cos(rotation), s = std::sin(rotation);
+  map.U[0] = c * scale[0];
+  map.U[1] = s * scale[1];
+  map.U[2] = offset[0];
+  map.V[0] = -s * scale[0];
+  map.V[1] = c * scale[1];
+  map.V[2] = offset[1];
+  return map;
+}
 }
 
 int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
-  std::vector<Texture>& textures, std::string& warning)
+  std::vector<Texture>& textures, std::string& warning, UvTransform& transform)
 {
   if (!material.contains("pbrMetallicRoughness") ||
     !material["pbrMetallicRoughness"].contains("baseColorTexture"))
@@ -57,7 +92,8 @@ int BaseColorTexture(const Document& document, const Json& material, const std::
   const std::uint64_t index = Unsigned(info, "index", at);
   const Json& texture = Item(document.Root, "textures", index, at);
   const std::string name = "texture " + std::to_string(index);
-  const std::uint64_t set = Unsigned(info, "texCoord", at, 0);
+  std::uint64_t set = Unsigned(info, "texCoord", at, 0);
+  transform = ReadTransform(info, at, set);
   if (set != 0)
   {
     warning = at + " uses TEXCOORD_" + std::to_string(set) +

@@ -276,7 +276,15 @@ private:
           this->Mesh.TextureCoordinates.end(), { uv.Values[2 * v], 1.0f - uv.Values[2 * v + 1] });
       }
     }
-    this->AddMaterial(primitive, where);
+    const UvTransform uvMap = this->AddMaterial(primitive, where);
+    // The texture coordinates were stored with t = 1 - v: mapped in glTF's (u, v).
+    for (std::size_t k = 2 * first; k < this->Mesh.TextureCoordinates.size(); k += 2)
+    {
+      float* st = &this->Mesh.TextureCoordinates[k];
+      const double u = st[0], v = 1.0 - st[1];
+      st[0] = static_cast<float>(uvMap.U[0] * u + uvMap.U[1] * v + uvMap.U[2]);
+      st[1] = static_cast<float>(1.0 - (uvMap.V[0] * u + uvMap.V[1] * v + uvMap.V[2]));
+    }
   }
 
   // The primitive's indices (all of its vertices in order without an
@@ -354,12 +362,15 @@ private:
     }
   }
 
-  void AddMaterial(const Json& primitive, const std::string& where)
+  // The primitive's part and its material; the map of its texture
+  // coordinates (KHR_texture_transform).
+  UvTransform AddMaterial(const Json& primitive, const std::string& where)
   {
+    UvTransform transform;
     if (!primitive.contains("material"))
     {
       this->Materials.emplace_back();
-      return;
+      return transform;
     }
     const std::uint64_t index = Unsigned(primitive, "material", where);
     const Json& material = Item(this->Doc.Root, "materials", index, where);
@@ -367,7 +378,8 @@ private:
     const shadelab::Material m = LectureMaterial(material, name);
     std::string warning;
     // glTF's ka is its kd (shadelabGLTFMaterial.h), so is their texture.
-    const int texture = BaseColorTexture(this->Doc, material, name, this->Textures, warning);
+    const int texture =
+      BaseColorTexture(this->Doc, material, name, this->Textures, warning, transform);
     if (!warning.empty() &&
       std::find(this->Warnings.begin(), this->Warnings.end(), warning) == this->Warnings.end())
     {
@@ -378,6 +390,7 @@ private:
     const bool ksTextured = texture >= 0 && ksScale != shadelab::Rgb{};
     this->Materials.push_back({ m.Name, static_cast<int>(index), m, texture, texture,
       ksTextured ? texture : -1, ksTextured ? ksScale : shadelab::Rgb{} });
+    return transform;
   }
 
   const Document& Doc;

@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <cmath>
 #include <functional>
 #include <iterator>
 #include <string>
@@ -457,6 +458,50 @@ TEST_F(GltfTextures, TexturesNotDrawnAreWarnings)
   ASSERT_TRUE(sourceless.Ok) << sourceless.Error;
   ASSERT_EQ(sourceless.Warnings.size(), 1u);
   EXPECT_NE(sourceless.Warnings[0].find("texture 0 has no source"), std::string::npos);
+}
+
+// KHR_texture_transform on the base colour texture, in extensionsRequired
+// too: the primitive's coordinates mapped as the extension says (scale,
+// then the rotation, then the offset, in glTF's u and v, v down the image),
+// and its texCoord overriding the textureInfo's.
+TEST_F(GltfTextures, TextureTransformMapsTheCoordinates)
+{
+  const auto transform = [](const Json& extension)
+  {
+    return [extension](Json& doc)
+    {
+      doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+        { "KHR_texture_transform", extension }
+      };
+      doc["extensionsUsed"] = { "KHR_texture_transform" };
+      doc["extensionsRequired"] = { "KHR_texture_transform" };
+    };
+  };
+  const ReadResult plain = this->ReadEdited([](Json&) {});
+  const ReadResult moved = this->ReadEdited(transform(
+    { { "offset", { 0.5, 0.25 } }, { "rotation", std::acos(-1.0) / 2 }, { "scale", { 2, 4 } } }));
+  ASSERT_TRUE(plain.Ok) << plain.Error;
+  ASSERT_TRUE(moved.Ok) << moved.Error;
+  EXPECT_TRUE(moved.Warnings.empty());
+  vtkDataArray* before = plain.Mesh->GetPointData()->GetTCoords();
+  vtkDataArray* after = moved.Mesh->GetPointData()->GetTCoords();
+  ASSERT_NE(after, nullptr);
+  ASSERT_EQ(after->GetNumberOfTuples(), before->GetNumberOfTuples());
+  for (vtkIdType p = 0; p < before->GetNumberOfTuples(); ++p)
+  {
+    // t is 1 - v; a quarter turn counter-clockwise takes (u, v) to (v, -u).
+    const double u = before->GetComponent(p, 0), v = 1 - before->GetComponent(p, 1);
+    EXPECT_NEAR(after->GetComponent(p, 0), 4 * v + 0.5, 1e-6) << "point " << p;
+    EXPECT_NEAR(after->GetComponent(p, 1), 1 - (-2 * u + 0.25), 1e-6) << "point " << p;
+  }
+
+  const ReadResult second = this->ReadEdited(transform({ { "texCoord", 1 } }));
+  ASSERT_TRUE(second.Ok) << second.Error;
+  ASSERT_EQ(second.Warnings.size(), 1u);
+  EXPECT_NE(
+    second.Warnings[0].find("material 0 baseColorTexture uses TEXCOORD_1"), std::string::npos);
+  this->ExpectEditError(transform({ { "scale", { 1, "x" } } }),
+    { "material 0 baseColorTexture KHR_texture_transform" });
 }
 
 TEST_F(GltfTextures, BadTextureReferences)

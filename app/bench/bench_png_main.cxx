@@ -73,9 +73,9 @@ std::vector<unsigned char> Encode(const OIIO::ImageSpec& spec,
   return encoded;
 }
 
-// The picture decoded (a file, or an encoding's bytes) as a texture is: linear
-// RGB floats. sRGB's decoding maps each 8-bit value to a float of its own, so
-// two 8-bit RGB pictures decode alike only if their pixels are equal.
+// The picture decoded (a file, or an encoding's bytes) as a texture is: RGB
+// floats, each 8-bit value to a float of its own (k / 255), so two 8-bit
+// RGB pictures decode alike only if their pixels are equal.
 TextureImage Decoded(DecodeRequest request, const char* what)
 {
   TextureImage image;

@@ -7,7 +7,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -32,40 +31,6 @@ std::string EmbeddedName(const std::vector<std::uint8_t>& bytes)
     return "embedded.jpg";
   }
   return "";
-}
-
-// The transfer function that turns the file's values into linear ones.
-enum class ColourTransfer
-{
-  Linear,
-  Srgb,
-  Gamma
-};
-
-ColourTransfer TransferOf(const OIIO::ImageSpec& spec, double& gamma)
-{
-  const std::string space = spec.get_string_attribute("oiio:ColorSpace");
-  if (space == "sRGB")
-  {
-    return ColourTransfer::Srgb;
-  }
-  if (space == "Linear" || space == "linear" || space == "scene_linear" || space == "lin_srgb")
-  {
-    return ColourTransfer::Linear;
-  }
-  if (space.rfind("GammaCorrected", 0) == 0)
-  {
-    gamma = spec.get_float_attribute("oiio:Gamma", 2.2f);
-    return ColourTransfer::Gamma;
-  }
-  return spec.format.basetype == OIIO::TypeDesc::UINT8 ? ColourTransfer::Srgb
-                                                       : ColourTransfer::Linear;
-}
-
-// sRGB's transfer function undone: the IEC 61966-2-1 decoding.
-double SrgbToLinear(double v)
-{
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 }
 
@@ -113,8 +78,6 @@ std::string DecodeTexture(const DecodeRequest& request, TextureImage& image)
   {
     return "cannot decode: " + OneLine(in->geterror());
   }
-  double gamma = 1;
-  const ColourTransfer transfer = TransferOf(spec, gamma);
   image.Width = spec.width;
   image.Height = spec.height;
   image.Pixels.resize(static_cast<size_t>(spec.width) * spec.height * 3);
@@ -129,10 +92,7 @@ std::string DecodeTexture(const DecodeRequest& request, TextureImage& image)
     {
       for (int c = 0; c < 3; ++c)
       {
-        const double v = src[x * channels + (colour == 3 ? c : 0)];
-        dst[3 * x + c] = static_cast<float>(transfer == ColourTransfer::Srgb ? SrgbToLinear(v)
-            : transfer == ColourTransfer::Gamma && v > 0                     ? std::pow(v, gamma)
-                                                                             : v);
+        dst[3 * x + c] = src[x * channels + (colour == 3 ? c : 0)];
       }
     }
   }

@@ -50,7 +50,8 @@ std::vector<Setting> MakeSettings()
     ReadByParent(Plain({ "--ns", "material.ns", "X", "Specular exponent" }, Number::NonNegative(),
       SHADELAB_FIELD(Ns))),
     Plain({ "--texture", "texture", "IMAGE",
-            "An image (any format OpenImageIO reads; 8-bit sRGB decoded to linear) whose texel "
+            "An image (any format OpenImageIO reads; its stored values, as display colours) whose "
+            "texel "
             "at the mesh's texture coordinates is kd and ka, looked up per fragment under every "
             "rule (times --kd and --ka when given)" },
       File{}, SHADELAB_FIELD(Texture)),

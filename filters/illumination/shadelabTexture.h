@@ -1,5 +1,5 @@
 // Texture maps for the lecture's kd, ka and ks (doc/design.md, "Command line"): an
-// image of linear RGB, how it wraps and filters, and its lookup as OpenGL
+// image of RGB (display values, as stored), how it wraps and filters, and its lookup as OpenGL
 // defines it (texel centres at (i + 0.5)/size, GL_REPEAT, GL_CLAMP_TO_EDGE
 // and GL_MIRRORED_REPEAT, GL_NEAREST and GL_LINEAR without mipmaps), in
 // double: what the oracle multiplies kd and ka by (and ks, SurfaceTexture),
@@ -52,7 +52,7 @@ struct NameTable<TextureFilter>
 };
 
 /**
- * Decoded pixels: linear RGB floats, row 0 at texture coordinate t = 0
+ * Decoded pixels: RGB floats as the file stores them (display values), row 0 at t = 0
  * (the image's bottom row: OBJ's and OpenGL's origin is bottom-left).
  */
 struct TextureImage

@@ -134,7 +134,7 @@ inline std::array<double, 2> TexCoordAt(double x, double y)
   return { static_cast<float>(0.75 * (x + 1) - 0.25), static_cast<float>(0.625 * (y + 1) - 0.125) };
 }
 
-// The test's texture: 4 x 4 texels of 8-bit sRGB, top row first as files
+// The test's texture: 4 x 4 texels of 8-bit RGB, top row first as files
 // store them; no two alike and no symmetry, so a flipped, transposed or
 // shifted lookup shows.
 constexpr int TextureSide = 4;
@@ -153,8 +153,9 @@ inline std::vector<unsigned char> TextureBytes()
   return rgb;
 }
 
-// What the program should make of it: linear values by the sRGB standard
-// (IEC 61966-2-1), the file's bottom row first (t = 0 at the bottom).
+// What the program should make of it: the stored values over 255 (colours
+// are display values, taken as stored), the file's bottom row first (t = 0
+// at the bottom).
 inline shadelab::TextureImage ExpectedTexture()
 {
   const std::vector<unsigned char> bytes = TextureBytes();
@@ -164,9 +165,7 @@ inline shadelab::TextureImage ExpectedTexture()
   {
     for (int i = 0; i < 3 * TextureSide; ++i)
     {
-      const double v = bytes[3 * TextureSide * row + i] / 255.0;
-      image.Pixels.push_back(
-        static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4)));
+      image.Pixels.push_back(static_cast<float>(bytes[3 * TextureSide * row + i] / 255.0));
     }
   }
   return image;

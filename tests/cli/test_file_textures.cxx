@@ -169,7 +169,7 @@ namespace
 {
 // The square [-1, 1]^2 of test_parts in two parts: part 0 ("tex", below the
 // diagonal) with map_Kd and map_Ka, part 1 ("plain") without. The texture is
-// one colour, 8-bit sRGB (0.5 linear is 188), so every lookup gives it.
+// one colour, 8-bit 188, so every lookup gives it (188/255, as stored).
 constexpr const char* TwoPartObj = "mtllib two.mtl\n"
                                    "v -1 -1 0\nv 1 -1 0\nv -1 1 0\nv 1 1 0\n"
                                    "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
@@ -223,11 +223,10 @@ Rgb At(const Image& image, const std::array<int, 2>& xy)
   return { image.Pixels[i], image.Pixels[i + 1], image.Pixels[i + 2] };
 }
 
-// 188 of 255 in sRGB, decoded as the texture decoding does (IEC 61966-2-1).
-double TexLinear()
+// 188 of 255, as the texture decoding takes it: the stored value.
+double TexValue()
 {
-  const double v = 188 / 255.0;
-  return std::pow((v + 0.055) / 1.055, 2.4);
+  return 188 / 255.0;
 }
 
 // Each value of `got` within float's rounding of `want` (the picture is float).
@@ -242,11 +241,48 @@ void ExpectRgb(const Rgb& got, const Rgb& want, const std::string& what)
 
 // Part 0 is Kd x texel, part 1 its own Kd: under `none` exactly, under the
 // lit rules as the oracle lights each part (probe, the standard bound).
+// The colour pipeline (doc/design.md, "Colour"): texels are display values
+// taken as stored, and pictures are written as computed, so a texture shown
+// as kd itself (--shading none, --texture alone) comes out as its file
+// stores it: the same bytes in an 8-bit picture, each byte / 255 in a float
+// one (its float rounding apart).
+TEST(FileTextures, ATextureShownAsItIsComesOutAsItsFileStoresIt)
+{
+  TempDir dir;
+  WriteText(dir / "square.off",
+    "STNOFF\n4 2 0\n0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n"
+    "0 1 0 0 0 1 0 1\n3 0 1 2\n3 0 2 3\n");
+  const std::vector<unsigned char> texel{ 3, 128, 250 };
+  WriteImage8(dir / "texel.png", 1, 1, texel);
+  for (const std::string out : { "out.png", "out.exr" })
+  {
+    SCOPED_TRACE(out);
+    const RunResult r =
+      RunShadelab({ "render", (dir / "square.off").string(), "-o", (dir / out).string(), "--size",
+        "32x32", "--shading", "none", "--texture", (dir / "texel.png").string() });
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    const Image image = ReadImage(dir / out);
+    ASSERT_EQ(image.Width, 32);
+    const std::size_t centre = (16 * 32 + 16) * static_cast<std::size_t>(image.Channels);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (out == "out.png")
+      {
+        EXPECT_EQ(image.Pixels[centre + c], texel[c]) << "channel " << c;
+      }
+      else
+      {
+        EXPECT_NEAR(image.Pixels[centre + c], texel[c] / 255.0, 1e-7) << "channel " << c;
+      }
+    }
+  }
+}
+
 TEST(FileTextures, TexturedAndUntexturedPartsOfOneMesh)
 {
   const TwoParts files;
   const Image none = files.Render({});
-  const double t = TexLinear();
+  const double t = TexValue();
   ExpectRgb(At(none, InPart0), { 0.5 * t, 0.25 * t, 1 * t }, "part 0");
   ExpectRgb(At(none, InPart1), { 0.75, 0.125, 0.0625 }, "part 1");
   for (const char* rule : { "flat", "gouraud", "phong" })
@@ -292,7 +328,7 @@ TEST(FileTextures, MetadataListsEachPartsTexture)
 TEST(FileTextures, OverridesDropOrReplaceTheFilesTextures)
 {
   const TwoParts files;
-  const double t = TexLinear();
+  const double t = TexValue();
 
   const Image kd = files.Render({ "--kd", "0.25,0.5,0.75" });
   EXPECT_EQ(PartsOf(kd).at(0).at("texture").at("maps"), json({ "ka" }));

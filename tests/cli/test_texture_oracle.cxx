@@ -1,6 +1,6 @@
 // Textures through the lecture's equation, pixel by pixel: orthographic
 // renders by `shadelab render --texture` of a planar grid with texture
-// coordinates (an OFF) and a 4 x 4 8-bit sRGB image (a PNG) against the
+// coordinates (an OFF) and a 4 x 4 8-bit image (a PNG) against the
 // double-precision oracle, which looks the texel up as OpenGL defines it
 // (filters/illumination/shadelabTexture.h). Every rule, both filters, every
 // wrap mode, and the same image as a mesh file's own texture on some of its

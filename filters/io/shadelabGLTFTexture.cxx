@@ -75,6 +75,16 @@ UvTransform ReadTransform(const Json& info, const std::string& where, std::uint6
 }
 }
 
+void MapTextureCoordinates(const UvTransform& map, float* st, std::size_t count)
+{
+  for (float* p = st; p < st + 2 * count; p += 2)
+  {
+    const double u = p[0], v = 1.0 - p[1];
+    p[0] = static_cast<float>(map.U[0] * u + map.U[1] * v + map.U[2]);
+    p[1] = static_cast<float>(1.0 - (map.V[0] * u + map.V[1] * v + map.V[2]));
+  }
+}
+
 int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
   std::vector<Texture>& textures, std::string& warning, UvTransform& transform)
 {

@@ -37,6 +37,12 @@ struct UvTransform
 };
 
 /**
+ * Maps `count` texture coordinates (s, t) by `map`; they are stored with
+ * t = 1 - v, and mapped in glTF's (u, v).
+ */
+void MapTextureCoordinates(const UvTransform& map, float* st, std::size_t count);
+
+/**
  * The index in `textures` of materials[k]'s (`material`'s, named `where`)
  * baseColorTexture, added unless it is there already, and in `transform`
  * the map of its coordinates (the identity without KHR_texture_transform);

@@ -277,13 +277,9 @@ private:
       }
     }
     const UvTransform uvMap = this->AddMaterial(primitive, where);
-    // The texture coordinates were stored with t = 1 - v: mapped in glTF's (u, v).
-    for (std::size_t k = 2 * first; k < this->Mesh.TextureCoordinates.size(); k += 2)
+    if (attributes.contains("TEXCOORD_0"))
     {
-      float* st = &this->Mesh.TextureCoordinates[k];
-      const double u = st[0], v = 1.0 - st[1];
-      st[0] = static_cast<float>(uvMap.U[0] * u + uvMap.U[1] * v + uvMap.U[2]);
-      st[1] = static_cast<float>(1.0 - (uvMap.V[0] * u + uvMap.V[1] * v + uvMap.V[2]));
+      MapTextureCoordinates(uvMap, &this->Mesh.TextureCoordinates[2 * first], count);
     }
   }
 

@@ -168,13 +168,13 @@ bool Catches(int pid, int signal)
   return false;
 }
 
-// A small render of spot into dir/output started, with the options more,
+// A render of spot at size into dir/output started, with the options more,
 // and its image writer found: {shadelab, writer}, -1 for one that did not start.
-std::pair<int, int> StartRenderWithWriter(
-  const TempDir& dir, const std::string& output, const std::vector<std::string>& more = {})
+std::pair<int, int> StartRenderWithWriter(const TempDir& dir, const std::string& output,
+  const std::string& size, const std::vector<std::string>& more = {})
 {
   std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
-    (dir / output).string(), "--size", "64x64" };
+    (dir / output).string(), "--size", size };
   args.insert(args.end(), more.begin(), more.end());
   const int pid = StartShadelab(args, dir / "stdout", dir / "stderr");
   return { pid, pid > 0 ? StartedWriter(pid) : -1 };
@@ -216,7 +216,10 @@ bool EndsWithin(int pid, std::chrono::milliseconds bound)
 TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
 {
   TempDir dir;
-  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.png");
+  // A picture large enough that the writer cannot encode and commit it in
+  // the moment between reaching its main() and being stopped: its image may
+  // already wait in the pipe then, when the machine is busy.
+  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.png", "2048x2048");
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
   ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";
@@ -247,7 +250,7 @@ TEST(Interrupt, SigkillLeavesNoProcessBehind)
 {
   TempDir dir;
   // An animation of many frames: shadelab still runs when it is killed.
-  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.gif", { "--orbit", "3600" });
+  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.gif", "64x64", { "--orbit", "3600" });
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
   ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";

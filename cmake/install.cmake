@@ -4,10 +4,11 @@
 # app/CMakeLists.txt, the Python module in python/CMakeLists.txt.
 include(CMakePackageConfigHelpers)
 
-# The data: the material table, the scene schema, the demo mesh and the
-# example scenes, which name it as ../spot.obj.
+# The data: the material table, the scene schema, the demo mesh (the
+# teapot that meshes/ makes at build time) and the example scenes, which
+# name it as ../teapot.obj.
 set(SHADELAB_DATA_DIR "${CMAKE_INSTALL_DATADIR}/shadelab")
-install(FILES data/materials.json data/scene.schema.json data/spot.obj
+install(FILES data/materials.json data/scene.schema.json "${SHADELAB_MESHES}/teapot.obj"
   DESTINATION "${SHADELAB_DATA_DIR}" COMPONENT runtime)
 install(DIRECTORY data/scenes DESTINATION "${SHADELAB_DATA_DIR}" COMPONENT runtime)
 

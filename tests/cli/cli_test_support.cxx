@@ -11,7 +11,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <regex>
@@ -364,6 +366,46 @@ Extents Project(const RecordedCamera& c, const std::vector<Point3>& vertices, in
 std::filesystem::path TestMesh(const std::string& name)
 {
   return std::filesystem::path(SHADELAB_TEST_MESHES) / name;
+}
+
+std::filesystem::path DebianModel(const std::string& path)
+{
+  return std::filesystem::path(SHADELAB_DEBIAN_MODELS) / path;
+}
+
+std::filesystem::path MetalBoxTextured(const std::filesystem::path& dir, bool binary)
+{
+  const auto metal = [](nlohmann::json document)
+  {
+    document.at("materials").at(0).at("pbrMetallicRoughness")["metallicFactor"] = 1;
+    return document.dump();
+  };
+  if (!binary)
+  {
+    for (const char* file : { "BoxTextured0.bin", "CesiumLogoFlat.png" })
+    {
+      std::filesystem::copy_file(DebianModel(std::string("glTF2/BoxTextured-glTF/") + file),
+        dir / file, std::filesystem::copy_options::overwrite_existing);
+    }
+    WriteText(dir / "metal.gltf",
+      metal(nlohmann::json::parse(Slurp(DebianModel("glTF2/BoxTextured-glTF/BoxTextured.gltf")))));
+    return dir / "metal.gltf";
+  }
+  // The JSON chunk rewritten: 12 bytes of header (magic, version, length),
+  // the JSON chunk (length, type, text padded with spaces to 4 bytes), the
+  // BIN chunk as it was.
+  const std::string glb = Slurp(DebianModel("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"));
+  std::uint32_t jsonLength = 0;
+  std::memcpy(&jsonLength, glb.data() + 12, 4);
+  std::string text = metal(nlohmann::json::parse(glb.substr(20, jsonLength)));
+  text.append((4 - text.size() % 4) % 4, ' ');
+  const std::string rest = glb.substr(20 + jsonLength);
+  const std::uint32_t header[5] = { 0x46546C67, 2,
+    static_cast<std::uint32_t>(20 + text.size() + rest.size()),
+    static_cast<std::uint32_t>(text.size()), 0x4E4F534A };
+  WriteText(dir / "metal.glb",
+    std::string(reinterpret_cast<const char*>(header), sizeof header) + text + rest);
+  return dir / "metal.glb";
 }
 
 void WriteText(const std::filesystem::path& path, const std::string& text)

@@ -134,8 +134,18 @@ struct Extents
 Extents Project(
   const RecordedCamera& camera, const std::vector<Point3>& vertices, int width, int height);
 
-/** A real mesh of tests/data/meshes. */
+/** A mesh that shadelab makes itself (meshes/: teapot.obj, torus.obj, ...). */
 std::filesystem::path TestMesh(const std::string& name);
+
+/** A file of Debian's assimp-testmodels, by its path under /usr/share/assimp/models. */
+std::filesystem::path DebianModel(const std::string& path);
+
+/**
+ * Khronos' BoxTextured (Debian's, metallic 0) made a metal (metallic 1:
+ * kd = ka = 0 and its texture colours ks), written into dir as .gltf beside
+ * copies of its buffer and image, or as .glb; its path.
+ */
+std::filesystem::path MetalBoxTextured(const std::filesystem::path& dir, bool binary);
 
 /** Writes text to path. */
 void WriteText(const std::filesystem::path& path, const std::string& text);

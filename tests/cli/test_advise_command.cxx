@@ -136,7 +136,7 @@ TEST_F(AdviseCommand, SaysWhenNothingMeasuredReaches)
 TEST_F(AdviseCommand, ShippedMeasurementsGiveAnAnswerForARealMesh)
 {
   const RunResult r =
-    RunShadelab({ "advise", TestMesh("stanford-bunny.ply").string(), "--max-error", "0.002" });
+    RunShadelab({ "advise", TestMesh("teapot-fine.ply").string(), "--max-error", "0.002" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_NE(r.Stdout.find("from shadelab's measurements at 1920x1080"), std::string::npos);
   EXPECT_NE(r.Stdout.find("\nUse "), std::string::npos) << r.Stdout;

@@ -595,13 +595,13 @@ TEST(AwkwardInput, NonManifoldAndDegenerateFacesRender)
 TEST(AwkwardInput, ViewWithoutADisplayIsAOneLineError)
 {
   // RunShadelab unsets DISPLAY: no X server to open a window on.
-  const RunResult run = RunShadelab({ "view", TestMesh("spot.obj").string() });
+  const RunResult run = RunShadelab({ "view", TestMesh("teapot.obj").string() });
   EXPECT_EQ(run.ExitCode, 1);
   EXPECT_NE(run.Stderr.find("shadelab: error: view: cannot open the display"), std::string::npos)
     << run.Stderr;
   EXPECT_EQ(std::count(run.Stderr.begin(), run.Stderr.end(), '\n'), 1) << run.Stderr;
   const RunResult bad =
-    RunShadelab({ "view", TestMesh("spot.obj").string(), "--interactive-shading", "fast" });
+    RunShadelab({ "view", TestMesh("teapot.obj").string(), "--interactive-shading", "fast" });
   EXPECT_EQ(bad.ExitCode, 2) << bad.Stderr;
 }
 
@@ -663,7 +663,7 @@ TEST(AwkwardInput, AliasedOutputsAreRefused)
 {
   TempDir dir;
   std::filesystem::create_directory(dir / "out");
-  const std::string mesh = TestMesh("spot.obj").string();
+  const std::string mesh = TestMesh("teapot.obj").string();
   WriteText(dir / "scene.json",
     R"({ "mesh": ")" + mesh + R"(", "size": [32, 32], "shots": [ { "output": ")" +
       (dir / "out/x.png").string() + R"(" }, { "output": ")" + (dir / "out/../out/x.png").string() +

@@ -19,12 +19,12 @@ const std::vector<std::string> Rules{ "flat", "gouraud", "phong" };
 const std::vector<std::string> Materials{ "brass", "bronze", "polished-bronze", "chrome", "copper",
   "polished-copper", "gold", "polished-gold" };
 
-// 3 rules x 8 materials of spot at 160x120, written as out/{shading}-{material}.png.
+// 3 rules x 8 materials of the teapot at 160x120, written as out/{shading}-{material}.png.
 std::string TwentyFourShots(const std::string& mesh)
 {
   std::ostringstream scene;
   scene << R"({ "mesh": ")" << mesh << R"(", "output": "{shading}-{material}.png",)"
-        << R"( "size": [160, 120], "camera": { "position": [3.9, 1.5, -2.2] }, "shots": [)";
+        << R"( "size": [160, 120], "camera": { "position": [5, 5, 9] }, "shots": [)";
   for (std::size_t i = 0; i < Rules.size() * Materials.size(); ++i)
   {
     scene << (i ? "," : "") << R"({ "shading": ")" << Rules[i / Materials.size()]
@@ -43,7 +43,7 @@ std::set<std::string> Names(const std::vector<std::string>& files)
 TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
 {
   TempDir dir;
-  const std::string mesh = TestMesh("spot.obj").string();
+  const std::string mesh = TestMesh("teapot.obj").string();
   WriteText(dir / "scene.json", TwentyFourShots(mesh));
   const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "batch/{shading}-{material}.png").string() });
@@ -55,7 +55,7 @@ TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
     {
       const auto single = dir / ("single-" + rule + "-" + material + ".png");
       const RunResult r = RunShadelab({ "render", mesh, "-o", single.string(), "--size", "160x120",
-        "--camera-position", "3.9,1.5,-2.2", "--shading", rule, "--material", material });
+        "--camera-position", "5,5,9", "--shading", rule, "--material", material });
       ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
       const Image a = ReadImage(dir / "batch" / (rule + "-" + material + ".png"));
       const Image b = ReadImage(single);
@@ -69,7 +69,7 @@ TEST(Batch, TwentyFourShotsEqualTheSameShotsRenderedOneByOne)
 TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("teapot.obj").string()));
   // The same command twice (the command line is in the metadata too).
   const std::vector<std::string> args{ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "a" / "{index}.png").string() };
@@ -97,7 +97,7 @@ TEST(Batch, TheSameSceneGivesTheSameBytesAndSaysWhereItCameFrom)
 TEST(Batch, ShardsCoverEveryShotExactlyOnce)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("teapot.obj").string()));
   std::multiset<std::string> all;
   for (int shard = 0; shard < 5; ++shard)
   {
@@ -121,7 +121,7 @@ TEST(Batch, ShardsCoverEveryShotExactlyOnce)
 TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("teapot.obj").string()));
   const std::vector<std::string> whole{ "render", "--scene", (dir / "scene.json").string(), "-o",
     (dir / "out" / "{index}.png").string() };
   ASSERT_EQ(RunShadelab(whole).ExitCode, 0);
@@ -152,7 +152,7 @@ TEST(Batch, ShardsAndRerunsWriteTheBytesOfOneWholeRun)
 TEST(Batch, AFailingShotIsReportedAndTheOthersStillRun)
 {
   TempDir dir;
-  const std::string mesh = TestMesh("spot.obj").string();
+  const std::string mesh = TestMesh("teapot.obj").string();
   WriteText(dir / "scene.json",
     R"({ "output": ")" + (dir / "{name}.png").string() + R"(", "size": [64, 48], "mesh": ")" +
       mesh +
@@ -189,7 +189,7 @@ TEST(Batch, WriterErrorsOfPicturesInFlightGoToTheirOwnShots)
   TempDir dir;
   const std::string scene = (dir / "scene.json").string();
   WriteText(scene,
-    R"({ "mesh": ")" + TestMesh("spot.obj").string() + R"(", "output": ")" +
+    R"({ "mesh": ")" + TestMesh("teapot.obj").string() + R"(", "output": ")" +
       (dir / "{name}.png").string() +
       R"(", "size": [96, 64], "background": "transparent", "shots": [ { "name": "a" },)"
       R"( { "name": "b", "output": ")" +
@@ -245,7 +245,7 @@ TEST(Batch, EachShotReportsItsOwnErrorAndAWarningOnce)
 TEST(Batch, CommandLineMistakes)
 {
   TempDir dir;
-  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("spot.obj").string()));
+  WriteText(dir / "scene.json", TwentyFourShots(TestMesh("teapot.obj").string()));
   const std::string scene = (dir / "scene.json").string();
   struct Case
   {
@@ -257,9 +257,10 @@ TEST(Batch, CommandLineMistakes)
     { { "render", "--scene", scene, "--shading", "flat" }, 2, "--shading excludes --scene" },
     { { "render", "--scene", scene, "--shard", "5/5" }, 2,
       "'5/5' is not a shard I/N with 0 <= I < N" },
-    { { "render", TestMesh("spot.obj").string(), "-o", (dir / "x.png").string(), "--shard", "0/2" },
+    { { "render", TestMesh("teapot.obj").string(), "-o", (dir / "x.png").string(), "--shard",
+        "0/2" },
       2, "--shard requires --scene" },
-    { { "render", TestMesh("spot.obj").string() }, 2, "--output is required unless --scene" },
+    { { "render", TestMesh("teapot.obj").string() }, 2, "--output is required unless --scene" },
     { { "render", "-o", (dir / "x.png").string() }, 2, "MESH is required unless --scene" },
     { { "render", "--scene", (dir / "none.json").string() }, 1,
       "shadelab: error: " + (dir / "none.json").string() +

@@ -40,18 +40,17 @@ TEST(BenchMeshes, TheBunnyAtEachSizeAsBinaryFloatPlyWithoutNormals)
 {
   TempDir out;
   const RunResult r = RunProgram(SHADELAB_BENCH_MESHES,
-    { TestMesh("stanford-bunny.ply").string(), "--out", out.path().string(), "--sizes",
+    { TestMesh("teapot-fine.ply").string(), "--out", out.path().string(), "--sizes",
       "10k,69k,278k" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(
     out.Files(), (std::vector<std::string>{ "bunny-10k.ply", "bunny-278k.ply", "bunny-69k.ply" }));
-  // The bunny itself, through the same writer as the file in tests/data (made
-  // by vtkPLYWriter): the same bytes.
-  EXPECT_TRUE(Slurp(out / "bunny-69k.ply") == Slurp(TestMesh("stanford-bunny.ply")))
-    << Header(out / "bunny-69k.ply");
+  // The input itself (the benchmarks give the bunny; the test the fine
+  // teapot, 65,280 triangles), as it was read.
+  EXPECT_EQ(FaceCount(Header(out / "bunny-69k.ply")), 65280);
   // One Loop subdivision splits every triangle in four.
   const std::string loop = Header(out / "bunny-278k.ply");
-  EXPECT_EQ(FaceCount(loop), 4 * 69451);
+  EXPECT_EQ(FaceCount(loop), 4 * 65280);
   EXPECT_NE(loop.find("format binary_little_endian"), std::string::npos) << loop;
   EXPECT_NE(loop.find("property float x"), std::string::npos) << loop;
   EXPECT_EQ(loop.find("property float nx"), std::string::npos) << loop;
@@ -62,7 +61,7 @@ TEST(BenchMeshes, TheBunnyAtEachSizeAsBinaryFloatPlyWithoutNormals)
   // The folder is the cache: a file already there is kept as it is.
   WriteText(out / "bunny-10k.ply", "kept");
   const RunResult again = RunProgram(SHADELAB_BENCH_MESHES,
-    { TestMesh("stanford-bunny.ply").string(), "--out", out.path().string(), "--sizes", "10k" });
+    { TestMesh("teapot-fine.ply").string(), "--out", out.path().string(), "--sizes", "10k" });
   ASSERT_EQ(again.ExitCode, 0) << again.Stderr;
   EXPECT_TRUE(Slurp(out / "bunny-10k.ply") == "kept") << Header(out / "bunny-10k.ply");
 }
@@ -71,7 +70,7 @@ TEST(BenchMeshes, AnUnknownSizeIsAUsageErrorAndWritesNothing)
 {
   TempDir out;
   const RunResult r = RunProgram(SHADELAB_BENCH_MESHES,
-    { TestMesh("stanford-bunny.ply").string(), "--out", out.path().string(), "--sizes", "69k,5k" });
+    { TestMesh("teapot-fine.ply").string(), "--out", out.path().string(), "--sizes", "69k,5k" });
   EXPECT_EQ(r.ExitCode, 2);
   EXPECT_EQ(r.Stderr, "shadelab: error: --sizes: unknown size '5k'\n");
   EXPECT_TRUE(out.Files().empty());
@@ -94,8 +93,7 @@ TEST(BenchVtkPipeline, PrintsItsPhasesInOrderAndWritesThePicture)
 {
   TempDir out;
   const RunResult r = RunProgram(SHADELAB_BENCH_VTK_PIPELINE,
-    { TestMesh("stanford-bunny.ply").string(), "-o", (out / "vtk.png").string(), "--size",
-      "160x90" });
+    { TestMesh("teapot-fine.ply").string(), "-o", (out / "vtk.png").string(), "--size", "160x90" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   // The lines bench-common.sh's phase_lines parses (scripts/bench-scaling),
   // every phase once, in order, the peak never falling.
@@ -118,8 +116,7 @@ TEST(BenchVtkPipeline, BadInputGetsOneLineAndNoPicture)
 {
   TempDir out;
   const RunResult size = RunProgram(SHADELAB_BENCH_VTK_PIPELINE,
-    { TestMesh("stanford-bunny.ply").string(), "-o", (out / "vtk.png").string(), "--size",
-      "0x90" });
+    { TestMesh("teapot-fine.ply").string(), "-o", (out / "vtk.png").string(), "--size", "0x90" });
   EXPECT_EQ(size.ExitCode, 2);
   EXPECT_EQ(size.Stderr.rfind("shadelab: error: --size: ", 0), 0u) << size.Stderr;
   EXPECT_EQ(std::count(size.Stderr.begin(), size.Stderr.end(), '\n'), 1) << size.Stderr;
@@ -134,7 +131,7 @@ TEST(BenchVtkPipeline, BadInputGetsOneLineAndNoPicture)
   EXPECT_EQ(std::count(mesh.Stderr.begin(), mesh.Stderr.end(), '\n'), 1) << mesh.Stderr;
 
   const RunResult unwritable = RunProgram(SHADELAB_BENCH_VTK_PIPELINE,
-    { TestMesh("stanford-bunny.ply").string(), "-o", (out / "no-folder" / "vtk.png").string(),
+    { TestMesh("teapot-fine.ply").string(), "-o", (out / "no-folder" / "vtk.png").string(),
       "--size", "16x9" });
   EXPECT_EQ(unwritable.ExitCode, 1);
   // After the phases it went through, the error as the last line.

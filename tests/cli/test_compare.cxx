@@ -67,11 +67,11 @@ float LargestDifference(const Image& a, const Image& b)
 }
 
 const std::vector<std::string> Camera{ "--size", std::to_string(W) + "x" + std::to_string(H),
-  "--camera-position", "3.9,1.5,-2.2" };
+  "--camera-position", "5,5,9" };
 
 RunResult Compare(const std::filesystem::path& out, std::vector<std::string> args)
 {
-  args.insert(args.begin(), { "compare", TestMesh("spot.obj").string(), "-o", out.string() });
+  args.insert(args.begin(), { "compare", TestMesh("teapot.obj").string(), "-o", out.string() });
   args.insert(args.end(), Camera.begin(), Camera.end());
   return RunShadelab(args);
 }
@@ -91,7 +91,7 @@ TEST(Compare, OnePanelPerModeEachExactlyWhatRenderGives)
   std::vector<Image> panels;
   for (int i = 0; i < 3; ++i)
   {
-    std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
+    std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o",
       (dir / (rules[i] + ".png")).string(), "--shading", rules[i] };
     args.insert(args.end(), Camera.begin(), Camera.end());
     const RunResult render = RunShadelab(args);
@@ -228,7 +228,7 @@ TEST(Compare, BadModesAndDifferencesAreOneLineErrors)
   EXPECT_EQ(missing.ExitCode, 1);
   EXPECT_NE(missing.Stderr.find("none.obj"), std::string::npos) << missing.Stderr;
   const RunResult folder = RunShadelab(
-    { "compare", TestMesh("spot.obj").string(), "-o", (dir / "no/such/c.png").string() });
+    { "compare", TestMesh("teapot.obj").string(), "-o", (dir / "no/such/c.png").string() });
   EXPECT_EQ(folder.ExitCode, 1);
   EXPECT_TRUE(dir.Files().empty());
 }
@@ -239,7 +239,7 @@ TEST(Compare, BadModesAndDifferencesAreOneLineErrors)
 TEST(Compare, APictureBeyondTheLimitIsRefusedFirst)
 {
   TempDir dir;
-  const RunResult r = RunShadelab({ "compare", TestMesh("spot.obj").string(), "-o",
+  const RunResult r = RunShadelab({ "compare", TestMesh("teapot.obj").string(), "-o",
     (dir / "big.png").string(), "--modes", "flat,phong", "--size", "3000x3000" });
   EXPECT_EQ(r.ExitCode, 1) << r.Stderr;
   EXPECT_NE(

@@ -1,4 +1,4 @@
-// The mesh files' own textures drawn, per part: real files (spot-textured.obj
+// The mesh files' own textures drawn, per part: real files (teapot-textured.obj
 // with its MTL and PNG, Khronos' BoxTextured as .gltf and .glb) rendered
 // against the oracle under every rule, pixel by pixel through `probe`; a
 // mesh of a textured and an untextured part; which options keep or drop the
@@ -28,54 +28,12 @@ namespace
 {
 using Rgb = std::array<double, 3>;
 
-// BoxTextured's material has glTF's default metallic factor 1, which the
-// glTF mapping makes kd = ka = 0 (doc/user/formats-and-materials.md, "Materials from glTF"): its
-// texture would multiply nothing. The copies written here say metallic 0, so that kd = ka = 1 x
-// texel. The .gltf is copied beside its buffer and image.
-void SetNotMetallic(json& document)
-{
-  document.at("materials").at(0).at("pbrMetallicRoughness")["metallicFactor"] = 0;
-}
-
-std::filesystem::path DielectricGltf(const TempDir& dir)
-{
-  for (const char* file : { "BoxTextured0.bin", "CesiumLogoFlat.png" })
-  {
-    std::filesystem::copy_file(TestMesh(file), dir / file);
-  }
-  json document = json::parse(Slurp(TestMesh("box-textured.gltf")));
-  SetNotMetallic(document);
-  WriteText(dir / "box-textured.gltf", document.dump());
-  return dir / "box-textured.gltf";
-}
-
-// The .glb with its JSON chunk rewritten: 12 bytes of header (magic,
-// version, length), the JSON chunk (length, type, text padded with spaces
-// to 4 bytes), the BIN chunk as it was.
-std::filesystem::path DielectricGlb(const TempDir& dir)
-{
-  const std::string glb = Slurp(TestMesh("box-textured.glb"));
-  std::uint32_t jsonLength = 0;
-  std::memcpy(&jsonLength, glb.data() + 12, 4);
-  json document = json::parse(glb.substr(20, jsonLength));
-  SetNotMetallic(document);
-  std::string text = document.dump();
-  text.append((4 - text.size() % 4) % 4, ' ');
-  const std::string rest = glb.substr(20 + jsonLength);
-  const std::uint32_t header[5] = { 0x46546C67, 2,
-    static_cast<std::uint32_t>(20 + text.size() + rest.size()),
-    static_cast<std::uint32_t>(text.size()), 0x4E4F534A };
-  WriteText(dir / "box-textured.glb",
-    std::string(reinterpret_cast<const char*>(header), sizeof header) + text + rest);
-  return dir / "box-textured.glb";
-}
-
 // `shadelab probe MESH --json` at every 12th pixel of a 240x240 picture
-// seen from "iso", under `rule`: one JSON object per pixel.
-std::vector<json> ProbeGrid(const std::filesystem::path& mesh, const char* rule)
+// seen from "iso" at `zoom`, under `rule`: one JSON object per pixel.
+std::vector<json> ProbeGrid(const std::filesystem::path& mesh, const char* rule, double zoom)
 {
   std::vector<std::string> args{ "probe", mesh.string(), "--json", "--shading", rule, "--size",
-    "240x240", "--view", "iso" };
+    "240x240", "--view", "iso", "--zoom", std::to_string(zoom) };
   for (int y = 4; y < 240; y += 12)
   {
     for (int x = 4; x < 240; x += 12)
@@ -103,14 +61,14 @@ std::vector<json> ProbeGrid(const std::filesystem::path& mesh, const char* rule)
 // image is looked up, not one colour of it); ks the texel's too where
 // ksTextured (not all the same, nor all the pictures' pixels), else the
 // material's alone.
-void ExpectTexturedAsTheOracle(
-  const std::filesystem::path& mesh, double texelSlack, std::size_t atLeast, bool ksTextured)
+void ExpectTexturedAsTheOracle(const std::filesystem::path& mesh, double texelSlack,
+  std::size_t atLeast, bool ksTextured, double zoom = 1)
 {
   for (const char* rule : { "none", "flat", "gouraud", "phong" })
   {
     std::size_t compared = 0;
     std::set<std::vector<double>> texels, ks, rendered;
-    for (const json& p : ProbeGrid(mesh, rule))
+    for (const json& p : ProbeGrid(mesh, rule, zoom))
     {
       if (!p.at("hit") || p.at("edge_distance").get<double>() < 0.5)
       {
@@ -134,34 +92,45 @@ void ExpectTexturedAsTheOracle(
 }
 }
 
-// spot's texture coordinates lie in [0, 1]: the standard bound alone.
-TEST(FileTextures, SpotTexturedObjMatchesTheOracleUnderEveryRule)
+// The teapot's texture coordinates lie in [0, 1], where a float's ulp is
+// 6e-8: 1.5e-5 of a texel of the 256-texel texture. Across its squares'
+// edges the texel changes by up to 0.775 per texel (blue: 0.9 to 0.125), so
+// each ulp that the interpolated coordinate is off moves the texel by up to
+// 1.2e-5 and the pixel by that times ka Ia + kd Il (1.2 here): 1e-4 allows
+// about seven ulps. The largest deviation measured was 3.3e-5. Seen at zoom
+// 2, its triangles are a few pixels across, enough of them away from edges.
+TEST(FileTextures, TexturedObjMatchesTheOracleUnderEveryRule)
 {
-  ExpectTexturedAsTheOracle(TestMesh("spot-textured.obj"), 0, 20, false);
+  ExpectTexturedAsTheOracle(TestMesh("teapot-textured.obj"), 1e-4, 40, false, 2);
 }
 
+// BoxTextured as Debian ships it (metallic 0: kd = ka = 1 x texel).
 // The box's texture coordinates reach s = 6, where a float's ulp is 4.8e-7:
 // 1e-4 of a texel of the 211-texel logo. Across the logo's sharp edges the
 // texel changes by up to 1 per texel, so each ulp that the interpolated s
 // is off moves the texel by up to 1e-4 and the pixel by that times
 // ka Ia + kd Il (1.2 here): 6e-4 allows about five ulps. The largest
 // deviation measured was 7e-5; a wrong texel (another image, wrap, filter
-// or orientation) is off by tenths. The files themselves are a metal
-// (metallic 1, kd = ka = 0): the texel is in ks alone, ks = texel, and
-// the pixel moves by up to ks's texel times the specular sum (1 here, ns 0):
-// the same bound holds. Under none a metal is black (kd = 0).
+// or orientation) is off by tenths.
 TEST(FileTextures, BoxTexturedGltfAndGlbMatchTheOracleUnderEveryRule)
 {
-  const TempDir dir;
-  ExpectTexturedAsTheOracle(DielectricGltf(dir), 6e-4, 100, false);
-  ExpectTexturedAsTheOracle(DielectricGlb(dir), 6e-4, 100, false);
+  for (const char* name :
+    { "BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb" })
+  {
+    ExpectTexturedAsTheOracle(DebianModel(std::string("glTF2/") + name), 6e-4, 100, false);
+  }
 }
 
+// The box made a metal (metallic 1, kd = ka = 0): the texel is in ks alone,
+// ks = texel, and the pixel moves by up to ks's texel times the specular
+// sum (1 here, ns 0): the bound above holds. Under none a metal is black
+// (kd = 0).
 TEST(FileTextures, BoxTexturedMetalShowsItsTextureThroughKs)
 {
-  for (const char* name : { "box-textured.gltf", "box-textured.glb" })
+  const TempDir dir;
+  for (const bool binary : { false, true })
   {
-    ExpectTexturedAsTheOracle(TestMesh(name), 6e-4, 100, true);
+    ExpectTexturedAsTheOracle(MetalBoxTextured(dir.path(), binary), 6e-4, 100, true);
   }
 }
 
@@ -365,11 +334,12 @@ TEST(FileTextures, OverridesDropOrReplaceTheFilesTextures)
 TEST(FileTextures, OverridesOfAMetalsKsTexture)
 {
   const TempDir dir;
+  const auto metal = MetalBoxTextured(dir.path(), true);
   const auto maps = [&](const std::vector<std::string>& options)
   {
     const auto out = dir / "box.exr";
-    std::vector<std::string> args{ "render", TestMesh("box-textured.glb").string(), "-o",
-      out.string(), "--size", "32x32", "--pixel-type", "float" };
+    std::vector<std::string> args{ "render", metal.string(), "-o", out.string(), "--size", "32x32",
+      "--pixel-type", "float" };
     args.insert(args.end(), options.begin(), options.end());
     const RunResult r = RunShadelab(args);
     EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
@@ -380,5 +350,5 @@ TEST(FileTextures, OverridesOfAMetalsKsTexture)
   EXPECT_EQ(maps({ "--ks", "0.5,0.5,0.5" }), json({ "kd", "ka" }));
   EXPECT_EQ(maps({ "--kd", "0.5,0.5,0.5" }), json({ "ka", "ks" }));
   EXPECT_EQ(maps({ "--material", "gold" }), json::array());
-  EXPECT_EQ(maps({ "--texture", TestMesh("CesiumLogoFlat.png").string() }), json({ "kd", "ka" }));
+  EXPECT_EQ(maps({ "--texture", TestMesh("teapot-texture.png").string() }), json({ "kd", "ka" }));
 }

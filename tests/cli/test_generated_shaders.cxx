@@ -22,9 +22,9 @@ struct Dumped
 };
 
 Dumped Render(const TempDir& dir, const std::string& name, std::vector<std::string> extra,
-  const std::filesystem::path& mesh = TestMesh("cow.obj"))
+  const std::filesystem::path& mesh = TestMesh("torus.obj"))
 {
-  std::vector<std::string> args = { "render", mesh.string(), "-o", (dir / "cow.png").string(),
+  std::vector<std::string> args = { "render", mesh.string(), "-o", (dir / "torus.png").string(),
     "--size", "48x48", "--dump-shaders", (dir / "glsl").string() };
   args.insert(args.end(), extra.begin(), extra.end());
   const RunResult r = RunShadelab(args);
@@ -43,7 +43,7 @@ TEST(GeneratedShaders, PhongLightsPerFragmentWithTheLightsOfTheScene)
   EXPECT_TRUE(Contains(d.Fragment, "// light 0: point"));
   EXPECT_TRUE(Contains(d.Fragment, "// light 1: directional"));
   EXPECT_FALSE(Contains(d.Fragment, "// light 2"));
-  EXPECT_FALSE(Contains(d.Fragment, "shadelabLightCosCutoff")) << "spot code without a spot";
+  EXPECT_FALSE(Contains(d.Fragment, "shadelabLightCosCutoff")) << "teapot code without a teapot";
   EXPECT_TRUE(Contains(d.Fragment, "vec3 H = sum / len;")) << "Blinn-Phong's halfway vector";
   EXPECT_FALSE(Contains(d.Vertex, "shadelabIlluminate")) << "phong lights per fragment only";
 }
@@ -133,14 +133,14 @@ TEST(GeneratedShaders, TextureCodeOnlyWithATexture)
   }
 }
 
-// A glTF metal's base colour texture colours ks (BoxTextured: metallic 1):
+// A glTF metal's base colour texture colours ks (BoxTextured made a metal):
 // phong's ks per fragment, flat's and gouraud's vertices lit with ks = 1 for
 // the fragment to multiply (flat's in the fragment stage); none has no specular. --ks drops the ks
 // texture, and --texture is kd's and ka's only.
 TEST(GeneratedShaders, KsTextureCodeOnlyForATexturedMetal)
 {
   TempDir dir;
-  const auto metal = TestMesh("box-textured.glb");
+  const auto metal = MetalBoxTextured(dir.path(), true);
   WriteImage8(dir / "one.png", 1, 1, { 200, 100, 50 });
   for (const char* rule : { "none", "flat", "gouraud", "phong" })
   {
@@ -176,8 +176,8 @@ TEST(GeneratedShaders, AnEightBitFileEndsWithTheCapturesQuantisation)
   const std::string step = "fragOutput0 = shadelabQuantised(fragOutput0);";
   EXPECT_TRUE(Contains(Render(dir, "phong-blinn", {}).Fragment, step));
   std::filesystem::remove_all(dir / "glsl");
-  const RunResult r = RunShadelab({ "render", TestMesh("cow.obj").string(), "-o",
-    (dir / "cow.exr").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() });
+  const RunResult r = RunShadelab({ "render", TestMesh("torus.obj").string(), "-o",
+    (dir / "torus.exr").string(), "--size", "48x48", "--dump-shaders", (dir / "glsl").string() });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_FALSE(Contains(Slurp(dir / "glsl" / "phong-blinn.frag"), step)) << "floats: no step";
 }

@@ -38,7 +38,7 @@ void InterruptAndFinish(int signal, const std::string& name)
 {
   TempDir dir;
   std::ostringstream scene;
-  scene << R"({ "mesh": ")" << TestMesh("spot.obj").string() << R"(", "output": ")"
+  scene << R"({ "mesh": ")" << TestMesh("teapot.obj").string() << R"(", "output": ")"
         << (dir / "out/{index}.png").string() << R"(", "size": [320, 240], "shots": [)";
   for (int i = 0; i < Shots; ++i)
   {
@@ -168,12 +168,12 @@ bool Catches(int pid, int signal)
   return false;
 }
 
-// A render of spot at size into dir/output started, with the options more,
+// A render of the teapot at size into dir/output started, with the options more,
 // and its image writer found: {shadelab, writer}, -1 for one that did not start.
 std::pair<int, int> StartRenderWithWriter(const TempDir& dir, const std::string& output,
   const std::string& size, const std::vector<std::string>& more = {})
 {
-  std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
+  std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o",
     (dir / output).string(), "--size", size };
   args.insert(args.end(), more.begin(), more.end());
   const int pid = StartShadelab(args, dir / "stdout", dir / "stderr");
@@ -219,7 +219,7 @@ TEST(Interrupt, SigtermEndsARunThatCannotStopByItselfWithinTheGrace)
   // A picture large enough that the writer cannot encode and commit it in
   // the moment between reaching its main() and being stopped: its image may
   // already wait in the pipe then, when the machine is busy.
-  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.png", "2048x2048");
+  const auto [pid, writer] = StartRenderWithWriter(dir, "teapot.png", "2048x2048");
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
   ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";
@@ -250,7 +250,8 @@ TEST(Interrupt, SigkillLeavesNoProcessBehind)
 {
   TempDir dir;
   // An animation of many frames: shadelab still runs when it is killed.
-  const auto [pid, writer] = StartRenderWithWriter(dir, "spot.gif", "64x64", { "--orbit", "3600" });
+  const auto [pid, writer] =
+    StartRenderWithWriter(dir, "teapot.gif", "64x64", { "--orbit", "3600" });
   ASSERT_GT(pid, 0);
   ASSERT_GT(writer, 0);
   ASSERT_TRUE(ReachedMain(writer)) << "the writer never reached its main()";

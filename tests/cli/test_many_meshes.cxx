@@ -10,11 +10,11 @@ TEST(ManyMeshes, EachPictureIsTheOneItsMeshAloneGives)
 {
   TempDir dir;
   const RunResult r =
-    RunShadelab({ "render", TestMesh("spot.obj").string(), TestMesh("cow.obj").string(), "-o",
+    RunShadelab({ "render", TestMesh("teapot.obj").string(), TestMesh("torus.obj").string(), "-o",
       (dir / "thumbs" / "{mesh}.png").string(), "--size", "96x72", "--material", "gold" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(r.Stderr, "");
-  for (const std::string mesh : { "spot", "cow" })
+  for (const std::string mesh : { "teapot", "torus" })
   {
     SCOPED_TRACE(mesh);
     ASSERT_EQ(RunShadelab(
@@ -33,7 +33,8 @@ TEST(ManyMeshes, FoldersAndGlobsNameTheirMeshFiles)
   TempDir meshes, out;
   for (const std::string name : { "b.obj", "a.stl" })
   {
-    std::filesystem::copy_file(TestMesh(name == "b.obj" ? "cow.obj" : "teapot.stl"), meshes / name);
+    std::filesystem::copy_file(
+      TestMesh(name == "b.obj" ? "torus.obj" : "teapot.stl"), meshes / name);
   }
   WriteText(meshes / "notes.txt", "not a mesh");
   ASSERT_EQ(RunShadelab({ "render", meshes.path().string(), "-o",
@@ -52,11 +53,12 @@ TEST(ManyMeshes, MistakesAreOneLineErrors)
 {
   TempDir dir;
   std::filesystem::create_directory(dir / "empty");
-  const std::string spot = TestMesh("spot.obj").string(), cow = TestMesh("cow.obj").string();
+  const std::string teapot = TestMesh("teapot.obj").string(),
+                    torus = TestMesh("torus.obj").string();
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-    { { spot, cow, "-o", (dir / "one.png").string() },
-      "shadelab: error: --output: \"" + (dir / "one.png").string() + "\" is the output of " + spot +
-        " and " + cow + ": name each mesh's, as with {mesh} or {index}\n" },
+    { { teapot, torus, "-o", (dir / "one.png").string() },
+      "shadelab: error: --output: \"" + (dir / "one.png").string() + "\" is the output of " +
+        teapot + " and " + torus + ": name each mesh's, as with {mesh} or {index}\n" },
     { { (dir / "empty").string(), "-o", (dir / "{mesh}.png").string() },
       "shadelab: error: " + (dir / "empty").string() +
         ": no mesh files in the folder (known: .obj .ply .stl .off .gltf .glb .vtp .vtk)\n" },

@@ -74,7 +74,7 @@ private:
   rlimit Old{};
 };
 
-const std::string Mesh = TestMesh("spot.obj").string();
+const std::string Mesh = TestMesh("teapot.obj").string();
 const std::string NoSpace = "cannot write: No space left on device";
 const std::string TooLarge = "cannot write: File too large";
 
@@ -110,7 +110,7 @@ TEST(NothingLost, AFullDiskKeepsTheWholePictureThatWasThereForEveryFormat)
   for (const std::string ext : { ".png", ".jpg", ".tif", ".exr" })
   {
     SCOPED_TRACE(ext);
-    const fs::path out = disk / ("spot" + ext);
+    const fs::path out = disk / ("teapot" + ext);
     ASSERT_EQ(Render(out, "24x24").ExitCode, 0);
     const RunResult r = Render(out, "800x800");
     EXPECT_EQ(r.ExitCode, 1);
@@ -129,7 +129,7 @@ TEST(NothingLost, AFileSizeLimitIsAnErrorLikeTheOthers)
   for (const std::string ext : { ".png", ".jpg", ".tif", ".exr" })
   {
     SCOPED_TRACE(ext);
-    const fs::path out = dir / ("spot" + ext);
+    const fs::path out = dir / ("teapot" + ext);
     RunResult r;
     {
       const FileSizeLimit limit(8192);
@@ -152,7 +152,7 @@ TEST(NothingLost, NormalsUnderAFileSizeLimitNameTheirOutput)
   for (const std::string ext : { ".ply", ".vtp", ".obj" })
   {
     SCOPED_TRACE(ext);
-    const fs::path out = dir / ("spot" + ext);
+    const fs::path out = dir / ("teapot" + ext);
     RunResult r;
     {
       const FileSizeLimit limit(8192);
@@ -170,10 +170,10 @@ TEST(NothingLost, NormalsUnderAFileSizeLimitNameTheirOutput)
 TEST(NothingLost, AnMp4CutShortByAFileSizeLimitIsNoOutput)
 {
   TempDir dir;
-  const fs::path out = dir / "spot.mp4";
+  const fs::path out = dir / "teapot.mp4";
   RunResult r;
   {
-    const FileSizeLimit limit(20 << 10); // 30 frames of 640x480 take about 40 KB
+    const FileSizeLimit limit(8 << 10); // 30 frames of the teapot at 640x480 take about 19 KB
     r = RunShadelab(
       { "render", Mesh, "-o", out.string(), "--size", "640x480", "--orbit", "30", "--quiet" });
   }
@@ -216,7 +216,7 @@ TEST(NothingLost, MeshesComparisonsShadersAndBenchResultsOnAFullDisk)
   // normals: each mesh format (250 kB and more) fails whole.
   for (const std::string ext : { ".ply", ".vtp", ".obj" })
   {
-    const fs::path out = disk / ("spot" + ext);
+    const fs::path out = disk / ("teapot" + ext);
     const RunResult r = RunShadelab({ "normals", Mesh, "-o", out.string() });
     EXPECT_EQ(r.ExitCode, 1) << ext;
     EXPECT_EQ(r.Stderr, "shadelab: error: " + out.string() + ": " + NoSpace + "\n");

@@ -75,9 +75,9 @@ std::string Output(const std::string& command)
 TEST(Orbit, FrameKIsTheAzimuthTurnedBy360KOverN)
 {
   TempDir dir;
-  const std::string spot = TestMesh("spot.obj").string();
+  const std::string teapot = TestMesh("teapot.obj").string();
   const RunResult r =
-    Render({ spot, "-o", (dir / "frames" / "{frame}.png").string(), "--orbit", "12" });
+    Render({ teapot, "-o", (dir / "frames" / "{frame}.png").string(), "--orbit", "12" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   std::vector<std::string> names;
   for (int k = 0; k < 12; ++k)
@@ -95,27 +95,27 @@ TEST(Orbit, FrameKIsTheAzimuthTurnedBy360KOverN)
     EXPECT_NE(frames[k].Pixels, frames[(k + 1) % frames.size()].Pixels) << "frames " << k;
   }
   // Frame 0 is the plain picture, the last one step (30 degrees) before it.
-  ASSERT_EQ(Render({ spot, "-o", (dir / "plain.png").string() }).ExitCode, 0);
+  ASSERT_EQ(Render({ teapot, "-o", (dir / "plain.png").string() }).ExitCode, 0);
   EXPECT_EQ(frames.front().Pixels, ReadImage(dir / "plain.png").Pixels);
-  ASSERT_EQ(Render({ spot, "-o", (dir / "330.png").string(), "--azimuth", "330" }).ExitCode, 0);
+  ASSERT_EQ(Render({ teapot, "-o", (dir / "330.png").string(), "--azimuth", "330" }).ExitCode, 0);
   EXPECT_EQ(frames.back().Pixels, ReadImage(dir / "330.png").Pixels);
   // Ten frames number 0 to 9, with a given azimuth added.
-  ASSERT_EQ(Render({ spot, "-o", (dir / "ten" / "f{frame}.png").string(), "--orbit", "10",
+  ASSERT_EQ(Render({ teapot, "-o", (dir / "ten" / "f{frame}.png").string(), "--orbit", "10",
                      "--azimuth", "5" })
               .ExitCode,
     0);
   EXPECT_EQ(FilesIn(dir / "ten").size(), 10u);
-  ASSERT_EQ(Render({ spot, "-o", (dir / "77.png").string(), "--azimuth", "77" }).ExitCode, 0);
+  ASSERT_EQ(Render({ teapot, "-o", (dir / "77.png").string(), "--azimuth", "77" }).ExitCode, 0);
   EXPECT_EQ(ReadImage(dir / "ten" / "f2.png").Pixels, ReadImage(dir / "77.png").Pixels);
 }
 
 TEST(Orbit, AGifHoldsEveryFrameInOrder)
 {
   TempDir dir;
-  const std::string spot = TestMesh("spot.obj").string();
-  ASSERT_EQ(Render({ spot, "-o", (dir / "{frame}.png").string(), "--orbit", "6" }).ExitCode, 0);
+  const std::string teapot = TestMesh("teapot.obj").string();
+  ASSERT_EQ(Render({ teapot, "-o", (dir / "{frame}.png").string(), "--orbit", "6" }).ExitCode, 0);
   const RunResult r =
-    Render({ spot, "-o", (dir / "spin.gif").string(), "--orbit", "6", "--fps", "20" });
+    Render({ teapot, "-o", (dir / "spin.gif").string(), "--orbit", "6", "--fps", "20" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const std::vector<Image> gif = ReadSubimages(dir / "spin.gif");
   ASSERT_EQ(gif.size(), 6u);
@@ -154,7 +154,7 @@ TEST(Orbit, AnMp4HoldsEveryFrame)
   }
   TempDir dir;
   const RunResult r =
-    Render({ TestMesh("spot.obj").string(), "-o", (dir / "spin.mp4").string(), "--orbit", "9" });
+    Render({ TestMesh("teapot.obj").string(), "-o", (dir / "spin.mp4").string(), "--orbit", "9" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(Output("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                    "stream=nb_read_frames,width,height,r_frame_rate -of csv=p=0 '" +
@@ -167,7 +167,7 @@ TEST(Orbit, WithoutFfmpegAnMp4IsRefusedBeforeAnythingRenders)
 {
   TempDir dir, empty;
   WriteText(dir / "scene.json",
-    R"({ "mesh": ")" + TestMesh("spot.obj").string() + R"(", "size": [64, 48],
+    R"({ "mesh": ")" + TestMesh("teapot.obj").string() + R"(", "size": [64, 48],
          "shots": [ { "output": ")" +
       (dir / "still.png").string() + R"(" },
                     { "output": ")" +
@@ -196,7 +196,7 @@ TEST(Orbit, AFailingFfmpegLeavesNothing)
     WriteText(programs / name / "ffmpeg", std::string("#!/bin/sh\n") + script + "\n");
     std::filesystem::permissions(programs / name / "ffmpeg", std::filesystem::perms::owner_all);
     const RunResult r =
-      Render({ TestMesh("spot.obj").string(), "-o", (dir / "spin.mp4").string(), "--orbit", "5" },
+      Render({ TestMesh("teapot.obj").string(), "-o", (dir / "spin.mp4").string(), "--orbit", "5" },
         { "PATH=" + (programs / name).string() + ":/usr/bin:/bin" });
     EXPECT_EQ(r.ExitCode, 1);
     EXPECT_EQ(
@@ -221,7 +221,7 @@ TEST(Orbit, AnAnimationCutShortIsNotWritten)
     }
     TempDir dir, logs;
     const std::string out = (dir / ("spin" + format)).string();
-    const int pid = StartShadelab({ "render", TestMesh("spot.obj").string(), "-o", out, "--orbit",
+    const int pid = StartShadelab({ "render", TestMesh("teapot.obj").string(), "-o", out, "--orbit",
                                     "1000", "--size", "320x240", "-v" },
       logs / "stdout", logs / "stderr");
     ASSERT_GT(pid, 0);
@@ -253,14 +253,14 @@ TEST(Orbit, AnAnimationCutShortIsNotWritten)
 TEST(Orbit, ManyMeshesAndSceneFilesNumberTheirFrames)
 {
   TempDir dir;
-  ASSERT_EQ(Render({ TestMesh("spot.obj").string(), TestMesh("cow.obj").string(), "-o",
+  ASSERT_EQ(Render({ TestMesh("teapot.obj").string(), TestMesh("torus.obj").string(), "-o",
                      (dir / "{mesh}" / "{frame}.png").string(), "--orbit", "3" })
               .ExitCode,
     0);
-  EXPECT_EQ(FilesIn(dir / "spot"), (std::vector<std::string>{ "0.png", "1.png", "2.png" }));
-  EXPECT_EQ(FilesIn(dir / "cow"), (std::vector<std::string>{ "0.png", "1.png", "2.png" }));
+  EXPECT_EQ(FilesIn(dir / "teapot"), (std::vector<std::string>{ "0.png", "1.png", "2.png" }));
+  EXPECT_EQ(FilesIn(dir / "torus"), (std::vector<std::string>{ "0.png", "1.png", "2.png" }));
   WriteText(dir / "scene.json",
-    R"({ "mesh": ")" + TestMesh("spot.obj").string() + R"(", "size": [64, 48], "orbit": 2,
+    R"({ "mesh": ")" + TestMesh("teapot.obj").string() + R"(", "size": [64, 48], "orbit": 2,
          "output": ")" +
       (dir / "scene" / "{name}-{frame}.png").string() + R"(",
          "shots": [ { "name": "a" }, { "name": "b", "fps": 10, "output": ")" +
@@ -325,27 +325,27 @@ TEST(Orbit, TightFitHoldsEveryFrameAtOneSize)
 TEST(Orbit, MistakesAreOneLineErrors)
 {
   TempDir dir;
-  const std::string spot = TestMesh("spot.obj").string(), png = (dir / "a.png").string();
+  const std::string teapot = TestMesh("teapot.obj").string(), png = (dir / "a.png").string();
   const std::vector<std::tuple<std::vector<std::string>, int, std::string>> cases{
-    { { spot, "-o", png, "--orbit", "0" }, 2, "--orbit" },
-    { { spot, "-o", png, "--orbit", "-3" }, 2, "--orbit" },
-    { { spot, "-o", png, "--orbit", "x" }, 2, "--orbit" },
-    { { spot, "-o", png, "--orbit", "2.5" }, 2, "--orbit" },
-    { { spot, "-o", png, "--orbit", "4000" }, 2, "--orbit" },
-    { { spot, "-o", png, "--orbit", "3" }, 2,
+    { { teapot, "-o", png, "--orbit", "0" }, 2, "--orbit" },
+    { { teapot, "-o", png, "--orbit", "-3" }, 2, "--orbit" },
+    { { teapot, "-o", png, "--orbit", "x" }, 2, "--orbit" },
+    { { teapot, "-o", png, "--orbit", "2.5" }, 2, "--orbit" },
+    { { teapot, "-o", png, "--orbit", "4000" }, 2, "--orbit" },
+    { { teapot, "-o", png, "--orbit", "3" }, 2,
       "shadelab: error: --output: \"" + png +
         "\" has no {frame} (a picture per frame of --orbit) nor the extension .gif or .mp4 (one "
         "animation of them all)\n" },
-    { { spot, "-o", png, "--fps", "10" }, 2, "--fps" },
-    { { spot, "-o", (dir / "a.gif").string(), "--orbit", "3", "--fps", "0" }, 2, "--fps" },
-    { { spot, "-o", (dir / "a.gif").string(), "--orbit", "3", "--fps", "60" }, 1,
+    { { teapot, "-o", png, "--fps", "10" }, 2, "--fps" },
+    { { teapot, "-o", (dir / "a.gif").string(), "--orbit", "3", "--fps", "0" }, 2, "--fps" },
+    { { teapot, "-o", (dir / "a.gif").string(), "--orbit", "3", "--fps", "60" }, 1,
       "--fps at most 50" },
-    { { spot, TestMesh("cow.obj").string(), "-o", (dir / "{mesh}-{frame}.png").string() }, 2,
+    { { teapot, TestMesh("torus.obj").string(), "-o", (dir / "{mesh}-{frame}.png").string() }, 2,
       "{frame} numbers --orbit's frames" },
-    { { spot, "-o", (dir / "odd.mp4").string(), "--orbit", "2", "--size", "65x48" }, 1,
+    { { teapot, "-o", (dir / "odd.mp4").string(), "--orbit", "2", "--size", "65x48" }, 1,
       "needs an even width and height, not 65x48" },
-    { { spot, "-o", (dir / "clear.mp4").string(), "--orbit", "2", "--size", "64x48", "--background",
-        "transparent" },
+    { { teapot, "-o", (dir / "clear.mp4").string(), "--orbit", "2", "--size", "64x48",
+        "--background", "transparent" },
       1, "cannot store transparency" },
   };
   for (const auto& [args, status, says] : cases)

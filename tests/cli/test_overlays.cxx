@@ -11,7 +11,7 @@ using namespace shadelab_test;
 
 namespace
 {
-const std::string Mesh = TestMesh("cow.obj").string();
+const std::string Mesh = TestMesh("torus.obj").string();
 
 // Pixels of exactly the 8-bit colour rgb.
 std::size_t CountColour(const Image& image, const std::array<float, 3>& rgb)

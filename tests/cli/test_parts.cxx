@@ -1,8 +1,8 @@
 // A mesh's parts drawn with their own materials: which material each part
 // gets under the overrides (--material, --ka/--kd/--ks/--ns), as rendered,
 // as the picture's metadata lists it and as `probe` explains it; on files
-// written here (an OBJ with its MTL, a glTF with two materials) and on the
-// real box-assimp.gltf.
+// written here (an OBJ with its MTL, a glTF with two materials) and on
+// Khronos' BoxTextured (from Debian's assimp-testmodels).
 #include "cli_test_support.h"
 #include "probe_oracle_check.h"
 #include "shadelabIllumination.h"
@@ -315,21 +315,22 @@ TEST(Parts, VertexColorsAreEveryPartsKdUnderEveryRule)
   }
 }
 
-// The real Khronos box through assimp: one part, its named material as the
-// glTF mapping gives it (base colour (0.8, 0, 0), metallic and roughness 1:
-// kd 0, ks the base colour, ns 0).
-TEST(Parts, BoxAssimpGltfHasItsNamedMaterial)
+// Khronos' BoxTextured: one part, its named material as the glTF mapping
+// gives it (base colour factor 1 under its texture, metallic 0: kd the base
+// colour, ks a dielectric's 0.04).
+TEST(Parts, BoxTexturedHasItsNamedMaterial)
 {
   TempDir dir;
   const auto out = dir / "box.png";
-  const RunResult r = RunShadelab(
-    { "render", TestMesh("box-assimp.gltf").string(), "-o", out.string(), "--size", "64x64" });
+  const RunResult r =
+    RunShadelab({ "render", DebianModel("glTF2/BoxTextured-glTF/BoxTextured.gltf").string(), "-o",
+      out.string(), "--size", "64x64" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const json parts = PartsOf(ReadImage(out));
   ASSERT_EQ(parts.size(), 1u) << parts;
-  EXPECT_EQ(parts[0].at("name"), "material");
+  EXPECT_EQ(parts[0].at("name"), "Texture");
   EXPECT_EQ(parts[0].at("triangles"), 12);
   EXPECT_EQ(parts[0].at("source"), "file");
-  EXPECT_EQ(Triple(parts[0].at("material").at("kd")), (Rgb{ 0, 0, 0 }));
-  ExpectFloats(Triple(parts[0].at("material").at("ks")), Rgb{ 0.8, 0, 0 });
+  EXPECT_EQ(Triple(parts[0].at("material").at("kd")), (Rgb{ 1, 1, 1 }));
+  ExpectFloats(Triple(parts[0].at("material").at("ks")), Rgb{ 0.04, 0.04, 0.04 });
 }

@@ -1,5 +1,5 @@
 // `shadelab probe` (doc/design.md, "Explaining a pixel"), pixel by pixel over
-// the bunny (perspective) and the teapot (orthographic), for each rule and
+// the fine teapot (perspective) and the teapot (orthographic), for each rule and
 // both reflection models, under point, directional and spot lights: the
 // oracle is the sum of its terms, `rendered` is render's float picture at
 // the pixel bit for bit, and away from edges the oracle is within the
@@ -30,18 +30,13 @@ using nlohmann::json;
 
 namespace
 {
-const std::string Bunny = TestMesh("stanford-bunny.obj").string();
+const std::string Fine = TestMesh("teapot-fine.obj").string();
 const std::string Teapot = TestMesh("teapot.obj").string();
 const Rgb Background{ 0.1, 0.2, 0.3 };
 
-// The bunny spans about 0.16 units around (-0.02, 0.11, 0), seen from +Z.
-// Two points (one behind, so that N.L <= 0 happens), two directional
-// lights, a soft and a hard-edged spot whose cones' edges cross it.
-const std::vector<std::string> BunnyLights{ "--light", "point:0.15,0.25,0.2", "--light",
-  "point:-0.2,0.05,-0.3:0.3,0.3,0.6", "--light", "directional:-0.3,-0.5,-1:0.5,0.5,0.4", "--light",
-  "directional:1,0.2,0.1:0.2,0.4,0.2", "--light", "spot:-0.02,0.11,0.3:0,0,-1:4:3:0.6,0.5,1",
-  "--light", "spot:0.05,0.2,0.25:-0.3,-0.3,-1:6:0:1,0.3,0.3" };
-// The teapot spans 6.4 x 3.2 x 4 units from the origin up.
+// The teapot spans 6.4 x 3.2 x 4 units from the origin up. Two points (one
+// behind, so that N.L <= 0 happens), a directional light, a soft and a
+// hard-edged spot whose cones' edges cross it.
 const std::vector<std::string> TeapotLights{ "--light", "point:4,6,5", "--light",
   "point:-5,1,-4:0.4,0.2,0.2", "--light", "directional:0.3,-1,-0.5:0.5,0.6,0.5", "--light",
   "spot:0,8,0:0,-1,0:20:2:0.8,0.8,1", "--light", "spot:-6,3,6:1,-0.3,-1:6:0:1,0.4,0.2" };
@@ -67,11 +62,12 @@ std::vector<ProbeCase> Cases()
   {
     for (Reflection model : { Reflection::BlinnPhong, Reflection::Phong })
     {
-      ProbeCase c{ std::string("bunny_") + ToString(rule) + "_" + ToString(model), Bunny, rule,
+      // The fine teapot's 65,280 triangles, a few pixels each.
+      ProbeCase c{ std::string("fine_") + ToString(rule) + "_" + ToString(model), Fine, rule,
         { "--shading", ToString(rule), "--reflection", ToString(model), "--material", "gold",
-          "--zoom", "4" },
+          "--zoom", "3" },
         640, 480 };
-      c.Options.insert(c.Options.end(), BunnyLights.begin(), BunnyLights.end());
+      c.Options.insert(c.Options.end(), TeapotLights.begin(), TeapotLights.end());
       cases.push_back(c);
     }
     ProbeCase c{ std::string("teapot_orthographic_") + ToString(rule), Teapot, rule,
@@ -504,9 +500,9 @@ TEST(Probe, TextShowsTheNumbers)
     for (Reflection model : { Reflection::BlinnPhong, Reflection::Phong })
     {
       const bool blinn = model == Reflection::BlinnPhong;
-      std::vector<std::string> args{ Bunny, "--size", "160x120", "--shading", ToString(rule),
+      std::vector<std::string> args{ Fine, "--size", "160x120", "--shading", ToString(rule),
         "--reflection", ToString(model), "--background", Triple(Background) };
-      args.insert(args.end(), BunnyLights.begin(), BunnyLights.end());
+      args.insert(args.end(), TeapotLights.begin(), TeapotLights.end());
       std::string error;
       const std::vector<json> p = Probe(args, { { 80, 60 }, { 2, 2 } }, error);
       ASSERT_EQ(error, "");

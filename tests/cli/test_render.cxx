@@ -106,7 +106,7 @@ TEST(Render, IsDeterministic)
     std::string first;
     for (int run = 0; run < 2; ++run)
     {
-      const RunResult r = RunShadelab({ "render", TestMesh("stanford-bunny.ply").string(), "-o",
+      const RunResult r = RunShadelab({ "render", TestMesh("teapot-fine.ply").string(), "-o",
         (dir / name).string(), "--size", "320x240", "--light", "point:1,1,1:1,0.8,0.6", "--light",
         "directional:0,-1,-1:0.2,0.3,0.9" });
       ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
@@ -125,7 +125,7 @@ TEST(Render, IsDeterministic)
 TEST(Render, VerboseTimesEachPhaseWithItsPeakMemory)
 {
   TempDir dir;
-  const RunResult r = RunShadelab({ "render", TestMesh("stanford-bunny.ply").string(), "-o",
+  const RunResult r = RunShadelab({ "render", TestMesh("teapot-fine.ply").string(), "-o",
     (dir / "out.png").string(), "--size", "64x48", "-v" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_EQ(VerbosePhases(r.Stderr, "shadelab"),
@@ -140,7 +140,7 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
   TempDir dir;
   for (const char* name : { "flat.exr", "flat.png", "flat.tif" })
   {
-    std::vector<std::string> args = { "render", TestMesh("spot.obj").string(), "-o",
+    std::vector<std::string> args = { "render", TestMesh("teapot.obj").string(), "-o",
       (dir / name).string(), "--size", "64x64", "--shading", "none", "--kd", "0.5,0.25,2.5" };
     if (std::string(name) == "flat.tif")
     {
@@ -155,7 +155,7 @@ TEST(Render, FloatKeepsValuesAboveOneAndEightBitClamps)
   EXPECT_EQ(exr.Format, "float");
   EXPECT_EQ(tif.Format, "float");
   EXPECT_EQ(png.Format, "uint8");
-  // The centre of the picture is on the cow-like spot mesh.
+  // The centre of the picture is on the teapot.
   const size_t centre = (32 * 64 + 32) * 3;
   for (const Image* f : { &exr, &tif })
   {
@@ -183,13 +183,14 @@ TEST(Render, EightBitPictureIsTheFloatRenderQuantised)
 {
   TempDir dir;
   const std::vector<std::vector<std::string>> scenes = {
-    { TestMesh("spot-textured.obj").string(), "--size", "480x270", "--shading", "flat", "--zoom",
+    { TestMesh("teapot-textured.obj").string(), "--size", "480x270", "--shading", "flat", "--zoom",
       "1.6" },
-    { TestMesh("cow.obj").string(), "--size", "200x150", "--shading", "phong", "--edges",
+    { TestMesh("torus.obj").string(), "--size", "200x150", "--shading", "phong", "--edges",
       "--edge-color", "0.5,0.5,0.5", "--normal-glyphs", "--background", "0.5,0.5,0.5" },
-    { TestMesh("suzanne.obj").string(), "--size", "160x120", "--shading", "gouraud", "--ambient",
-      "3,3,3", "--background", "transparent" },
-    { TestMesh("suzanne.obj").string(), "--size", "100x80", "--shading", "flat", "--ssaa", "3" },
+    { TestMesh("teapot-quads.obj").string(), "--size", "160x120", "--shading", "gouraud",
+      "--ambient", "3,3,3", "--background", "transparent" },
+    { TestMesh("teapot-quads.obj").string(), "--size", "100x80", "--shading", "flat", "--ssaa",
+      "3" },
   };
   for (std::size_t s = 0; s < scenes.size(); ++s)
   {
@@ -232,7 +233,7 @@ TEST(Render, LitFloatPictureExceedsOneWhereTheLightIsStrong)
 {
   TempDir dir;
   const RunResult r =
-    RunShadelab({ "render", TestMesh("cow.obj").string(), "-o", (dir / "bright.exr").string(),
+    RunShadelab({ "render", TestMesh("torus.obj").string(), "-o", (dir / "bright.exr").string(),
       "--size", "96x96", "--shading", "phong", "--ambient", "4,4,4", "--ka", "1,1,1" });
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   const Image exr = ReadImage(dir / "bright.exr");
@@ -249,14 +250,14 @@ TEST(Render, PictureCarriesItsParameters)
   TempDir dir;
   for (const char* name : { "m.png", "m.exr", "m.jpg", "m.tif" })
   {
-    const RunResult r = RunShadelab({ "render", TestMesh("suzanne.obj").string(), "-o",
+    const RunResult r = RunShadelab({ "render", TestMesh("teapot-quads.obj").string(), "-o",
       (dir / name).string(), "--size", "64x48", "--shading", "gouraud", "--material", "brass",
       "--light", "spot:0,0,5:0,0,-1:30:2:1,0.5,0.5", "--orthographic" });
     ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
     const Image image = ReadImage(dir / name);
     for (const char* expected : { "\"shading\":\"gouraud\"", "\"name\":\"brass\"",
            "\"kind\":\"spot\"", "\"half_angle_deg\":30.0", "\"projection\":\"orthographic\"",
-           "\"parallel_scale\":", "\"shadelab\":\"", "--material brass", "suzanne.obj" })
+           "\"parallel_scale\":", "\"shadelab\":\"", "--material brass", "teapot-quads.obj" })
     {
       EXPECT_NE(image.Description.find(expected), std::string::npos)
         << name << " lacks " << expected << " in: " << image.Description;

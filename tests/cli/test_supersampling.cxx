@@ -12,7 +12,7 @@ using namespace shadelab_test;
 
 namespace
 {
-const std::string Mesh = TestMesh("spot.obj").string();
+const std::string Mesh = TestMesh("teapot.obj").string();
 
 // big averaged over n x n blocks, computed here on its own: the sum of a
 // block in double is exact (at most 64 floats of one picture's range), so

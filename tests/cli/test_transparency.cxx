@@ -9,7 +9,7 @@ using namespace shadelab_test;
 
 namespace
 {
-const std::string Mesh = TestMesh("spot.obj").string();
+const std::string Mesh = TestMesh("teapot.obj").string();
 
 Image Render(const TempDir& dir, const std::string& name, const std::string& background)
 {

@@ -2,12 +2,12 @@
 # scripts/guide-pictures remakes each picture it names into a folder of its
 # own, at the size of the one the guide shows (data/readme/), and names at
 # least the three it makes without ../shared/data.
-#   test_guide_pictures.sh SCRIPT SHADELAB COMMITTED_DIR
+#   test_guide_pictures.sh SCRIPT SHADELAB MESHES COMMITTED_DIR
 set -euo pipefail
-script=$1 shadelab=$2 committed=$3
+script=$1 shadelab=$2 meshes=$3 committed=$4
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-bash "$script" --out "$out/pictures" --program "$shadelab" >"$out/log"
+bash "$script" --out "$out/pictures" --program "$shadelab" --meshes "$meshes" >"$out/log"
 size() { # PNG: its IHDR's width and height
   python3 -c 'import struct, sys; print(*struct.unpack(">II", open(sys.argv[1], "rb").read(24)[16:24]))' "$1"
 }

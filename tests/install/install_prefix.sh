@@ -13,8 +13,8 @@ expected=(
   "${libdir#"$prefix"/}"/libshadelab_illumination.so
   include/shadelab/vtkShadelabMeshNormals.h include/shadelab/shadelabIllumination.h
   "${libdir#"$prefix"/}"/cmake/shadelab/shadelabConfig.cmake
-  share/shadelab/materials.json share/shadelab/scene.schema.json share/shadelab/spot.obj
-  share/shadelab/scenes/spot-lights.json
+  share/shadelab/materials.json share/shadelab/scene.schema.json share/shadelab/teapot.obj
+  share/shadelab/scenes/teapot-lights.json
 )
 [[ -n $python_dir ]] && expected+=("$python_dir/shadelab/__init__.py")
 for path in "${expected[@]}"; do

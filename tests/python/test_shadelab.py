@@ -27,19 +27,20 @@ def read(reader_class, name):
 class Readers(unittest.TestCase):
     def test_each_format_reads_triangles(self):
         for reader_class, name in [
-                (shadelab.vtkShadelabOBJReader, "suzanne.obj"),
-                (shadelab.vtkShadelabPLYReader, "stanford-bunny.ply"),
+                (shadelab.vtkShadelabOBJReader, "teapot-quads.obj"),
+                (shadelab.vtkShadelabPLYReader, "teapot-fine.ply"),
                 (shadelab.vtkShadelabSTLReader, "teapot.stl"),
-                (shadelab.vtkShadelabOFFReader, "bunny-libigl.off"),
-                (shadelab.vtkShadelabGLTFReader, "box.gltf"),
-                (shadelab.vtkShadelabMeshReader, "suzanne.obj")]:
+                (shadelab.vtkShadelabOFFReader, "teapot.off"),
+                (shadelab.vtkShadelabGLTFReader,
+                 "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf"),
+                (shadelab.vtkShadelabMeshReader, "teapot-quads.obj")]:
             with self.subTest(reader=reader_class.__name__):
                 self.assertGreater(read(reader_class, name).GetOutput().GetNumberOfPolys(), 0)
 
 
 class Normals(unittest.TestCase):
     def test_one_unit_normal_per_point(self):
-        reader = read(shadelab.vtkShadelabMeshReader, "spot.obj")
+        reader = read(shadelab.vtkShadelabMeshReader, "teapot.obj")
         normals = shadelab.vtkShadelabMeshNormals()
         normals.SetInputConnection(reader.GetOutputPort())
         self.assertTrue(normals.SetWeightingByName("angle"))

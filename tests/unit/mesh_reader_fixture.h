@@ -24,7 +24,10 @@ namespace shadelab::test
 {
 namespace fs = std::filesystem;
 
+/** The meshes shadelab makes itself (meshes/). */
 inline const fs::path TestMeshes = fs::path(SHADELAB_TEST_MESHES);
+/** Debian's assimp-testmodels. */
+inline const fs::path DebianModels = fs::path(SHADELAB_DEBIAN_MODELS);
 
 struct ReadResult
 {

@@ -41,7 +41,7 @@ using namespace shadelab;
 vtkSmartPointer<vtkPolyData> BunnyAndHardTriangles(int type, bool ids32)
 {
   vtkNew<vtkShadelabMeshReader> reader;
-  reader->SetFileName((fs::path(SHADELAB_TEST_MESHES) / "stanford-bunny.ply").c_str());
+  reader->SetFileName((fs::path(SHADELAB_TEST_MESHES) / "teapot-fine.ply").c_str());
   EXPECT_TRUE(reader->GetExecutive()->Update());
   vtkPolyData* bunny = reader->GetOutput();
   auto points = vtkSmartPointer<vtkPoints>::New();

@@ -1,5 +1,5 @@
-// The glTF reader: the real files in tests/data/meshes (Khronos' samples and
-// assimp's conversions), documents built here (node transforms, strips and
+// The glTF reader: Khronos' BoxTextured in its three forms (from Debian's
+// assimp-testmodels), documents built here (node transforms, strips and
 // fans, attributes, parts and materials, the three ways of storing
 // buffers), and bad input of every kind.
 #include "mesh_reader_fixture.h"
@@ -289,12 +289,18 @@ std::set<std::array<float, 6>> PointsWithNormals(vtkPolyData* mesh)
 // ---------------------------------------------------------------------------
 // The real files
 
+// Khronos' BoxTextured as Debian's assimp-testmodels hold it: the document
+// with its buffer and image as files, as data URIs, and as GLB.
+const fs::path BoxTextured = DebianModels / "glTF2";
+const char* const BoxTexturedForms[] = { "BoxTextured-glTF/BoxTextured.gltf",
+  "BoxTextured-glTF-Embedded/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb" };
+
 TEST_F(MeshReaders, KhronosBoxIsTurnedByItsParentNodesMatrix)
 {
   // The buffer's first vertex is (-0.5, -0.5, 0.5) with normal (0, 0, 1);
   // the parent's matrix (columns x, -z, y) turns +Y up into +Z up:
   // (x, y, z) -> (x, z, -y).
-  const ReadResult result = Read(TestMeshes / "box.gltf");
+  const ReadResult result = Read(BoxTextured / BoxTexturedForms[0]);
   ASSERT_TRUE(result.Ok) << result.Error;
   ExpectTriangleMesh(result.Mesh);
   EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 24);
@@ -303,29 +309,57 @@ TEST_F(MeshReaders, KhronosBoxIsTurnedByItsParentNodesMatrix)
   ExpectNear(Tuple3(result.Mesh->GetPointData()->GetNormals(), 0), { 0, 1, 0 });
   ExpectWindingAgreesWithNormals(result.Mesh);
   EXPECT_EQ(Parts(result.Mesh), std::vector<int>(12, 0));
-  EXPECT_EQ(MaterialNames(result.Mesh), std::vector<std::string>{ "" });
+  EXPECT_EQ(MaterialNames(result.Mesh), std::vector<std::string>{ "Texture" });
   EXPECT_EQ(MaterialIndices(result.Mesh), std::vector<int>{ 0 });
 }
 
-TEST_F(MeshReaders, AssimpsGltfAndGlbOfTheBoxGiveKhronosBox)
+TEST_F(MeshReaders, TheBoxAsFilesDataUrisAndGlbIsOneMesh)
 {
-  const ReadResult khronos = Read(TestMeshes / "box.gltf");
-  ASSERT_TRUE(khronos.Ok) << khronos.Error;
-  for (const char* name : { "box-assimp.gltf", "box-assimp.glb" })
+  const ReadResult files = Read(BoxTextured / BoxTexturedForms[0]);
+  ASSERT_TRUE(files.Ok) << files.Error;
+  for (const char* name : { BoxTexturedForms[1], BoxTexturedForms[2] })
   {
     SCOPED_TRACE(name);
-    const ReadResult result = Read(TestMeshes / name);
+    const ReadResult result = Read(BoxTextured / name);
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 12);
-    EXPECT_EQ(PointsWithNormals(result.Mesh), PointsWithNormals(khronos.Mesh));
+    EXPECT_EQ(PointsWithNormals(result.Mesh), PointsWithNormals(files.Mesh));
     ExpectWindingAgreesWithNormals(result.Mesh);
-    EXPECT_EQ(MaterialNames(result.Mesh), std::vector<std::string>{ "material" });
+    EXPECT_EQ(MaterialNames(result.Mesh), MaterialNames(files.Mesh));
   }
 }
 
-TEST_F(MeshReaders, KhronosSimpleMeshesDrawsItsMeshOncePerNode)
+// One mesh on two nodes, the second moved by 1 along x; positions and
+// normals interleaved in one bufferView (byteStride 24); `scenes` without
+// `scene`; CRLF line ends: as Khronos' SimpleMeshes sample is made.
+TEST_F(MeshReaders, AMeshOnTwoNodesIsDrawnOncePerNode)
 {
-  const ReadResult result = Read(TestMeshes / "simple-meshes.gltf");
+  Gltf gltf;
+  std::string interleaved;
+  const float triangle[3][6] = { { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, 1 }, { 0, 1, 0, 0, 0, 1 } };
+  for (const auto& vertex : triangle)
+  {
+    for (const float x : vertex)
+    {
+      Put(interleaved, x);
+    }
+  }
+  const int view = gltf.View(interleaved, 24);
+  const int position = gltf.Accessor(view, Float, 3, "VEC3");
+  const int normal = gltf.Accessor(view, Float, 3, "VEC3");
+  gltf.Doc["accessors"][normal]["byteOffset"] = 12;
+  Json primitive = Primitive(position);
+  primitive["attributes"]["NORMAL"] = normal;
+  const int mesh = gltf.Mesh({ primitive });
+  const int first = gltf.Node({ { "mesh", mesh } });
+  const int second = gltf.Node({ { "mesh", mesh }, { "translation", { 1, 0, 0 } } });
+  gltf.Doc["scenes"] = Json::array({ { { "nodes", { first, second } } } });
+  std::string text;
+  for (const char c : gltf.DataUri())
+  {
+    text += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  }
+  const ReadResult result = Read(this->Write("simple-meshes.gltf", text));
   ASSERT_TRUE(result.Ok) << result.Error;
   ExpectTriangleMesh(result.Mesh);
   ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 6);
@@ -333,7 +367,9 @@ TEST_F(MeshReaders, KhronosSimpleMeshesDrawsItsMeshOncePerNode)
   {
     const auto first = Point(result.Mesh, i);
     ExpectNear(Point(result.Mesh, i + 3), { first[0] + 1, first[1], first[2] });
+    ExpectNear(Tuple3(result.Mesh->GetPointData()->GetNormals(), i), { 0, 0, 1 });
   }
+  ExpectWindingAgreesWithNormals(result.Mesh);
   EXPECT_EQ(Parts(result.Mesh), (std::vector<int>{ 0, 1 }));
   EXPECT_EQ(MaterialNames(result.Mesh), (std::vector<std::string>{ "", "" }));
   EXPECT_EQ(MaterialIndices(result.Mesh), (std::vector<int>{ -1, -1 }));

@@ -102,15 +102,15 @@ TEST_F(MeshReaders, FileBytesAreTheFileInItsOwnSize)
 // ---------------------------------------------------------------------------
 // The test meshes
 
-TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
+TEST_F(MeshReaders, EveryMadeMeshLoadsWithItsTriangleCount)
 {
-  // data/README.md; suzanne's 500 faces are 468 quads and 32 triangles.
-  const std::vector<std::pair<std::string, vtkIdType>> expected = { { "cow.obj", 5804 },
-    { "fandisk.obj", 12946 }, { "spot.obj", 5856 }, { "stanford-bunny.obj", 69451 },
-    { "stanford-bunny.ply", 69451 }, { "suzanne.obj", 2 * 468 + 32 }, { "teapot.obj", 6320 },
-    { "teapot.stl", 6320 }, { "bunny-libigl.off", 6966 }, { "box.gltf", 12 },
-    { "box-assimp.gltf", 12 }, { "box-assimp.glb", 12 }, { "simple-meshes.gltf", 2 },
-    { "spot-textured.obj", 5856 }, { "box-textured.gltf", 12 }, { "box-textured.glb", 12 } };
+  // meshes/make_meshes_main.cxx: the teapot's 32 patches at 10 x 10 cells
+  // less the 80 cells that close to a point (6,320); at 32 x 32 less 256;
+  // at 6 x 6 as 1,104 quads and 48 triangles; the torus 12 x 24 cells.
+  const std::vector<std::pair<std::string, vtkIdType>> expected = { { "teapot.obj", 6320 },
+    { "teapot.stl", 6320 }, { "teapot.off", 6320 }, { "teapot-textured.obj", 6320 },
+    { "teapot-fine.obj", 65280 }, { "teapot-fine.ply", 65280 },
+    { "teapot-quads.obj", 2 * 1104 + 48 }, { "torus.obj", 576 } };
   std::set<std::string> covered;
   for (const auto& [name, triangles] : expected)
   {
@@ -126,27 +126,26 @@ TEST_F(MeshReaders, EveryTestMeshLoadsWithTheReadmesTriangleCount)
   for (const auto& entry : fs::directory_iterator(TestMeshes))
   {
     const fs::path extension = entry.path().extension();
-    if (entry.path().filename() == "README.md" || extension == ".bin" || extension == ".mtl" ||
-      extension == ".png")
+    if (extension == ".mtl" || extension == ".png")
     {
-      continue; // the meshes' sources and terms; a glTF's buffer, materials, textures
+      continue; // materials, textures
     }
     EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
       << entry.path() << " is not in this test's table";
   }
 }
 
-TEST_F(MeshReaders, SuzannesQuadsBecomeTwoTrianglesAndItsNormalsAreKept)
+TEST_F(MeshReaders, QuadsBecomeTwoTrianglesAndTheFilesNormalsAreKept)
 {
-  const fs::path path = TestMeshes / "suzanne.obj";
+  const fs::path path = TestMeshes / "teapot-quads.obj";
   std::size_t quads = 0, triangles = 0;
   for (const std::size_t corners : StatementSizes(path, "f"))
   {
     quads += corners == 4;
     triangles += corners == 3;
   }
-  EXPECT_EQ(quads, 468u);
-  EXPECT_EQ(quads + triangles, 500u);
+  EXPECT_EQ(quads, 1104u);
+  EXPECT_EQ(quads + triangles, 1152u);
 
   const ReadResult result = Read(path);
   ASSERT_TRUE(result.Ok) << result.Error;
@@ -159,19 +158,19 @@ TEST_F(MeshReaders, SuzannesQuadsBecomeTwoTrianglesAndItsNormalsAreKept)
   }
 }
 
-TEST_F(MeshReaders, TheBunnyObjHasNoNormals)
+TEST_F(MeshReaders, AnObjWithoutVnHasNoNormals)
 {
-  const fs::path path = TestMeshes / "stanford-bunny.obj";
+  const fs::path path = TestMeshes / "teapot-fine.obj";
   EXPECT_TRUE(StatementSizes(path, "vn").empty());
   const ReadResult result = Read(path);
   ASSERT_TRUE(result.Ok) << result.Error;
   EXPECT_EQ(result.Mesh->GetPointData()->GetNormals(), nullptr);
 }
 
-TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
+TEST_F(MeshReaders, TheSameMeshAsObjAndPlyAgrees)
 {
-  const ReadResult obj = Read(TestMeshes / "stanford-bunny.obj");
-  const ReadResult ply = Read(TestMeshes / "stanford-bunny.ply");
+  const ReadResult obj = Read(TestMeshes / "teapot-fine.obj");
+  const ReadResult ply = Read(TestMeshes / "teapot-fine.ply");
   ASSERT_TRUE(obj.Ok && ply.Ok) << obj.Error << ply.Error;
   EXPECT_EQ(obj.Mesh->GetNumberOfPolys(), ply.Mesh->GetNumberOfPolys());
   EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), ply.Mesh->GetNumberOfPoints());
@@ -200,9 +199,9 @@ TEST_F(MeshReaders, TheBunnyObjAndPlyAgree)
 
 TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
 {
-  // teapot.obj repeats positions along the seams of its Bezier patches
-  // (3644 vertices at 3241 places); the STL has no indices, so welding can
-  // only give the distinct places, each as the float the STL stores.
+  // teapot.obj's 3,241 places are 3,864 points once its vt split them
+  // where patches meet; the STL has no indices, so welding can only give
+  // the distinct places, each as the float the STL stores.
   const ReadResult obj = Read(TestMeshes / "teapot.obj");
   const ReadResult stl = Read(TestMeshes / "teapot.stl");
   ASSERT_TRUE(obj.Ok && stl.Ok) << obj.Error << stl.Error;
@@ -213,7 +212,7 @@ TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
     obj.Mesh->GetPoint(i, p);
     places.insert({ static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]) });
   }
-  EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), 3644);
+  EXPECT_EQ(obj.Mesh->GetNumberOfPoints(), 3864); // split by vt where patches meet
   EXPECT_EQ(stl.Mesh->GetNumberOfPoints(), static_cast<vtkIdType>(places.size()));
   EXPECT_EQ(stl.Mesh->GetNumberOfPolys(), obj.Mesh->GetNumberOfPolys());
 }
@@ -221,12 +220,12 @@ TEST_F(MeshReaders, TheTeapotStlWeldsToTheObjsDistinctPositions)
 TEST_F(MeshReaders, TheFormatReadersWorkAloneAndPrintTheirFileName)
 {
   vtkNew<vtkShadelabPLYReader> reader;
-  const ReadResult result = ReadWith(reader, TestMeshes / "stanford-bunny.ply");
+  const ReadResult result = ReadWith(reader, TestMeshes / "teapot-fine.ply");
   ASSERT_TRUE(result.Ok) << result.Error;
-  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 69451);
+  EXPECT_EQ(result.Mesh->GetNumberOfPolys(), 65280);
   std::ostringstream printed;
   reader->Print(printed);
-  EXPECT_NE(printed.str().find("FileName: " + (TestMeshes / "stanford-bunny.ply").string()),
+  EXPECT_NE(printed.str().find("FileName: " + (TestMeshes / "teapot-fine.ply").string()),
     std::string::npos);
 }
 
@@ -944,7 +943,7 @@ TEST_F(MeshReaders, UnknownExtensions)
 TEST_F(MeshReaders, AFailedReadLeavesNoMeshFromBefore)
 {
   vtkNew<vtkShadelabMeshReader> reader;
-  ASSERT_TRUE(ReadWith(reader, TestMeshes / "cow.obj").Ok);
+  ASSERT_TRUE(ReadWith(reader, TestMeshes / "torus.obj").Ok);
   const ReadResult result = ReadWith(reader, this->Write("bad.obj", "v 0 0 0\nf 1 2 3\n"));
   EXPECT_FALSE(result.Ok);
   EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 0);

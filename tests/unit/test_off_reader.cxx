@@ -46,9 +46,9 @@ std::array<double, 4> Tuple4(vtkDataArray* array, vtkIdType i)
   return tuple;
 }
 
-TEST_F(MeshReaders, TheLibiglBunnyOffKeepsTheFilesVerticesAndFaces)
+TEST_F(MeshReaders, AnOffKeepsTheFilesVerticesAndFaces)
 {
-  const fs::path path = TestMeshes / "bunny-libigl.off";
+  const fs::path path = TestMeshes / "teapot.off";
   std::ifstream in(path);
   std::string keyword;
   std::size_t vertices = 0, faces = 0, edges = 0;

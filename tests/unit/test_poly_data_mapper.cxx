@@ -92,7 +92,7 @@ std::vector<FloatImage> Render(vtkPolyData* mesh, std::size_t& packedBytes)
 TEST(PolyDataMapper, DrawsAsVtksWithoutItsCopyOfTheVertexBuffers)
 {
   vtkNew<vtkShadelabMeshReader> reader;
-  reader->SetFileName((std::filesystem::path(SHADELAB_TEST_MESHES) / "stanford-bunny.ply").c_str());
+  reader->SetFileName((std::filesystem::path(SHADELAB_TEST_MESHES) / "teapot-fine.ply").c_str());
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(reader->GetOutputPort());
   ASSERT_TRUE(normals->GetExecutive()->Update());

@@ -22,8 +22,8 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <iterator>
 #include <string>
@@ -263,34 +263,35 @@ TEST_F(MeshReaders, BadMtlMapIsAnErrorNamingTheLibraryAndLine)
 // ---------------------------------------------------------------------------
 // The real textured files
 
-// spot.obj has vt at its texture's seams (3,225 distinct v/vt pairs on its
-// 2,930 vertices, counted from the file); spot-textured.obj is the same
-// mesh with a library whose material maps spot_texture.png.
-TEST_F(MeshReaders, SpotsTextureCoordinatesAndTexture)
+// teapot.obj has vt per patch, split where patches meet (3,864 distinct
+// v/vt pairs on its 3,241 vertices, counted from the file);
+// teapot-textured.obj is the same mesh with a library whose material maps
+// teapot-texture.png.
+TEST_F(MeshReaders, TheTeapotsTextureCoordinatesAndTexture)
 {
-  for (const char* name : { "spot.obj", "spot-textured.obj" })
+  for (const char* name : { "teapot.obj", "teapot-textured.obj" })
   {
     SCOPED_TRACE(name);
     const ReadResult result = Read(TestMeshes / name);
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_TRUE(result.Warnings.empty());
     ExpectTriangleMesh(result.Mesh);
-    EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 3225);
+    EXPECT_EQ(result.Mesh->GetNumberOfPoints(), 3864);
     const std::vector<vtkIdType> fileVertices = FileVertices(result.Mesh);
-    ASSERT_EQ(fileVertices.size(), 3225u);
-    // The first face, "f 739/1 735/2 736/3", and vt 1 to 3 of the file.
+    ASSERT_EQ(fileVertices.size(), 3864u);
+    // The first face, "f 1/1 2/2 13/13", and vt 1, 2 and 13 of the file.
     const auto first = Triangles(result.Mesh)[0];
-    EXPECT_EQ(fileVertices[first[0]], 738);
-    EXPECT_EQ(fileVertices[first[1]], 734);
-    EXPECT_EQ(fileVertices[first[2]], 735);
-    EXPECT_EQ(St(result.Mesh, first[0]), (std::pair<double, double>(0.800375f, 0.667457f)));
-    EXPECT_EQ(St(result.Mesh, first[1]), (std::pair<double, double>(0.789584f, 0.668215f)));
-    EXPECT_EQ(St(result.Mesh, first[2]), (std::pair<double, double>(0.799923f, 0.663933f)));
+    EXPECT_EQ(fileVertices[first[0]], 0);
+    EXPECT_EQ(fileVertices[first[1]], 1);
+    EXPECT_EQ(fileVertices[first[2]], 12);
+    EXPECT_EQ(St(result.Mesh, first[0]), (std::pair<double, double>(0.0f, 1.0f)));
+    EXPECT_EQ(St(result.Mesh, first[1]), (std::pair<double, double>(0.1f, 1.0f)));
+    EXPECT_EQ(St(result.Mesh, first[2]), (std::pair<double, double>(0.1f, 0.9f)));
   }
-  const ReadResult textured = Read(TestMeshes / "spot-textured.obj");
+  const ReadResult textured = Read(TestMeshes / "teapot-textured.obj");
   ASSERT_TRUE(textured.Ok) << textured.Error;
   EXPECT_EQ(Sources(textured.Mesh),
-    (std::vector<std::string>{ (TestMeshes / "spot_texture.png").lexically_normal().string() }));
+    (std::vector<std::string>{ (TestMeshes / "teapot-texture.png").lexically_normal().string() }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0 }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ 0 }));
   EXPECT_EQ(Ints(textured.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ -1 }));
@@ -298,23 +299,28 @@ TEST_F(MeshReaders, SpotsTextureCoordinatesAndTexture)
     (std::vector<int>{ shadelab::gl::Repeat }));
 }
 
-// Khronos' BoxTextured: one material whose baseColorTexture is
-// CesiumLogoFlat.png, sampled with REPEAT, LINEAR and NEAREST_MIPMAP_LINEAR;
-// a file beside the .gltf, the bytes of a bufferView in the .glb.
+// Khronos' BoxTextured, as Debian's assimp-testmodels hold it.
+const fs::path BoxTextured = DebianModels / "glTF2";
+
+// BoxTextured: one dielectric material whose baseColorTexture is
+// CesiumLogoFlat.png, sampled LINEAR and NEAREST_MIPMAP_LINEAR; a file
+// beside the .gltf, the bytes of a bufferView in the .glb.
 TEST_F(MeshReaders, BoxTexturedsTextureInBothForms)
 {
-  const std::string png = FileBytes(TestMeshes / "CesiumLogoFlat.png");
-  for (const char* name : { "box-textured.gltf", "box-textured.glb" })
+  const std::string png = FileBytes(BoxTextured / "BoxTextured-glTF/CesiumLogoFlat.png");
+  for (const char* name :
+    { "BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb" })
   {
     SCOPED_TRACE(name);
-    const ReadResult result = Read(TestMeshes / name);
+    const ReadResult result = Read(BoxTextured / name);
     ASSERT_TRUE(result.Ok) << result.Error;
     EXPECT_TRUE(result.Warnings.empty());
     ExpectTriangleMesh(result.Mesh);
     ASSERT_EQ(result.Mesh->GetNumberOfPoints(), 24);
     const bool binary = fs::path(name).extension() == ".glb";
     EXPECT_EQ(Sources(result.Mesh),
-      (std::vector<std::string>{ binary ? "" : (TestMeshes / "CesiumLogoFlat.png").string() }));
+      (std::vector<std::string>{
+        binary ? "" : (BoxTextured / "BoxTextured-glTF/CesiumLogoFlat.png").string() }));
     auto* bytes =
       vtkUnsignedCharArray::SafeDownCast(result.Mesh->GetFieldData()->GetArray("TextureBytes0"));
     ASSERT_EQ(bytes != nullptr, binary);
@@ -326,10 +332,14 @@ TEST_F(MeshReaders, BoxTexturedsTextureInBothForms)
     }
     EXPECT_EQ(Ints(result.Mesh, shadelab::PartKdTextureArrayName), (std::vector<int>{ 0 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::PartKaTextureArrayName), (std::vector<int>{ 0 }));
-    // Metallic 1 by glTF's default: the texture colours ks too.
-    EXPECT_EQ(Ints(result.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ 0 }));
-    EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapSArrayName), (std::vector<int>{ 10497 }));
-    EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapTArrayName), (std::vector<int>{ 10497 }));
+    // Metallic 0: the texture does not colour ks.
+    EXPECT_EQ(Ints(result.Mesh, shadelab::PartKsTextureArrayName), (std::vector<int>{ -1 }));
+    // The .gltf's sampler: MIRRORED_REPEAT along s, CLAMP_TO_EDGE along t;
+    // the .glb's (an older export): REPEAT both ways.
+    EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapSArrayName),
+      (std::vector<int>{ binary ? 10497 : 33648 }));
+    EXPECT_EQ(Ints(result.Mesh, shadelab::TextureWrapTArrayName),
+      (std::vector<int>{ binary ? 10497 : 33071 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::TextureMagFilterArrayName), (std::vector<int>{ 9729 }));
     EXPECT_EQ(Ints(result.Mesh, shadelab::TextureMinFilterArrayName), (std::vector<int>{ 9986 }));
     // TEXCOORD_0's first two elements, (6, 0) and (5, 0), with t turned over.
@@ -349,14 +359,14 @@ protected:
     MeshReaders::SetUp();
     for (const char* file : { "BoxTextured0.bin", "CesiumLogoFlat.png" })
     {
-      fs::copy_file(TestMeshes / file, this->Dir / file);
+      fs::copy_file(BoxTextured / "BoxTextured-glTF" / file, this->Dir / file);
     }
   }
 
-  // box-textured.gltf changed by `edit`, read from the test's folder.
+  // BoxTextured.gltf changed by `edit`, read from the test's folder.
   ReadResult ReadEdited(const std::function<void(Json&)>& edit)
   {
-    Json doc = Json::parse(FileBytes(TestMeshes / "box-textured.gltf"));
+    Json doc = Json::parse(FileBytes(BoxTextured / "BoxTextured-glTF/BoxTextured.gltf"));
     edit(doc);
     return Read(this->Write("edited.gltf", doc.dump()));
   }
@@ -364,7 +374,7 @@ protected:
   void ExpectEditError(
     const std::function<void(Json&)>& edit, std::initializer_list<const char*> keyWords)
   {
-    Json doc = Json::parse(FileBytes(TestMeshes / "box-textured.gltf"));
+    Json doc = Json::parse(FileBytes(BoxTextured / "BoxTextured-glTF/BoxTextured.gltf"));
     edit(doc);
     this->ExpectError("bad.gltf", doc.dump(), keyWords);
   }

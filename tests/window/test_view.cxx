@@ -23,8 +23,8 @@ TEST(View, TheWindowShowsWhatRenderRenders)
   ASSERT_EQ(shown.Height, H);
   TempDir dir;
   const RunResult render =
-    RunShadelab({ "render", TestMesh("spot.obj").string(), "-o", (dir / "r.png").string(), "--size",
-      std::to_string(W) + "x" + std::to_string(H), "--camera-position", "3.9,1.5,-2.2" });
+    RunShadelab({ "render", TestMesh("teapot.obj").string(), "-o", (dir / "r.png").string(),
+      "--size", std::to_string(W) + "x" + std::to_string(H), "--camera-position", "5,5,9" });
   ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
   const Image rendered = ReadImage(dir / "r.png");
   // The same shaders on the same Mesa (llvmpipe through GLX here, through
@@ -59,7 +59,7 @@ TEST(View, ATextureShowsAsRenderRendersIt)
   const Image shown = viewer.Screenshot();
   std::vector<std::string> args{ "render", (dir / "square.off").string(), "-o",
     (dir / "r.png").string(), "--size", std::to_string(W) + "x" + std::to_string(H),
-    "--camera-position", "3.9,1.5,-2.2" };
+    "--camera-position", "5,5,9" };
   args.insert(args.end(), texture.begin(), texture.end());
   const RunResult render = RunShadelab(args);
   ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
@@ -92,7 +92,7 @@ TEST(View, CopyCommandAndSaveSceneMakeThePictureTheViewShows)
   TempDir dir;
   command.replace(0, std::string("shadelab").size(), SHADELAB_BINARY);
   ASSERT_EQ(shadelab_test::Run("cd " + dir.path().string() + " && " + command), 0) << command;
-  const Image rendered = ReadImage(dir / "spot.png");
+  const Image rendered = ReadImage(dir / "teapot.png");
   // As in TheWindowShowsWhatRenderRenders: the same shaders on the same
   // Mesa, at most 1 step of rounding apart.
   const Change change = Compare(shown, rendered, 1);
@@ -103,12 +103,12 @@ TEST(View, CopyCommandAndSaveSceneMakeThePictureTheViewShows)
   const std::string scene = viewer.Await("shadelab: scene file ");
   ASSERT_FALSE(scene.empty()) << viewer.Stderr();
   TempDir sceneDir;
-  // Its output, spot.png, goes into the current folder.
+  // Its output, teapot.png, goes into the current folder.
   ASSERT_EQ(shadelab_test::Run("cd " + sceneDir.path().string() + " && " + SHADELAB_BINARY +
               " render --scene " + scene),
     0)
     << Slurp(scene);
-  EXPECT_LE(Compare(shown, ReadImage(sceneDir / "spot.png"), 1).Largest, 1) << Slurp(scene);
+  EXPECT_LE(Compare(shown, ReadImage(sceneDir / "teapot.png"), 1).Largest, 1) << Slurp(scene);
 }
 
 TEST(View, RuleKeysSwitchTheRule)
@@ -289,11 +289,11 @@ TEST(View, RResetsTheCamera)
 
 TEST(View, AScreenshotThatCannotBeWrittenIsReportedAndLeavesNothing)
 {
-  // 16 kB: stdout and stderr fit, a screenshot of spot does not.
+  // 16 kB: stdout and stderr fit, a screenshot of the teapot does not.
   Viewer viewer({}, std::to_string(W) + "x" + std::to_string(H), 16384);
   ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
   viewer.Keys({ "p" });
-  const std::string line = "shadelab: error: shadelab-spot-001.png: cannot write: File too large\n";
+  const std::string line = "shadelab: error: shadelab-teapot-001.png: cannot write: File too large\n";
   const auto deadline = std::chrono::steady_clock::now() + 30s;
   while (
     viewer.Stderr().find(line) == std::string::npos && std::chrono::steady_clock::now() < deadline)

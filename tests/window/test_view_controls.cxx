@@ -80,9 +80,9 @@ std::set<std::string> Changed(
 ViewOptions SpotView(Shading rule)
 {
   ViewOptions options;
-  options.Scene.Mesh = TestMesh("spot.obj").string();
+  options.Scene.Mesh = TestMesh("teapot.obj").string();
   options.Scene.Size = { 240, 180 };
-  options.Scene.CameraPosition = Vec3{ 3.9, 1.5, -2.2 };
+  options.Scene.CameraPosition = Vec3{ 5, 5, 9 };
   options.Scene.ShadingRule = rule;
   return options;
 }
@@ -142,7 +142,7 @@ std::set<int> LinesWith(const std::string& source, const std::vector<std::string
 std::array<double, 2> Highlight(const Inspector& inspector, const TempDir& dir)
 {
   const std::filesystem::path png = dir / "highlight.png";
-  std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o", png.string() };
+  std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o", png.string() };
   // Without the edges and glyphs, whose lines are as bright as the light.
   for (const std::string& option : SceneArguments(inspector.ShownScene()))
   {
@@ -412,7 +412,7 @@ TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
     // What `render --dump-shaders` writes for the picture the view shows
     // (in floats: an 8-bit file's program ends with the capture's
     // quantisation step, which the window leaves to its framebuffer).
-    std::vector<std::string> args{ "render", TestMesh("spot.obj").string(), "-o",
+    std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o",
       (dir / "picture.exr").string(), "--dump-shaders", dir.path().string() };
     const std::vector<std::string> scene = SceneArguments(inspector.ShownScene());
     args.insert(args.end(), scene.begin(), scene.end());

@@ -159,9 +159,9 @@ void Click(vtkRenderWindowInteractor* mouse, int x, int y, bool control, int dx 
 TEST(Probe, CtrlClickExplainsThePixelAsTheCommandLineDoesWithArrowsAlongNLH)
 {
   ViewOptions options;
-  options.Scene.Mesh = TestMesh("spot.obj").string();
+  options.Scene.Mesh = TestMesh("teapot.obj").string();
   options.Scene.Size = { 240, 180 };
-  options.Scene.CameraPosition = Vec3{ 3.9, 1.5, -2.2 };
+  options.Scene.CameraPosition = Vec3{ 5, 5, 9 };
   // A light away from the camera, so that L, H and N point three ways.
   Light light;
   light.Position = { 3, 4, 1 };

@@ -39,7 +39,7 @@ std::unique_ptr<QApplication> MakeApplication()
 ViewOptions SpotView()
 {
   ViewOptions options;
-  options.Scene.Mesh = TestMesh("spot.obj").string();
+  options.Scene.Mesh = TestMesh("teapot.obj").string();
   return options;
 }
 

@@ -108,7 +108,7 @@ Viewer::Viewer(const std::vector<std::string>& args, const std::string& size, rl
   : Title("shadelab - " + mesh.filename().string())
 {
   std::vector<std::string> words{ SHADELAB_BINARY, "view", mesh.string(), "--size", size,
-    "--camera-position", "3.9,1.5,-2.2" };
+    "--camera-position", "5,5,9" };
   words.insert(words.end(), args.begin(), args.end());
   this->Pid = fork();
   if (this->Pid == 0)

@@ -34,7 +34,8 @@ class Viewer
 public:
   explicit Viewer(const std::vector<std::string>& args,
     const std::string& size = std::to_string(W) + "x" + std::to_string(H),
-    rlim_t fileSizeLimit = RLIM_INFINITY, const std::filesystem::path& mesh = TestMesh("spot.obj"));
+    rlim_t fileSizeLimit = RLIM_INFINITY,
+    const std::filesystem::path& mesh = TestMesh("teapot.obj"));
   ~Viewer();
 
   bool HasWindow() const { return !this->Window.empty(); }

@@ -18,7 +18,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iostream>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <string>
 #include <utility>
@@ -147,6 +149,42 @@ private:
   bool AllowOutside;
 };
 
+// assimp's bundled parsers (OpenDDL's, for OpenGEX) write some messages
+// straight to std::cerr and std::cout rather than to assimp's logger: those
+// streams go nowhere while assimp reads, so that shadelab's stderr stays
+// its one line per problem. A mutex: two reads at once must not restore
+// each other's streams.
+class SilencedStandardStreams
+{
+public:
+  SilencedStandardStreams()
+    : Lock(Mutex)
+    , OutState(std::cout.rdstate())
+    , ErrState(std::cerr.rdstate())
+    , Out(std::cout.rdbuf(nullptr))
+    , Err(std::cerr.rdbuf(nullptr))
+  {
+  }
+  ~SilencedStandardStreams()
+  {
+    // A write into no buffer set badbit: the streams' states as they were.
+    std::cout.rdbuf(this->Out);
+    std::cerr.rdbuf(this->Err);
+    std::cout.clear(this->OutState);
+    std::cerr.clear(this->ErrState);
+  }
+  SilencedStandardStreams(const SilencedStandardStreams&) = delete;
+  SilencedStandardStreams& operator=(const SilencedStandardStreams&) = delete;
+
+private:
+  static std::mutex Mutex;
+  std::lock_guard<std::mutex> Lock;
+  std::ios_base::iostate OutState, ErrState;
+  std::streambuf* Out;
+  std::streambuf* Err;
+};
+std::mutex SilencedStandardStreams::Mutex;
+
 // assimp's error, which may run over lines and end in one: its first line.
 std::string FirstLine(const char* text)
 {
@@ -173,12 +211,12 @@ void vtkShadelabAssimpReader::ReadMesh(const char* fileName, vtkPolyData* triang
   // The importer owns its IO system and deletes it.
   auto* io = new CheckedIOSystem(fileName, ReadFileBytes(fileName), this->AllowOutsideReferences);
   importer.SetIOHandler(io);
-  const aiScene* scene = importer.ReadFile(fileName,
-    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-      aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices);
-  for (const std::string& warning : io->Warnings)
+  const aiScene* scene = nullptr;
   {
-    vtkWarningMacro(<< warning);
+    const SilencedStandardStreams silence;
+    scene = importer.ReadFile(fileName,
+      aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+        aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices);
   }
   if (!scene)
   {
@@ -188,11 +226,16 @@ void vtkShadelabAssimpReader::ReadMesh(const char* fileName, vtkPolyData* triang
   shadelab::AssimpMesh mesh =
     shadelab::ConvertAssimpScene(*scene, fileName, this->ReadNormals, this->AllowOutsideReferences);
   importer.FreeScene(); // the copy is made: assimp's memory goes before VTK's grows
+  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh.Mesh)), triangles);
+  shadelab::AddPartMaterials(mesh.Parts, triangles);
+  shadelab::AddTextures(mesh.Textures, triangles);
+  // Warnings only of a mesh that was read: a refused file is its one error.
+  for (const std::string& warning : io->Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
   for (const std::string& warning : mesh.Warnings)
   {
     vtkWarningMacro(<< warning);
   }
-  shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh.Mesh)), triangles);
-  shadelab::AddPartMaterials(mesh.Parts, triangles);
-  shadelab::AddTextures(mesh.Textures, triangles);
 }

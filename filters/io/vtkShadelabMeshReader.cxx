@@ -4,6 +4,7 @@
 #include "shadelabTextScanner.h"
 #include "shadelabTriangleMesh.h"
 #include "shadelabXMLArraySizes.h"
+#include "vtkShadelabAssimpReader.h"
 #include "vtkShadelabGLTFReader.h"
 #include "vtkShadelabLegacyVTKReader.h"
 #include "vtkShadelabOBJReader.h"
@@ -19,6 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -89,6 +91,20 @@ private:
   std::string First;
 };
 
+// One of vtkShadelabAssimpReader's extensions.
+bool IsAssimpExtension(const std::string& extension)
+{
+  std::istringstream extensions(vtkShadelabAssimpReader::GetExtensions());
+  for (std::string known; extensions >> known;)
+  {
+    if (extension == known)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 template <class Reader>
 void ReadWith(const char* fileName, vtkShadelabFileReader* settings, vtkPolyData* triangles)
 {
@@ -146,10 +162,15 @@ void vtkShadelabMeshReader::ReadMesh(const char* fileName, vtkPolyData* triangle
   {
     ReadWith<vtkShadelabLegacyVTKReader>(fileName, this, triangles);
   }
+  else if (IsAssimpExtension(extension))
+  {
+    ReadWith<vtkShadelabAssimpReader>(fileName, this, triangles);
+  }
   else
   {
-    throw MeshReadError(
-      "unknown mesh format \"" + extension + "\" (known: " + GetKnownExtensions() + ")",
+    throw MeshReadError("unknown mesh format \"" + extension +
+        "\" (known: " + GetKnownExtensions() + "), nor one that assimp reads (" +
+        vtkShadelabAssimpReader::GetExtensions() + ")",
       vtkErrorCode::UnrecognizedFileTypeError);
   }
 }

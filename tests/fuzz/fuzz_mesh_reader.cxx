@@ -1,7 +1,8 @@
 // libFuzzer target: bytes as a mesh file of one format, read by
 // vtkShadelabMeshReader exactly as `shadelab render` reads it, then given to
 // the normals filter. Built once per format with SHADELAB_FUZZ_EXTENSION
-// (".obj", ".ply", ".stl", ".vtk", ".off", ".gltf", ".glb"). A finding is a
+// (".obj", ".ply", ".stl", ".vtk", ".off", ".gltf", ".glb"; ".dae", ".ac", ".x"
+// through assimp). A finding is a
 // crash, a sanitizer report, or a mesh that reads but holds out-of-range
 // point ids, non-finite points, attributes (colours, texture coordinates,
 // parts) that are not one per point or per triangle, or file vertices that

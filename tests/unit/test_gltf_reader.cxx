@@ -544,10 +544,10 @@ TEST_F(MeshReaders, BadGltfDocumentsAndBuffers)
   Gltf old = gltf;
   old.Doc["asset"]["version"] = "1.0";
   this->ExpectError("version.gltf", old.DataUri(), { "glTF version '1.0' is not supported" });
-  Gltf draco = gltf;
-  draco.Doc["extensionsRequired"] = { "KHR_draco_mesh_compression" };
-  this->ExpectError("draco.gltf", draco.DataUri(),
-    { "requires the extension \"KHR_draco_mesh_compression\", which shadelab does not read" });
+  Gltf basisu = gltf;
+  basisu.Doc["extensionsRequired"] = { "KHR_texture_basisu" };
+  this->ExpectError("basisu.gltf", basisu.DataUri(),
+    { "requires the extension \"KHR_texture_basisu\", which shadelab does not read" });
 
   this->ExpectError("missing.gltf", gltf.Text("missing.bin"),
     { "buffer 0: 'missing.bin': cannot open: No such file or directory" });

@@ -182,113 +182,134 @@ TEST_F(MeshReaders, BadQuantizedAttributes)
 // ---------------------------------------------------------------------------
 // EXT_meshopt_compression
 
-enum class Filter
+// Plain: float positions and normals, indices as TRIANGLES. Filtered:
+// positions through the EXPONENTIAL filter, 4-byte normals through the
+// OCTAHEDRAL one, indices as INDICES.
+enum class Variant
 {
-  None,
-  Octahedral
+  Plain,
+  Filtered
 };
 
-// The square with float positions, normals (floats, or 4-byte octahedral
-// ones as meshopt_encodeFilterOct makes them, decoded) and UNSIGNED_SHORT
-// indices; views 0, 1, 2 in that order.
-struct MeshoptSquare
+// One bufferView of the square: its bytes (filtered as meshopt's encoders
+// make them), its element size, meshopt's mode and filter.
+struct MeshoptView
 {
-  std::string Positions, Normals, Indices;
-  std::size_t NormalStride = 12;
+  std::string Bytes;
+  std::size_t Stride;
+  const char* Mode;
+  const char* Filter;
 };
 
-MeshoptSquare MakeSquare(Filter filter)
+std::vector<MeshoptView> SquareViews(Variant variant)
 {
-  MeshoptSquare square;
-  square.Positions = Bytes(Square);
   const std::vector<float> normals = { 0, 0, 1, 0, 0.6f, 0, 0.8f, 0, 0, -0.6f, 0.8f, 0, 0.28f,
     0.96f, 0, 0 };
-  if (filter == Filter::Octahedral)
+  const std::string indices = Bytes(std::vector<std::uint16_t>{ 0, 1, 2, 0, 2, 3 });
+  if (variant == Variant::Plain)
   {
-    square.Normals.resize(16);
-    meshopt_encodeFilterOct(square.Normals.data(), 4, 4, 8, normals.data());
-    square.NormalStride = 4;
-  }
-  else
-  {
+    std::string normalBytes;
     for (std::size_t v = 0; v < 4; ++v)
     {
-      square.Normals += Bytes(std::vector<float>(&normals[4 * v], &normals[4 * v + 3]));
+      normalBytes += Bytes(std::vector<float>(&normals[4 * v], &normals[4 * v + 3]));
     }
+    return { { Bytes(Square), 12, "ATTRIBUTES", "NONE" }, { normalBytes, 12, "ATTRIBUTES", "NONE" },
+      { indices, 2, "TRIANGLES", "NONE" } };
   }
-  square.Indices = Bytes(std::vector<std::uint16_t>{ 0, 1, 2, 0, 2, 3 });
-  return square;
+  std::string positions(48, '\0'), octahedral(16, '\0');
+  meshopt_encodeFilterExp(positions.data(), 4, 12, 15, Square.data());
+  meshopt_encodeFilterOct(octahedral.data(), 4, 4, 8, normals.data());
+  return { { positions, 12, "ATTRIBUTES", "EXPONENTIAL" },
+    { octahedral, 4, "ATTRIBUTES", "OCTAHEDRAL" }, { indices, 2, "INDICES", "NONE" } };
 }
 
-// The square's document: its views plain, or compressed (ATTRIBUTES and
-// TRIANGLES) into buffer 0 with the uncompressed layout in placeholder
-// buffer 1. Octahedral normals are BYTE normalized, meshopt's filter
-// undone in the plain document's bytes.
-Gltf MeshoptDocument(Filter filter, bool compressed)
+// `view` encoded in meshopt's bitstream for its mode.
+std::string Encode(const MeshoptView& view)
 {
-  const MeshoptSquare square = MakeSquare(filter);
+  const std::size_t count = view.Bytes.size() / view.Stride;
+  const std::string mode = view.Mode;
+  if (mode == "ATTRIBUTES")
+  {
+    std::string encoded(meshopt_encodeVertexBufferBound(count, view.Stride), '\0');
+    encoded.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(encoded.data()),
+      encoded.size(), view.Bytes.data(), count, view.Stride));
+    return encoded;
+  }
+  std::vector<unsigned int> indices(count);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    std::uint16_t index;
+    std::memcpy(&index, view.Bytes.data() + 2 * k, 2);
+    indices[k] = index;
+  }
+  // (meshoptimizer asserts that a TRIANGLES count is a multiple of 3.)
+  const bool triangles = mode == "TRIANGLES";
+  std::string encoded(triangles ? meshopt_encodeIndexBufferBound(count, 4)
+                                : meshopt_encodeIndexSequenceBound(count, 4),
+    '\0');
+  auto* out = reinterpret_cast<unsigned char*>(encoded.data());
+  encoded.resize(triangles
+      ? meshopt_encodeIndexBuffer(out, encoded.size(), indices.data(), count)
+      : meshopt_encodeIndexSequence(out, encoded.size(), indices.data(), count));
+  return encoded;
+}
+
+// `view`'s bytes as decoding gives them: its filter undone.
+std::string Unfiltered(const MeshoptView& view)
+{
+  std::string bytes = view.Bytes;
+  const std::size_t count = bytes.size() / view.Stride;
+  if (std::string(view.Filter) == "OCTAHEDRAL")
+  {
+    meshopt_decodeFilterOct(bytes.data(), count, view.Stride);
+  }
+  else if (std::string(view.Filter) == "EXPONENTIAL")
+  {
+    meshopt_decodeFilterExp(bytes.data(), count, view.Stride);
+  }
+  return bytes;
+}
+
+// The square's document: its views (0 positions, 1 normals, 2 indices)
+// plain, or compressed into buffer 0 with the uncompressed layout in
+// placeholder buffer 1. Octahedral normals are BYTE normalized.
+Gltf MeshoptDocument(Variant variant, bool compressed)
+{
   Gltf gltf;
   std::size_t placeholder = 0;
-  const auto view = [&](const std::string& plain, std::size_t stride, const char* mode)
+  for (const MeshoptView& view : SquareViews(variant))
   {
+    const bool attributes = std::string(view.Mode) == "ATTRIBUTES";
     if (!compressed)
     {
-      std::string bytes = plain;
-      if (filter == Filter::Octahedral && stride == 4)
-      {
-        meshopt_decodeFilterOct(bytes.data(), bytes.size() / 4, 4);
-      }
-      return gltf.View(bytes, std::string(mode) == "ATTRIBUTES" ? static_cast<int>(stride) : 0);
+      gltf.View(Unfiltered(view), attributes ? static_cast<int>(view.Stride) : 0);
+      continue;
     }
-    const std::size_t count = plain.size() / stride;
-    const bool triangles = std::string(mode) == "TRIANGLES";
-    // (meshoptimizer asserts that a TRIANGLES count is a multiple of 3.)
-    std::string encoded(triangles ? meshopt_encodeIndexBufferBound(count, 4)
-                                  : meshopt_encodeVertexBufferBound(count, stride),
-      '\0');
-    auto* out = reinterpret_cast<unsigned char*>(encoded.data());
-    if (triangles)
-    {
-      std::vector<unsigned int> indices(count);
-      for (std::size_t k = 0; k < count; ++k)
-      {
-        std::uint16_t index;
-        std::memcpy(&index, plain.data() + 2 * k, 2);
-        indices[k] = index;
-      }
-      encoded.resize(meshopt_encodeIndexBuffer(out, encoded.size(), indices.data(), count));
-    }
-    else
-    {
-      encoded.resize(meshopt_encodeVertexBuffer(out, encoded.size(), plain.data(), count, stride));
-    }
+    const std::string encoded = Encode(view);
     gltf.Buffer.resize((gltf.Buffer.size() + 3) / 4 * 4, '\0');
     Json extension = { { "buffer", 0 }, { "byteOffset", gltf.Buffer.size() },
-      { "byteLength", encoded.size() }, { "byteStride", stride }, { "count", count },
-      { "mode", mode } };
-    if (filter == Filter::Octahedral && stride == 4)
+      { "byteLength", encoded.size() }, { "byteStride", view.Stride },
+      { "count", view.Bytes.size() / view.Stride }, { "mode", view.Mode } };
+    if (std::string(view.Filter) != "NONE")
     {
-      extension["filter"] = "OCTAHEDRAL";
+      extension["filter"] = view.Filter;
     }
     gltf.Buffer += encoded;
-    Json parent = { { "buffer", 1 }, { "byteOffset", placeholder }, { "byteLength", plain.size() },
+    Json parent = { { "buffer", 1 }, { "byteOffset", placeholder },
+      { "byteLength", view.Bytes.size() },
       { "extensions", { { "EXT_meshopt_compression", extension } } } };
-    if (std::string(mode) == "ATTRIBUTES")
+    if (attributes)
     {
-      parent["byteStride"] = stride;
+      parent["byteStride"] = view.Stride;
     }
-    placeholder += (plain.size() + 3) / 4 * 4;
+    placeholder += (view.Bytes.size() + 3) / 4 * 4;
     gltf.Doc["bufferViews"].push_back(parent);
-    return static_cast<int>(gltf.Doc["bufferViews"].size()) - 1;
-  };
-  const int positions = view(square.Positions, 12, "ATTRIBUTES");
-  const int normals = view(square.Normals, square.NormalStride, "ATTRIBUTES");
-  const int indices = view(square.Indices, 2, "TRIANGLES");
-  Json primitive = Primitive(
-    gltf.Accessor(positions, Float, 4, "VEC3"), gltf.Accessor(indices, UnsignedShort, 6, "SCALAR"));
-  primitive["attributes"]["NORMAL"] = filter == Filter::Octahedral
-    ? gltf.Accessor(normals, Byte, 4, "VEC3", true)
-    : gltf.Accessor(normals, Float, 4, "VEC3");
+  }
+  Json primitive =
+    Primitive(gltf.Accessor(0, Float, 4, "VEC3"), gltf.Accessor(2, UnsignedShort, 6, "SCALAR"));
+  primitive["attributes"]["NORMAL"] = variant == Variant::Filtered
+    ? gltf.Accessor(1, Byte, 4, "VEC3", true)
+    : gltf.Accessor(1, Float, 4, "VEC3");
   gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh({ primitive }) } }) });
   if (compressed)
   {
@@ -297,7 +318,7 @@ Gltf MeshoptDocument(Filter filter, bool compressed)
     gltf.Doc["extensionsUsed"] = { "EXT_meshopt_compression" };
     gltf.Doc["extensionsRequired"] = { "EXT_meshopt_compression" };
   }
-  if (filter == Filter::Octahedral)
+  if (variant == Variant::Filtered)
   {
     gltf.Doc["extensionsUsed"].push_back("KHR_mesh_quantization");
   }
@@ -306,23 +327,31 @@ Gltf MeshoptDocument(Filter filter, bool compressed)
 
 TEST_F(MeshReaders, GltfMeshoptCompressedViewsReadAsTheUncompressedDocument)
 {
-  for (const Filter filter : { Filter::None, Filter::Octahedral })
+  for (const Variant variant : { Variant::Plain, Variant::Filtered })
   {
-    const std::string name = filter == Filter::None ? "plain" : "octahedral";
+    const std::string name = variant == Variant::Plain ? "plain" : "filtered";
     SCOPED_TRACE(name);
-    const ReadResult plain = Read(this->Write(name + ".glb", MeshoptDocument(filter, false).Glb()));
-    const std::string glb = MeshoptDocument(filter, true).Glb();
+    const ReadResult plain =
+      Read(this->Write(name + ".glb", MeshoptDocument(variant, false).Glb()));
+    const std::string glb = MeshoptDocument(variant, true).Glb();
     Seed(name + "-meshopt.glb", glb);
     const ReadResult compressed = Read(this->Write(name + "-meshopt.glb", glb));
     ASSERT_TRUE(plain.Ok) << plain.Error;
     ASSERT_TRUE(compressed.Ok) << compressed.Error;
     ExpectTriangleMesh(compressed.Mesh);
     ExpectSameMesh(compressed.Mesh, plain.Mesh);
-    // The octahedral normals are the float ones to within 8 bits' steps.
+    // The filtered values are the floats to within their bits' steps (15
+    // of mantissa for the positions, 8 for the octahedral normals).
+    const bool exact = variant == Variant::Plain;
+    const std::vector<double> points = PointValues(compressed.Mesh);
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      EXPECT_NEAR(points[k], Square[k], exact ? 0 : 1.0 / (1 << 14)) << k;
+    }
     vtkDataArray* normals = compressed.Mesh->GetPointData()->GetNormals();
     ASSERT_NE(normals, nullptr);
-    EXPECT_NEAR(normals->GetComponent(1, 0), 0.6, filter == Filter::None ? 1e-7 : 0.02);
-    EXPECT_NEAR(normals->GetComponent(3, 1), 0.96, filter == Filter::None ? 1e-7 : 0.02);
+    EXPECT_NEAR(normals->GetComponent(1, 0), 0.6, exact ? 1e-7 : 0.02);
+    EXPECT_NEAR(normals->GetComponent(3, 1), 0.96, exact ? 1e-7 : 0.02);
   }
 }
 
@@ -331,14 +360,14 @@ TEST_F(MeshReaders, BadMeshoptCompressedViews)
   const auto expect = [&](const std::string& name, const std::function<void(Gltf&)>& change,
                         std::initializer_list<const char*> keyWords)
   {
-    Gltf gltf = MeshoptDocument(Filter::Octahedral, true);
+    Gltf gltf = MeshoptDocument(Variant::Filtered, true);
     change(gltf);
     this->ExpectError(name + ".glb", gltf.Glb(), keyWords);
   };
   const auto extension = [](Gltf& g, int view) -> Json&
   { return g.Doc["bufferViews"][view]["extensions"]["EXT_meshopt_compression"]; };
-  // View 0: positions, 4 elements of 12 bytes; view 1: octahedral normals;
-  // view 2: the indices.
+  // View 0: positions (EXPONENTIAL), 4 elements of 12 bytes; view 1:
+  // octahedral normals; view 2: the indices (INDICES).
   expect("garbage", [](Gltf& g) { std::fill(g.Buffer.begin(), g.Buffer.end(), '\x5a'); },
     { "bufferView 0 EXT_meshopt_compression: its",
       "bytes are not ATTRIBUTES data of 4 elements of "
@@ -352,7 +381,7 @@ TEST_F(MeshReaders, BadMeshoptCompressedViews)
       const std::size_t offset = extension(g, 2)["byteOffset"];
       g.Buffer.replace(offset, 1, "\x7f");
     },
-    { "bufferView 2 EXT_meshopt_compression: its", "bytes are not TRIANGLES data" });
+    { "bufferView 2 EXT_meshopt_compression: its", "bytes are not INDICES data" });
   expect("count", [&](Gltf& g) { extension(g, 0)["count"] = 5; },
     { "bufferView 0 EXT_meshopt_compression: count 5 times byteStride 12 is not the view's "
       "byteLength 48" });
@@ -376,7 +405,12 @@ TEST_F(MeshReaders, BadMeshoptCompressedViews)
     { "bufferView 2 EXT_meshopt_compression: a filter applies to ATTRIBUTES only" });
   expect("indexstride", [&](Gltf& g) { extension(g, 2)["byteStride"] = 3; },
     { "byteStride 3 is not 2 or 4, as TRIANGLES and INDICES need" });
-  expect("triangles", [&](Gltf& g) { extension(g, 2)["count"] = 4; },
+  expect("triangles",
+    [&](Gltf& g)
+    {
+      extension(g, 2)["mode"] = "TRIANGLES";
+      extension(g, 2)["count"] = 4;
+    },
     { "count 4 is not a multiple of 3, as TRIANGLES needs" });
   expect("stride", [&](Gltf& g) { extension(g, 0)["byteStride"] = 256 + 4; },
     { "byteStride 260 is not a multiple of 4 from 4 to 256, as ATTRIBUTES needs" });

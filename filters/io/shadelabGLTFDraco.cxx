@@ -210,16 +210,17 @@ void DecodePrimitive(Document& document, const Json& primitive, const std::strin
   }
   const draco::Mesh& mesh = *decoded.value();
   const Json& attributes = primitive["attributes"];
-  for (const auto& [name, id] : extension["attributes"].items())
+  for (const auto& item : extension["attributes"].items())
   {
+    const std::string& name = item.key();
     if (!attributes.contains(name))
     {
       Fail(where + ": " + name + " is not one of the primitive's attributes");
     }
     const std::uint64_t index = Unsigned(attributes, name.c_str(), where);
-    const std::string bytes = AttributeBytes(
-      document, mesh, name, Unsigned(extension["attributes"], name.c_str(), where), index, where);
-    document.Storage.push_back(std::make_unique<std::string>(bytes));
+    const std::uint64_t id = Unsigned(extension["attributes"], name.c_str(), where);
+    document.Storage.push_back(
+      std::make_unique<std::string>(AttributeBytes(document, mesh, name, id, index, where)));
     document.DecodedAccessors[index] = *document.Storage.back();
   }
   const std::uint64_t indices = Unsigned(primitive, "indices", where);

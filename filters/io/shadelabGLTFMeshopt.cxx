@@ -46,6 +46,7 @@ const Json* MeshoptExtension(const Json& object, const std::string& where)
   return &extension;
 }
 
+// extension[key] (`fallback` when absent) as the Enum of its place in `names`.
 template <typename Enum, std::size_t N>
 Enum OneOf(const Json& extension, const char* key, const char* (&names)[N], const char* fallback,
   const std::string& where)
@@ -138,7 +139,7 @@ std::string DecodeView(const Document& document, const Json& view, const Json& e
       std::to_string(length) + " go past the end of buffer " + std::to_string(parent) +
       ", which has " + std::to_string(parentLength) + " bytes");
   }
-  // The codec can shrink data 64 times, so a small file can ask for much:
+  // The codec can shrink data up to 64 times, so a small file can ask for much:
   // all views together may take half of the memory there is.
   decodedBytes += length;
   const std::uint64_t available = vtkShadelabFileReader::AvailableMemory();
@@ -179,8 +180,8 @@ std::string DecodeView(const Document& document, const Json& view, const Json& e
       modes[static_cast<int>(mode)] + " data of " + std::to_string(count) + " elements of " +
       std::to_string(stride) + " bytes (meshoptimizer's error " + std::to_string(status) + ")");
   }
-  // The filters work in place on whole elements (bytes.data() is malloc's,
-  // aligned for their 16- and 32-bit loads).
+  // The filters work in place on whole elements (a std::string's bytes are
+  // aligned to 8 at least, enough for their 16- and 32-bit loads).
   switch (filter)
   {
     case MeshoptFilter::Octahedral:

@@ -120,9 +120,20 @@ const unsigned char* ViewData(
   return reinterpret_cast<const unsigned char*>(bytes.data()) + offset;
 }
 
-// Throws unless `use` allows the accessor's element and component types.
-void CheckUse(
-  const Layout& layout, const AccessorUse& use, std::uint64_t index, const std::string& where)
+// Whether KHR_mesh_quantization allows `type` (normalized or not) for `use`.
+bool Quantizable(Quantization use, ScalarType type, bool normalized)
+{
+  const bool signedType = type == ScalarType::Int8 || type == ScalarType::Int16;
+  const bool unsignedType = type == ScalarType::UInt8 || type == ScalarType::UInt16;
+  return use == Quantization::Integers      ? signedType || unsignedType
+    : use == Quantization::SignedNormalized ? signedType && normalized
+                                            : false;
+}
+
+// Throws unless `use` allows the accessor's element and component types
+// (KHR_mesh_quantization's too where the document uses it: `quantized`).
+void CheckUse(const Layout& layout, const AccessorUse& use, bool quantized, std::uint64_t index,
+  const std::string& where)
 {
   const ScalarType type = layout.Component->Type;
   if (use.Indices)
@@ -138,11 +149,13 @@ void CheckUse(
   const bool isFloat = type == ScalarType::Float32 && !layout.Normalized;
   const bool isNormalized = use.NormalizedIntegers && layout.Normalized &&
     (type == ScalarType::UInt8 || type == ScalarType::UInt16);
+  const bool isQuantized = Quantizable(use.Quantized, type, layout.Normalized);
   if (layout.Components < use.MinComponents || layout.Components > use.MaxComponents ||
-    (!isFloat && !isNormalized))
+    (!isFloat && !isNormalized && !(quantized && isQuantized)))
   {
     Fail(where + ": " + use.Name + " accessor " + std::to_string(index) + " is " +
-      Describe(layout) + ", which glTF does not allow there");
+      Describe(layout) + ", which glTF does not allow there" +
+      (isQuantized && !quantized ? " unless the file uses KHR_mesh_quantization" : ""));
   }
 }
 
@@ -279,7 +292,15 @@ Layout ReadLayout(const Document& document, std::uint64_t index, const AccessorU
     }
     layout.Normalized = accessor["normalized"].get<bool>();
   }
-  CheckUse(layout, use, index, referrer);
+  CheckUse(layout, use, Uses(document.Root, "KHR_mesh_quantization"), index, referrer);
+  if (const auto decoded = document.DecodedAccessors.find(index);
+      decoded != document.DecodedAccessors.end())
+  {
+    // Draco's data, as many elements as the count (checked as decoded).
+    layout.Data = reinterpret_cast<const unsigned char*>(decoded->second.data());
+    layout.Stride = layout.Components * SizeOf(layout.Component->Type);
+    return layout;
+  }
   // Without a bufferView an accessor is zeros (for sparse values to fill
   // in): no more of them than the buffers hold bytes, as for any other
   // accessor (a morph target's zeros are as many as its mesh's positions).
@@ -331,11 +352,13 @@ FloatValues ReadFloats(
   }
   else
   {
-    // Normalized integers: k / 255 or k / 65535, as glTF defines them.
-    const double scale = type == ScalarType::UInt8 ? 1.0 / 255 : 1.0 / 65535;
+    // glTF's normalized integers: c over the type's largest value, at
+    // least -1; other integers as they are.
+    const double largest = layout.Normalized ? LargestValue(type) : 1;
     result.Values.resize(layout.Count * layout.Components);
     Decode(layout,
-      [&](std::size_t k, auto value) { result.Values[k] = static_cast<float>(value * scale); });
+      [&](std::size_t k, auto value)
+      { result.Values[k] = static_cast<float>(std::max(value / largest, -1.0)); });
   }
   return result;
 }

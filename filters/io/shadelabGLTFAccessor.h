@@ -8,8 +8,11 @@
  * a sparse one's elements replace the base's (or the zeros) at its indices,
  * which must increase and stay below the count, as glTF requires. What a
  * use allows (a mesh attribute's element and component types, an index's
- * unsigned integers) is checked too, and a normalized integer becomes a
- * float in 0..1.
+ * unsigned integers) is checked too, with KHR_mesh_quantization's integer
+ * types where the document uses it. Integers become floats as glTF says: a
+ * normalized one c / 255, c / 65535, max(c / 127, -1) or max(c / 32767, -1),
+ * any other as it is. An accessor that a Draco-compressed primitive fills
+ * reads its decoded bytes (shadelabGLTFDraco.h).
  */
 #ifndef shadelabGLTFAccessor_h
 #define shadelabGLTFAccessor_h
@@ -22,6 +25,14 @@
 
 namespace shadelab::gltf
 {
+/** The integers besides FLOAT that KHR_mesh_quantization allows an attribute. */
+enum class Quantization
+{
+  None,
+  SignedNormalized, // normalized BYTE and SHORT (NORMAL, TANGENT)
+  Integers // BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, normalized or not (POSITION, TEXCOORD)
+};
+
 /** What a use of an accessor allows. */
 struct AccessorUse
 {
@@ -30,6 +41,7 @@ struct AccessorUse
   int MaxComponents;       // COLOR_0 takes VEC3 and VEC4
   bool NormalizedIntegers; // also normalized UNSIGNED_BYTE and UNSIGNED_SHORT (TEXCOORD, COLOR)
   bool Indices = false;    // SCALAR UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT instead
+  Quantization Quantized = Quantization::None; // where the document uses KHR_mesh_quantization
 };
 
 /** A primitive's indices. */

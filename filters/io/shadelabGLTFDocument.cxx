@@ -1,6 +1,8 @@
 #include "shadelabGLTFDocument.h"
 
 #include "shadelabCheckedFile.h"
+#include "shadelabGLTFDraco.h"
+#include "shadelabGLTFMeshopt.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
@@ -9,6 +11,7 @@
 #include <vtkBase64Utilities.h>
 #include <vtkByteSwap.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -25,6 +28,11 @@ constexpr std::uint32_t JsonChunk = 0x4E4F534A;   // "JSON"
 constexpr std::uint32_t BinaryChunk = 0x004E4942; // "BIN\0"
 constexpr std::size_t GlbHeaderBytes = 12;        // magic, version, length
 constexpr std::size_t ChunkHeaderBytes = 8;       // length, type
+
+// The extensions that a document may require: those that shadelab reads
+// (KHR_texture_transform on base colour textures).
+constexpr std::string_view Readable[] = { "KHR_texture_transform", "KHR_mesh_quantization",
+  "EXT_meshopt_compression", "KHR_draco_mesh_compression" };
 
 std::uint32_t LoadUInt32(std::string_view bytes, std::size_t offset)
 {
@@ -144,7 +152,9 @@ void CheckAsset(const Json& root)
   }
   for (const Json& extension : List(root, "extensionsRequired"))
   {
-    if (extension == "KHR_texture_transform") // read on base colour textures
+    if (extension.is_string() &&
+      std::find(std::begin(Readable), std::end(Readable), extension.get<std::string>()) !=
+        std::end(Readable))
     {
       continue;
     }
@@ -252,6 +262,13 @@ void LoadBuffers(
     const std::uint64_t length = Unsigned(buffer, "byteLength", where);
     std::string_view bytes;
     std::string source;
+    const bool hasData = buffer.contains("uri") || (glb && b == 0 && glb->HasBinary);
+    document.Placeholders.push_back(IsPlaceholder(document.Root, buffer, hasData, where));
+    if (document.Placeholders.back())
+    {
+      document.Buffers.emplace_back();
+      continue;
+    }
     if (!buffer.contains("uri"))
     {
       if (!glb || b != 0 || !glb->HasBinary)
@@ -325,13 +342,29 @@ void LoadImages(Document& document, const std::string& fileName, bool allowOutsi
 }
 }
 
+bool Uses(const Json& root, const char* extension)
+{
+  const Json& used = List(root, "extensionsUsed");
+  return std::find(used.begin(), used.end(), extension) != used.end();
+}
+
 std::string_view ViewBytes(
   const Document& document, std::uint64_t index, const std::string& referrer)
 {
   const std::string viewName = "bufferView " + std::to_string(index);
   const Json& view = Item(document.Root, "bufferViews", index, referrer);
+  if (const auto decoded = document.DecodedViews.find(index);
+      decoded != document.DecodedViews.end())
+  {
+    return decoded->second;
+  }
   const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
   Item(document.Root, "buffers", bufferIndex, viewName);
+  if (document.Placeholders[bufferIndex])
+  {
+    Fail(viewName + " is not compressed, but its buffer " + std::to_string(bufferIndex) +
+      " is an EXT_meshopt_compression placeholder without data");
+  }
   const std::string_view buffer = document.Buffers[bufferIndex];
   const std::uint64_t offset = Unsigned(view, "byteOffset", viewName, 0);
   const std::uint64_t length = Unsigned(view, "byteLength", viewName);
@@ -370,7 +403,9 @@ Document Load(const std::string& fileName, std::string fileBytes, bool allowOuts
   document.Root = ParseJson(isGlb ? glb.Json : bytes);
   CheckAsset(document.Root);
   LoadBuffers(document, fileName, allowOutside, isGlb ? &glb : nullptr);
+  DecodeMeshoptViews(document);
   LoadImages(document, fileName, allowOutside);
+  DecodeDracoPrimitives(document);
   return document;
 }
 }

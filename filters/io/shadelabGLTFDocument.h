@@ -7,10 +7,15 @@
  * the document (URIs relative to its folder, percent-decoded). It checks
  * what VTK's vtkGLTFDocumentLoader crashes on or lets pass (see
  * vtkShadelabGLTFReader): the GLB's header and chunk lengths against the
- * file, asset.version 2.x, required extensions (none is supported), each
- * buffer's byteLength against the bytes there are, and that every image is
- * there to be read (a readable file, valid base64, or a bufferView within
- * its buffer). Every problem is a MeshReadError, one line.
+ * file, asset.version 2.x, required extensions (only those read
+ * here), each buffer's byteLength against the bytes there are, and that
+ * every image is there to be read (a readable file, valid base64, or a
+ * bufferView within its buffer). Every problem is a MeshReadError, one line.
+ *
+ * Compressed data is decoded as the document loads, so that whatever reads
+ * a bufferView or an accessor sees plain glTF: EXT_meshopt_compression's
+ * bufferViews (shadelabGLTFMeshopt.h) and the accessors that
+ * KHR_draco_mesh_compression's primitives fill (shadelabGLTFDraco.h).
  *
  * Its JSON is read through the typed getters of shadelabGLTFJson.h.
  */
@@ -20,6 +25,7 @@
 #include "shadelabGLTFJson.h"
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -39,6 +45,13 @@ struct Document
   Json Root;
   std::vector<Image> Images;             // images[i]
   std::vector<std::string_view> Buffers; // each exactly its byteLength long, in Storage
+  // EXT_meshopt_compression's placeholders, whose Buffers are empty: only
+  // the compressed bufferViews' layouts refer to them.
+  std::vector<bool> Placeholders;
+  // Decoded bytes, in Storage: a compressed bufferView's, and those of an
+  // accessor of a Draco-compressed primitive (packed, little-endian).
+  std::map<std::uint64_t, std::string_view> DecodedViews;
+  std::map<std::uint64_t, std::string_view> DecodedAccessors;
   // The file's bytes (a GLB's BIN chunk is used where it lies) and those of
   // the other buffers; on the heap, so that the views stay valid when the
   // document moves.
@@ -51,6 +64,9 @@ struct Document
  * allowOutside (shadelabCheckedFile.h).
  */
 Document Load(const std::string& fileName, std::string fileBytes, bool allowOutside);
+
+/** Whether the document lists `extension` in extensionsUsed. */
+bool Uses(const Json& root, const char* extension);
 
 /**
  * The bytes of bufferView `index`, which `referrer` uses; throws unless it

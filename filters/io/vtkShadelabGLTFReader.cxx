@@ -27,9 +27,10 @@ namespace
 using namespace shadelab::gltf;
 using shadelab::MeshReadError;
 
-const AccessorUse PositionUse = { "POSITION", 3, 3, false };
-const AccessorUse NormalUse = { "NORMAL", 3, 3, false };
-const AccessorUse TextureCoordinatesUse = { "TEXCOORD_0", 2, 2, true };
+const AccessorUse PositionUse = { "POSITION", 3, 3, false, false, Quantization::Integers };
+const AccessorUse NormalUse = { "NORMAL", 3, 3, false, false, Quantization::SignedNormalized };
+const AccessorUse TextureCoordinatesUse = { "TEXCOORD_0", 2, 2, true, false,
+  Quantization::Integers };
 const AccessorUse ColorUse = { "COLOR_0", 3, 4, true };
 
 // glTF's primitive modes.

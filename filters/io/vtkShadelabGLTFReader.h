@@ -21,6 +21,9 @@
  * lecture's, mapped as shadelabGLTFMaterial.h says) and baseColorTexture
  * as both its kd's and its ka's texture, with the textures' images and
  * samplers (shadelabGLTFTexture.h; the arrays of shadelabPartMaterials.h).
+ * Quantized attributes (KHR_mesh_quantization) are read as glTF dequantizes
+ * them, compressed ones (EXT_meshopt_compression, KHR_draco_mesh_compression)
+ * as they decode (shadelabGLTFMeshopt.h, shadelabGLTFDraco.h).
  *
  * Strict, unlike VTK 9.1's vtkGLTFDocumentLoader, which (tried under
  * AddressSanitizer) crashes on a missing .bin, a buffer shorter than its

@@ -293,7 +293,7 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   // World to view coordinates, in double.
   vtkMatrix4x4* view = this->Renderer->GetActiveCamera()->GetModelViewTransformMatrix();
   double rotation[3][3];
-  Vec3 translation;
+  shadelab::Vec3 translation; // qualified: a unity batch may see shadelab::normals::Vec3 too
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)

@@ -2,7 +2,9 @@
 // files in some 50 formats, /usr/share/assimp/models) in one batch, which
 // must neither crash, nor hang, nor take more than 2 GB: each file renders
 // or is refused in one line that names it (or a file beside it that it
-// names, such as a texture).
+// names, such as a texture). Prints the counts per format and the pictures
+// that cover no pixel; SHADELAB_ASSIMP_MODELS_KEEP=FOLDER keeps the
+// pictures there, named by the model (for a contact sheet).
 #include "cli_test_support.h"
 
 #include <gtest/gtest.h>
@@ -10,7 +12,12 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <chrono>
+#include <cstdlib>
+#include <map>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -50,8 +57,9 @@ TEST(AssimpModels, EachRendersOrIsRefusedInOneLine)
   ASSERT_GT(files.size(), 100u);
   TempDir dir;
   std::ostringstream scene;
-  scene << R"({ "output": ")" << (dir / "{name}.png").string()
-        << R"(", "size": [32, 32], "shots": [)";
+  scene
+    << R"({ "output": ")" << (dir / "{name}.png").string()
+    << R"(", "size": [64, 48], "background": "transparent", "camera": { "view": "iso" }, "shots": [)";
   for (std::size_t i = 0; i < files.size(); ++i)
   {
     scene << (i ? "," : "") << R"({ "name": "m)" << i << R"(", "mesh": )" << JsonString(files[i])
@@ -115,14 +123,38 @@ TEST(AssimpModels, EachRendersOrIsRefusedInOneLine)
   }
   EXPECT_LE(summaries, 1u);
   // Every other file was drawn.
+  const char* keep = std::getenv("SHADELAB_ASSIMP_MODELS_KEEP");
+  std::map<std::string, std::array<int, 2>> counts; // extension: drawn, refused
   std::size_t pictures = 0;
   for (std::size_t i = 0; i < files.size(); ++i)
   {
-    const bool drawn = std::filesystem::exists(dir / ("m" + std::to_string(i) + ".png"));
+    const auto picture = dir / ("m" + std::to_string(i) + ".png");
+    const bool drawn = std::filesystem::exists(picture);
     pictures += drawn;
     EXPECT_TRUE(drawn || refused.count(files[i])) << files[i] << ": neither drawn nor refused";
+    std::string extension = std::filesystem::path(files[i]).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    ++counts[extension][drawn ? 0 : 1];
+    if (drawn && CountCovered(ReadImage(picture)) == 0)
+    {
+      std::cout << "drawn, no pixel covered: " << files[i] << "\n";
+    }
+    if (drawn && keep)
+    {
+      std::string name = std::filesystem::relative(files[i], Models).string();
+      std::replace(name.begin(), name.end(), '/', '_');
+      std::filesystem::copy_file(picture, std::filesystem::path(keep) / (name + ".png"),
+        std::filesystem::copy_options::overwrite_existing);
+    }
   }
   EXPECT_EQ(pictures + refused.size(), files.size());
+  std::cout << "format\tdrawn\trefused\n";
+  for (const auto& [extension, count] : counts)
+  {
+    std::cout << (extension.empty() ? "(none)" : extension) << "\t" << count[0] << "\t" << count[1]
+              << "\n";
+  }
   std::cout << files.size() << " files: " << pictures << " drawn, " << refused.size()
             << " refused in one line\n";
 }

@@ -293,7 +293,8 @@ TEST(View, AScreenshotThatCannotBeWrittenIsReportedAndLeavesNothing)
   Viewer viewer({}, std::to_string(W) + "x" + std::to_string(H), 16384);
   ASSERT_TRUE(viewer.HasWindow()) << viewer.Stderr();
   viewer.Keys({ "p" });
-  const std::string line = "shadelab: error: shadelab-teapot-001.png: cannot write: File too large\n";
+  const std::string line =
+    "shadelab: error: shadelab-teapot-001.png: cannot write: File too large\n";
   const auto deadline = std::chrono::steady_clock::now() + 30s;
   while (
     viewer.Stderr().find(line) == std::string::npos && std::chrono::steady_clock::now() < deadline)

@@ -17,10 +17,7 @@ extern "C" const char* __lsan_default_suppressions()
     // limit) returns before freeing what vtkXMLWriter::Start allocated for
     // each array's offsets (the report shows only the library's addresses,
     // so the library is named).
-    "leak:libvtkIOXML-9.1.so\n"
-    // assimp 5.2's importers: what an importer built before it throws on a
-    // malformed file (the report's frames are all inside the library).
-    "leak:libassimp.so\n";
+    "leak:libvtkIOXML-9.1.so\n";
 }
 
 // The list of suppressions used would break the one-line error contract.

@@ -168,8 +168,8 @@ PartMaterial MapMaterial(const aiScene& scene, unsigned index, const std::string
 }
 
 // Appends one mesh's triangles, points and attributes to the result.
-void AppendMesh(
-  const aiMesh& mesh, unsigned index, bool normals, bool textured, PolygonMesh& polygons)
+void AppendMesh(const aiMesh& mesh, unsigned index, bool normals, bool textured, bool colored,
+  PolygonMesh& polygons)
 {
   const std::string what = MeshName(mesh, index);
   if (!mesh.mVertices || (mesh.mNumFaces > 0 && !mesh.mFaces))
@@ -201,6 +201,16 @@ void AppendMesh(
           what + ": vertex " + std::to_string(v) + " has a non-finite texture coordinate");
       }
       polygons.TextureCoordinates.insert(polygons.TextureCoordinates.end(), { s, t });
+    }
+    if (colored)
+    {
+      // A mesh without colours among meshes with them: white, as glTF's.
+      const aiColor4D c = mesh.mColors[0] ? mesh.mColors[0][v] : aiColor4D(1, 1, 1, 1);
+      if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
+      {
+        throw MeshReadError(what + ": vertex " + std::to_string(v) + " has a non-finite colour");
+      }
+      polygons.Colors.insert(polygons.Colors.end(), { c.r, c.g, c.b, c.a });
     }
   }
   for (unsigned f = 0; f < mesh.mNumFaces; ++f)
@@ -234,7 +244,8 @@ AssimpMesh ConvertAssimpScene(
   // readers drop them; "no triangles" comes from MakeTriangleMesh.
   std::vector<unsigned> meshes;
   std::uint64_t points = 0, triangles = 0;
-  bool someNormals = false, someLackNormals = false, someUV = false, someLackUV = false;
+  bool someNormals = false, someLackNormals = false, someUV = false, someLackUV = false,
+       someColors = false;
   for (unsigned i = 0; i < scene.mNumMeshes; ++i)
   {
     const aiMesh* mesh = scene.mMeshes[i];
@@ -245,6 +256,7 @@ AssimpMesh ConvertAssimpScene(
       triangles += mesh->mNumFaces;
       (mesh->mNormals ? someNormals : someLackNormals) = true;
       (mesh->mTextureCoords[0] ? someUV : someLackUV) = true;
+      someColors = someColors || mesh->mColors[0];
     }
   }
   CheckMemory(points, triangles);
@@ -263,13 +275,14 @@ AssimpMesh ConvertAssimpScene(
   polygons.Points.reserve(3 * points);
   polygons.Normals.reserve(normals ? 3 * points : 0);
   polygons.TextureCoordinates.reserve(someUV ? 2 * points : 0);
+  polygons.Colors.reserve(someColors ? 4 * points : 0);
   polygons.FaceOffsets.reserve(triangles + 1);
   polygons.FaceIds.reserve(3 * triangles);
   polygons.Parts.reserve(triangles);
   for (unsigned i : meshes)
   {
     const aiMesh& mesh = *scene.mMeshes[i];
-    AppendMesh(mesh, i, normals, someUV, polygons);
+    AppendMesh(mesh, i, normals, someUV, someColors, polygons);
     polygons.Parts.insert(
       polygons.Parts.end(), mesh.mNumFaces, static_cast<int>(result.Parts.size()));
     result.Parts.push_back(MapMaterial(scene, mesh.mMaterialIndex, meshFile, allowOutside, result));

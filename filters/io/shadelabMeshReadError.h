@@ -12,6 +12,7 @@
 
 #include <vtkErrorCode.h>
 
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -31,6 +32,32 @@ public:
 private:
   unsigned long Code;
 };
+
+/**
+ * The exception being handled, as a reader reports it: a MeshReadError as
+ * it is, std::bad_alloc as "out of memory", any other std::exception (a
+ * library's: the JSON parser's) as its what(); both with UnknownError. Only
+ * inside a handler of std::exception.
+ */
+inline MeshReadError CurrentReadError()
+{
+  try
+  {
+    throw;
+  }
+  catch (const MeshReadError& error)
+  {
+    return error;
+  }
+  catch (const std::bad_alloc&)
+  {
+    return MeshReadError("out of memory", vtkErrorCode::UnknownError);
+  }
+  catch (const std::exception& error)
+  {
+    return MeshReadError(error.what(), vtkErrorCode::UnknownError);
+  }
+}
 }
 
 #endif

@@ -1,7 +1,9 @@
 #include "vtkShadelabAssimpReader.h"
 
+#include "shadelabAssimpMeshBytes.h"
 #include "shadelabAssimpScene.h"
 #include "shadelabCheckedFile.h"
+#include "shadelabIsolatedRead.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabPartMaterials.h"
 #include "shadelabTextScanner.h"
@@ -18,9 +20,7 @@
 
 #include <algorithm>
 #include <cstring>
-#include <iostream>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <string>
 #include <utility>
@@ -149,42 +149,6 @@ private:
   bool AllowOutside;
 };
 
-// assimp's bundled parsers (OpenDDL's, for OpenGEX) write some messages
-// straight to std::cerr and std::cout rather than to assimp's logger: those
-// streams go nowhere while assimp reads, so that shadelab's stderr stays
-// its one line per problem. A mutex: two reads at once must not restore
-// each other's streams.
-class SilencedStandardStreams
-{
-public:
-  SilencedStandardStreams()
-    : Lock(Mutex)
-    , OutState(std::cout.rdstate())
-    , ErrState(std::cerr.rdstate())
-    , Out(std::cout.rdbuf(nullptr))
-    , Err(std::cerr.rdbuf(nullptr))
-  {
-  }
-  ~SilencedStandardStreams()
-  {
-    // A write into no buffer set badbit: the streams' states as they were.
-    std::cout.rdbuf(this->Out);
-    std::cerr.rdbuf(this->Err);
-    std::cout.clear(this->OutState);
-    std::cerr.clear(this->ErrState);
-  }
-  SilencedStandardStreams(const SilencedStandardStreams&) = delete;
-  SilencedStandardStreams& operator=(const SilencedStandardStreams&) = delete;
-
-private:
-  static std::mutex Mutex;
-  std::lock_guard<std::mutex> Lock;
-  std::ios_base::iostate OutState, ErrState;
-  std::streambuf* Out;
-  std::streambuf* Err;
-};
-std::mutex SilencedStandardStreams::Mutex;
-
 // assimp's error, which may run over lines and end in one: its first line.
 std::string FirstLine(const char* text)
 {
@@ -207,33 +171,36 @@ const char* vtkShadelabAssimpReader::GetExtensions()
 
 void vtkShadelabAssimpReader::ReadMesh(const char* fileName, vtkPolyData* triangles)
 {
-  Assimp::Importer importer;
-  // The importer owns its IO system and deletes it.
-  auto* io = new CheckedIOSystem(fileName, ReadFileBytes(fileName), this->AllowOutsideReferences);
-  importer.SetIOHandler(io);
-  const aiScene* scene = nullptr;
-  {
-    const SilencedStandardStreams silence;
-    scene = importer.ReadFile(fileName,
-      aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-        aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices);
-  }
-  if (!scene)
-  {
-    const std::string error = FirstLine(importer.GetErrorString());
-    throw shadelab::MeshReadError(error.empty() ? "assimp cannot read it" : error);
-  }
-  shadelab::AssimpMesh mesh =
-    shadelab::ConvertAssimpScene(*scene, fileName, this->ReadNormals, this->AllowOutsideReferences);
-  importer.FreeScene(); // the copy is made: assimp's memory goes before VTK's grows
+  // Read here, so that a folder, a FIFO or a file too big for the memory is
+  // the error the other readers give; the child process sees these bytes.
+  std::string bytes = ReadFileBytes(fileName);
+  const bool normals = this->ReadNormals, allowOutside = this->AllowOutsideReferences;
+  shadelab::AssimpMesh mesh = shadelab::DecodeAssimpMesh(shadelab::ReadIsolated("assimp",
+    [&]
+    {
+      Assimp::Importer importer;
+      // The importer owns its IO system and deletes it.
+      auto* io = new CheckedIOSystem(fileName, std::move(bytes), allowOutside);
+      importer.SetIOHandler(io);
+      const aiScene* scene = importer.ReadFile(fileName,
+        aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+          aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices);
+      if (!scene)
+      {
+        const std::string error = FirstLine(importer.GetErrorString());
+        throw shadelab::MeshReadError(error.empty() ? "assimp cannot read it" : error);
+      }
+      shadelab::AssimpMesh converted =
+        shadelab::ConvertAssimpScene(*scene, fileName, normals, allowOutside);
+      // The references refused first, then what the conversion noticed.
+      converted.Warnings.insert(
+        converted.Warnings.begin(), io->Warnings.begin(), io->Warnings.end());
+      return shadelab::EncodeAssimpMesh(converted);
+    }));
   shadelab::MakeTriangleMesh(shadelab::ToPolyData(std::move(mesh.Mesh)), triangles);
   shadelab::AddPartMaterials(mesh.Parts, triangles);
   shadelab::AddTextures(mesh.Textures, triangles);
   // Warnings only of a mesh that was read: a refused file is its one error.
-  for (const std::string& warning : io->Warnings)
-  {
-    vtkWarningMacro(<< warning);
-  }
   for (const std::string& warning : mesh.Warnings)
   {
     vtkWarningMacro(<< warning);

@@ -20,12 +20,22 @@
  * opened (assimp reads on as if it were missing) and is a warning. assimp's
  * failure (GetErrorString(), its first line, trimmed) is the one error.
  * assimp logs through its DefaultLogger, which is its NullLogger unless a
- * program creates one; shadelab never does, so nothing of assimp's reaches
- * stdout or stderr, and its warnings (its own repairs) are not reported.
+ * program creates one; shadelab never does, so its warnings (its own
+ * repairs) are not reported.
+ *
+ * assimp runs in a child process (shadelabIsolatedRead.h): its COLLADA and
+ * DirectX parsers crash on some malformed files, and a crash is then the
+ * one error "assimp crashed reading it (SIGSEGV)" rather than the end of the
+ * program. The child reads and converts (below); the mesh comes back as
+ * bytes (shadelabAssimpMeshBytes.h). What its bundled parsers print
+ * themselves (OpenDDL's, for OpenGEX) goes to the child's /dev/null.
  *
  * What assimp hands back is checked as strictly as the own readers check a
  * file: counts that the memory can take, faces of 3 indices in range,
- * finite coordinates, normals and texture coordinates (shadelabAssimpScene.h).
+ * finite coordinates, normals, texture coordinates and colours
+ * (shadelabAssimpScene.h). The first set of vertex colours is the point
+ * data Colors, as the own readers give it (white for a mesh without among
+ * meshes with).
  *
  * Each assimp mesh (after the merge: each material) is a part (cell data
  * "Part") with its material (shadelabPartMaterials.h): COLOR_AMBIENT as ka,

@@ -104,20 +104,10 @@ int vtkShadelabFileReader::RequestData(
     vtkPolyData::GetData(outputVector)->ShallowCopy(triangles);
     return 1;
   }
-  catch (const shadelab::MeshReadError& error)
+  catch (const std::exception&)
   {
+    const shadelab::MeshReadError error = shadelab::CurrentReadError();
     this->SetErrorCode(error.GetCode());
-    vtkErrorMacro(<< error.what());
-  }
-  catch (const std::bad_alloc&)
-  {
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-    vtkErrorMacro(<< "out of memory");
-  }
-  catch (const std::exception& error)
-  {
-    // A library's exception (the JSON parser's, say): still one error.
-    this->SetErrorCode(vtkErrorCode::UnknownError);
     vtkErrorMacro(<< error.what());
   }
   return 0;

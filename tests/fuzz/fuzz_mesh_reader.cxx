@@ -2,7 +2,9 @@
 // vtkShadelabMeshReader exactly as `shadelab render` reads it, then given to
 // the normals filter. Built once per format with SHADELAB_FUZZ_EXTENSION
 // (".obj", ".ply", ".stl", ".vtk", ".off", ".gltf", ".glb"; ".dae", ".ac", ".x"
-// through assimp). A finding is a
+// through assimp, which runs in a child process: libFuzzer sees none of
+// the child's coverage, so those three mutate blindly inside assimp and
+// hold the program's side, a crash of assimp's being one error). A finding is a
 // crash, a sanitizer report, or a mesh that reads but holds out-of-range
 // point ids, non-finite points, attributes (colours, texture coordinates,
 // parts) that are not one per point or per triangle, or file vertices that

@@ -119,7 +119,11 @@ public:
     values.resize(count);
     if constexpr (Plain<T>)
     {
-      std::memcpy(values.data(), this->Take(count * sizeof(T)), count * sizeof(T));
+      const char* bytes = this->Take(count * sizeof(T));
+      if (count > 0) // an empty vector's data() may be null, which memcpy may not take
+      {
+        std::memcpy(values.data(), bytes, count * sizeof(T));
+      }
     }
     else
     {

@@ -3,12 +3,12 @@
 #include "shadelabCheckedFile.h"
 #include "shadelabGLTFDraco.h"
 #include "shadelabGLTFMeshopt.h"
+#include "shadelabGLTFUri.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabMeshReadError.h"
 #include "shadelabTextScanner.h"
 #include "vtkShadelabFileReader.h"
 
-#include <vtkBase64Utilities.h>
 #include <vtkByteSwap.h>
 
 #include <algorithm>
@@ -163,92 +163,6 @@ void CheckAsset(const Json& root)
   }
 }
 
-// A data URI's bytes; `where` names its owner. Throws unless base64 and valid.
-std::string DecodeDataUri(std::string_view uri, const std::string& where)
-{
-  const auto comma = uri.find(',');
-  if (comma == std::string_view::npos || uri.substr(0, comma).size() < 7 ||
-    uri.substr(comma - 7, 7) != ";base64")
-  {
-    Fail(where + ": a data URI that is not base64");
-  }
-  const std::string_view text = uri.substr(comma + 1);
-  std::size_t padding = 0;
-  while (padding < 2 && padding < text.size() && text[text.size() - 1 - padding] == '=')
-  {
-    ++padding;
-  }
-  const std::size_t expected = text.size() / 4 * 3 - padding;
-  std::string bytes(text.size() / 4 * 3, '\0');
-  // DecodeSafely stops at the first byte outside the alphabet.
-  const std::size_t decoded = text.size() % 4 != 0
-    ? 0
-    : vtkBase64Utilities::DecodeSafely(reinterpret_cast<const unsigned char*>(text.data()),
-        text.size(), reinterpret_cast<unsigned char*>(bytes.data()), bytes.size());
-  if ((text.size() % 4 != 0 || decoded != expected) && !text.empty())
-  {
-    Fail(where + ": malformed base64 in its data URI");
-  }
-  bytes.resize(expected);
-  return bytes;
-}
-
-int HexDigit(char c)
-{
-  return c >= '0' && c <= '9' ? c - '0'
-    : c >= 'a' && c <= 'f'    ? c - 'a' + 10
-    : c >= 'A' && c <= 'F'    ? c - 'A' + 10
-                              : -1;
-}
-
-// What a file that the document refers to says when it cannot be read:
-// "buffer 0: 'mesh.bin': cannot open: No such file or directory".
-template <typename Action>
-auto Referred(const std::string& where, std::string_view uri, Action action)
-{
-  try
-  {
-    return action();
-  }
-  catch (const MeshReadError& error)
-  {
-    throw MeshReadError(where + ": " + Quote(uri) + ": " + error.what(), error.GetCode());
-  }
-}
-
-// A relative URI as the path of a file in the document's folder or below.
-std::string FilePath(const std::string& documentName, bool allowOutside, std::string_view uri,
-  const std::string& where)
-{
-  const std::string folder = std::filesystem::path(documentName).parent_path().string();
-  const auto colon = uri.find(':');
-  if (uri.empty() || (colon != std::string_view::npos && uri.find('/') > colon) || uri[0] == '/')
-  {
-    Fail(where + ": uri " + Quote(uri) + " is neither a data URI nor a relative file name");
-  }
-  std::string decoded;
-  for (std::size_t i = 0; i < uri.size(); ++i)
-  {
-    if (uri[i] != '%')
-    {
-      decoded += uri[i];
-      continue;
-    }
-    const int high = i + 2 < uri.size() ? HexDigit(uri[i + 1]) : -1;
-    const int low = i + 2 < uri.size() ? HexDigit(uri[i + 2]) : -1;
-    if (high < 0 || low < 0 || (high == 0 && low == 0))
-    {
-      Fail(where + ": malformed percent-escape in uri " + Quote(uri));
-    }
-    decoded += static_cast<char>(16 * high + low);
-    i += 2;
-  }
-  // Inside the document's folder unless trusted; a plain file, checked
-  // where it is read (a relative uri can name a device or a pipe).
-  return Referred(
-    where, uri, [&] { return ResolveReference(documentName, folder, decoded, allowOutside); });
-}
-
 // Each buffer as a view of the GLB's BIN chunk (no copy) or of bytes that
 // `document` keeps: a file's or a data URI's.
 void LoadBuffers(
@@ -359,19 +273,27 @@ std::string_view ViewBytes(
     return decoded->second;
   }
   const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
-  Item(document.Root, "buffers", bufferIndex, viewName);
+  return BufferRange(document, view, viewName, viewName + "'s",
+    viewName + " is not compressed, but its buffer " + std::to_string(bufferIndex) +
+      " is an EXT_meshopt_compression placeholder without data");
+}
+
+std::string_view BufferRange(const Document& document, const Json& range, const std::string& where,
+  const std::string& what, const std::string& placeholder)
+{
+  const std::uint64_t bufferIndex = Unsigned(range, "buffer", where);
+  Item(document.Root, "buffers", bufferIndex, where);
   if (document.Placeholders[bufferIndex])
   {
-    Fail(viewName + " is not compressed, but its buffer " + std::to_string(bufferIndex) +
-      " is an EXT_meshopt_compression placeholder without data");
+    Fail(placeholder);
   }
   const std::string_view buffer = document.Buffers[bufferIndex];
-  const std::uint64_t offset = Unsigned(view, "byteOffset", viewName, 0);
-  const std::uint64_t length = Unsigned(view, "byteLength", viewName);
+  const std::uint64_t offset = Unsigned(range, "byteOffset", where, 0);
+  const std::uint64_t length = Unsigned(range, "byteLength", where);
   if (offset > buffer.size() || length > buffer.size() - offset)
   {
     // Offset and length apart: their sum can pass 2^64.
-    Fail(viewName + "'s byteOffset " + std::to_string(offset) + " and byteLength " +
+    Fail(what + " byteOffset " + std::to_string(offset) + " and byteLength " +
       std::to_string(length) + " go past the end of buffer " + std::to_string(bufferIndex) +
       ", which has " + std::to_string(buffer.size()) + " bytes");
   }

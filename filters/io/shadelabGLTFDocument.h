@@ -75,6 +75,16 @@ bool Uses(const Json& root, const char* extension);
 std::string_view ViewBytes(
   const Document& document, std::uint64_t index, const std::string& referrer);
 
+/**
+ * The bytes that `range` names by its "buffer", "byteOffset" (default 0)
+ * and "byteLength": a bufferView, or the EXT_meshopt_compression object of
+ * one. Throws, its members' errors naming `where`, the error `placeholder`
+ * when the buffer is a placeholder without data, and one that starts with
+ * `what` ("bufferView 2's") when the range goes past the buffer's end.
+ */
+std::string_view BufferRange(const Document& document, const Json& range, const std::string& where,
+  const std::string& what, const std::string& placeholder);
+
 }
 
 #endif

@@ -152,21 +152,10 @@ std::string DecodeView(const Document& document, const Json& view, const Json& e
 
   // The compressed bytes, in a buffer with data.
   const std::uint64_t source = Unsigned(extension, "buffer", where);
-  Item(document.Root, "buffers", source, where);
-  if (document.Placeholders[source])
-  {
-    Fail(where + ": its buffer " + std::to_string(source) + " is a placeholder without data");
-  }
-  const std::string_view buffer = document.Buffers[source];
-  const std::uint64_t sourceOffset = Unsigned(extension, "byteOffset", where, 0);
-  const std::uint64_t sourceLength = Unsigned(extension, "byteLength", where);
-  if (sourceOffset > buffer.size() || sourceLength > buffer.size() - sourceOffset)
-  {
-    Fail(where + ": byteOffset " + std::to_string(sourceOffset) + " and byteLength " +
-      std::to_string(sourceLength) + " go past the end of buffer " + std::to_string(source) +
-      ", which has " + std::to_string(buffer.size()) + " bytes");
-  }
-  const auto* compressed = reinterpret_cast<const unsigned char*>(buffer.data() + sourceOffset);
+  const std::string_view compressedBytes = BufferRange(document, extension, where, where + ":",
+    where + ": its buffer " + std::to_string(source) + " is a placeholder without data");
+  const auto* compressed = reinterpret_cast<const unsigned char*>(compressedBytes.data());
+  const size_t sourceLength = compressedBytes.size();
 
   std::string bytes(length, '\0');
   const int status = mode == MeshoptMode::Attributes

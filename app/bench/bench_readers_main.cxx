@@ -2,7 +2,12 @@
 // the readers a user would take instead, on the same files: OpenMesh's OFF
 // reader (VTK has none; OpenMesh builds its halfedge structure as it reads)
 // and VTK's vtkGLTFReader (a multiblock of the primitives, node transforms
-// applied). The files are the mesh given (the bunny) and its Loop
+// applied); and against assimp, which reads all three and which shadelab
+// uses for the formats it has no reader of its own for (Importer::ReadFile
+// with the post-processing of shadelab's assimp reader, in process: the
+// parse alone, no VTK mesh made). Then what running assimp in a child
+// process costs shadelab's assimp reader: the child's start and end, and
+// the mesh's bytes through the pipe. The files are the mesh given (the bunny) and its Loop
 // subdivisions, with vertex normals, written into --out by
 // bench_readers_files; they are in the page cache when timed, so this
 // measures parsing, not the disk.
@@ -16,7 +21,13 @@
 #include "core/milliseconds.h"
 #include "core/report_text.h"
 #include "scene/mesh_input.h"
+#include "shadelabAssimpMeshBytes.h"
+#include "shadelabIsolatedRead.h"
 #include "vtkShadelabMeshReader.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -80,6 +91,14 @@ bool ReadOpenMesh(const std::string& path)
   return OpenMesh::IO::read_mesh(mesh, path);
 }
 
+bool ReadAssimp(const std::string& path)
+{
+  Assimp::Importer importer;
+  return importer.ReadFile(path,
+           aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+             aiProcess_ValidateDataStructure | aiProcess_PreTransformVertices) != nullptr;
+}
+
 // The bunny or its subdivision, with smooth vertex normals (no splitting,
 // so that every format holds the same points).
 vtkSmartPointer<vtkPolyData> MeshAtLevel(vtkPolyData* base, int level)
@@ -115,13 +134,49 @@ void Row(const std::string& path, vtkIdType triangles, int runs)
                               runs, [&] { return ReadOpenMesh(path); }, "OpenMesh on " + name)
                           : MedianMs(
                               runs, [&] { return ReadVtkGltf(path); }, "vtkGLTFReader on " + name);
-  std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", name.c_str(),
+  const double assimp = MedianMs(
+    runs, [&] { return ReadAssimp(path); }, "assimp on " + name);
+  std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", name.c_str(),
     FormatNumber("%.0f", static_cast<double>(triangles)).c_str(),
     FormatNumber("%.1f", megabytes).c_str(), FormatNumber("%.1f", ours).c_str(),
     FormatNumber("%.0f", megabytes / (ours / 1000)).c_str(),
     FormatNumber("%.1f", static_cast<double>(triangles) / (ours / 1000) / 1e6).c_str(),
     off ? "OpenMesh" : "vtkGLTFReader", FormatNumber("%.1f", peer).c_str(),
-    FormatNumber("%.1f", peer / ours).c_str());
+    FormatNumber("%.1f", peer / ours).c_str(), FormatNumber("%.1f", assimp).c_str(),
+    FormatNumber("%.1f", assimp / ours).c_str());
+  std::fflush(stdout);
+}
+
+// The child process of shadelab's assimp reader, on its own: started,
+// handed back an AssimpMesh of `mesh`'s size (points, normals, triangles),
+// ended, and the bytes decoded.
+void IsolationRow(vtkPolyData* mesh, int runs)
+{
+  shadelab::AssimpMesh sized;
+  sized.Mesh.Points.assign(3 * mesh->GetNumberOfPoints(), 0.5);
+  sized.Mesh.Normals.assign(3 * mesh->GetNumberOfPoints(), 0.5f);
+  sized.Mesh.FaceIds.assign(3 * mesh->GetNumberOfPolys(), 0);
+  sized.Mesh.FaceOffsets.assign(mesh->GetNumberOfPolys() + 1, 0);
+  sized.Mesh.Parts.assign(mesh->GetNumberOfPolys(), 0);
+  const double megabytes = static_cast<double>(shadelab::EncodeAssimpMesh(sized).size()) / 1e6;
+  const double empty = MedianMs(
+    runs, [] { return shadelab::ReadIsolated("bench", [] { return std::string(); }).empty(); },
+    "an empty child");
+  const double full = MedianMs(
+    runs,
+    [&]
+    {
+      return !shadelab::DecodeAssimpMesh(
+        shadelab::ReadIsolated("bench",
+          [&] {
+            return shadelab::EncodeAssimpMesh(sized);
+          })).Mesh.Points.empty();
+    },
+    "a child with the mesh");
+  std::printf("| %s | %s | %s | %s |\n",
+    FormatNumber("%.0f", static_cast<double>(mesh->GetNumberOfPolys())).c_str(),
+    FormatNumber("%.1f", megabytes).c_str(), FormatNumber("%.2f", empty).c_str(),
+    FormatNumber("%.1f", full).c_str());
   std::fflush(stdout);
 }
 }
@@ -157,11 +212,14 @@ int main(int argc, char** argv)
               "in the page cache\n\n",
     date, shadelab::CpuModel().c_str(), vtkVersion::GetVTKVersion(), runs);
   std::printf("| file | triangles | MB | shadelab ms | MB/s | M triangles/s | peer | peer ms | "
-              "peer / shadelab |\n|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
+              "peer / shadelab | assimp ms | assimp / shadelab |\n"
+              "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|\n");
   const std::string stem = std::filesystem::path(meshFile).stem().string();
+  std::vector<vtkSmartPointer<vtkPolyData>> meshes;
   for (const int level : levels)
   {
     vtkSmartPointer<vtkPolyData> mesh = MeshAtLevel(reader->GetOutput(), level);
+    meshes.push_back(mesh);
     const std::string path = out + "/" + stem + (level ? "-loop" + std::to_string(level) : "");
     for (const std::string& error : { shadelab::bench_readers::WriteOff(mesh, path),
            shadelab::bench_readers::WriteGltf(mesh, path, false),
@@ -177,6 +235,16 @@ int main(int argc, char** argv)
     {
       Row(path + extension, mesh->GetNumberOfPolys(), runs);
     }
+  }
+  std::printf("\nassimp's child process (shadelab's assimp reader), median of %d: started and "
+              "ended empty, and handing back a mesh of the file's size (points, normals, "
+              "triangles, parts) encoded, piped and decoded\n\n"
+              "| triangles | MB piped | empty child ms | child with the mesh ms |\n"
+              "|---:|---:|---:|---:|\n",
+    runs);
+  for (vtkPolyData* mesh : meshes)
+  {
+    IsolationRow(mesh, runs);
   }
   return 0;
 }

@@ -16,9 +16,14 @@ namespace shadelab
 {
 namespace
 {
-// The answer's first byte: what follows.
-constexpr char Bytes = 'B'; // the bytes `read` returned
-constexpr char Error = 'E'; // an error's code (8 bytes) and message
+// The answer: a header (what follows, and its length), then that many bytes.
+constexpr std::uint64_t Bytes = 'B'; // the bytes `read` returned
+constexpr std::uint64_t Error = 'E'; // an error's code (8 bytes) and message
+struct Header                        // two words: no padding
+{
+  std::uint64_t Kind = 0;
+  std::uint64_t Length = 0;
+};
 
 MeshReadError SystemError(const char* call)
 {
@@ -52,11 +57,11 @@ private:
   int Fd;
 };
 
-bool WriteAll(int fd, const std::string& bytes)
+bool WriteAll(int fd, const char* bytes, size_t size)
 {
-  for (size_t done = 0; done < bytes.size();)
+  for (size_t done = 0; done < size;)
   {
-    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
+    const ssize_t n = write(fd, bytes + done, size - done);
     if (n < 0 && errno != EINTR)
     {
       return false;
@@ -64,6 +69,28 @@ bool WriteAll(int fd, const std::string& bytes)
     done += n > 0 ? static_cast<size_t>(n) : 0;
   }
   return true;
+}
+
+// Reads `size` bytes unless the pipe ends first; whether it read them all.
+bool ReadAll(int fd, char* bytes, size_t size)
+{
+  for (size_t done = 0; done < size;)
+  {
+    const ssize_t n = ::read(fd, bytes + done, size - done);
+    if (n == 0 || (n < 0 && errno != EINTR))
+    {
+      return false;
+    }
+    done += n > 0 ? static_cast<size_t>(n) : 0;
+  }
+  return true;
+}
+
+bool WriteAnswer(int fd, std::uint64_t kind, const std::string& bytes)
+{
+  const Header header{ kind, bytes.size() };
+  return WriteAll(fd, reinterpret_cast<const char*>(&header), sizeof header) &&
+    WriteAll(fd, bytes.data(), bytes.size());
 }
 
 // The child's part: never returns.
@@ -81,36 +108,19 @@ bool WriteAll(int fd, const std::string& bytes)
   {
     _exit(1);
   }
-  std::string message;
+  bool written = false;
   try
   {
-    message = Bytes + read();
+    written = WriteAnswer(answer, Bytes, read());
   }
   catch (const std::exception&)
   {
     const MeshReadError error = CurrentReadError();
     const std::uint64_t code = error.GetCode();
-    message = Error + std::string(reinterpret_cast<const char*>(&code), sizeof code) + error.what();
+    written = WriteAnswer(
+      answer, Error, std::string(reinterpret_cast<const char*>(&code), sizeof code) + error.what());
   }
-  _exit(WriteAll(answer, message) ? 0 : 1);
-}
-
-std::string ReadAll(int fd)
-{
-  std::string bytes;
-  char buffer[65536];
-  for (;;)
-  {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n > 0)
-    {
-      bytes.append(buffer, static_cast<size_t>(n));
-    }
-    else if (n == 0 || errno != EINTR)
-    {
-      return bytes;
-    }
-  }
+  _exit(written ? 0 : 1);
 }
 }
 
@@ -134,10 +144,19 @@ std::string ReadIsolated(const char* who, const std::function<std::string()>& re
     Child(parent, to.Get(), read);
   }
   to.Close(); // so that the child's end is the last, and its exit the answer's end
+  // The answer read straight into the string it is returned in. A child
+  // that ends early leaves it short: then its status tells what happened.
+  Header header;
   std::string answer;
+  bool whole = false;
   try
   {
-    answer = ReadAll(from.Get());
+    whole = ReadAll(from.Get(), reinterpret_cast<char*>(&header), sizeof header);
+    if (whole)
+    {
+      answer.resize(header.Length);
+      whole = ReadAll(from.Get(), answer.data(), answer.size());
+    }
   }
   catch (...) // out of memory for the answer: the child is not left behind
   {
@@ -149,18 +168,17 @@ std::string ReadIsolated(const char* who, const std::function<std::string()>& re
   while (waitpid(child, &status, 0) < 0 && errno == EINTR)
   {
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !answer.empty())
+  if (whole && WIFEXITED(status) && WEXITSTATUS(status) == 0)
   {
-    if (answer[0] == Bytes)
+    if (header.Kind == Bytes)
     {
-      answer.erase(0, 1);
       return answer;
     }
     std::uint64_t code = 0;
-    if (answer[0] == Error && answer.size() >= 1 + sizeof code)
+    if (header.Kind == Error && answer.size() >= sizeof code)
     {
-      std::memcpy(&code, answer.data() + 1, sizeof code);
-      throw MeshReadError(answer.substr(1 + sizeof code), static_cast<unsigned long>(code));
+      std::memcpy(&code, answer.data(), sizeof code);
+      throw MeshReadError(answer.substr(sizeof code), static_cast<unsigned long>(code));
     }
   }
   const char* signal = WIFSIGNALED(status) ? sigabbrev_np(WTERMSIG(status)) : nullptr;

@@ -272,20 +272,22 @@ std::string_view ViewBytes(
   {
     return decoded->second;
   }
-  const std::uint64_t bufferIndex = Unsigned(view, "buffer", viewName);
   return BufferRange(document, view, viewName, viewName + "'s",
-    viewName + " is not compressed, but its buffer " + std::to_string(bufferIndex) +
-      " is an EXT_meshopt_compression placeholder without data");
+    [&](std::uint64_t buffer)
+    {
+      return viewName + " is not compressed, but its buffer " + std::to_string(buffer) +
+        " is an EXT_meshopt_compression placeholder without data";
+    });
 }
 
 std::string_view BufferRange(const Document& document, const Json& range, const std::string& where,
-  const std::string& what, const std::string& placeholder)
+  const std::string& what, const std::function<std::string(std::uint64_t)>& placeholder)
 {
   const std::uint64_t bufferIndex = Unsigned(range, "buffer", where);
   Item(document.Root, "buffers", bufferIndex, where);
   if (document.Placeholders[bufferIndex])
   {
-    Fail(placeholder);
+    Fail(placeholder(bufferIndex));
   }
   const std::string_view buffer = document.Buffers[bufferIndex];
   const std::uint64_t offset = Unsigned(range, "byteOffset", where, 0);

@@ -25,6 +25,7 @@
 #include "shadelabGLTFJson.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -78,12 +79,13 @@ std::string_view ViewBytes(
 /**
  * The bytes that `range` names by its "buffer", "byteOffset" (default 0)
  * and "byteLength": a bufferView, or the EXT_meshopt_compression object of
- * one. Throws, its members' errors naming `where`, the error `placeholder`
- * when the buffer is a placeholder without data, and one that starts with
+ * one. Throws, its members' errors naming `where`, the error that
+ * `placeholder` makes of the buffer's index when the buffer is a
+ * placeholder without data (made only then), and one that starts with
  * `what` ("bufferView 2's") when the range goes past the buffer's end.
  */
 std::string_view BufferRange(const Document& document, const Json& range, const std::string& where,
-  const std::string& what, const std::string& placeholder);
+  const std::string& what, const std::function<std::string(std::uint64_t)>& placeholder);
 
 }
 

@@ -151,9 +151,10 @@ std::string DecodeView(const Document& document, const Json& view, const Json& e
   }
 
   // The compressed bytes, in a buffer with data.
-  const std::uint64_t source = Unsigned(extension, "buffer", where);
   const std::string_view compressedBytes = BufferRange(document, extension, where, where + ":",
-    where + ": its buffer " + std::to_string(source) + " is a placeholder without data");
+    [&](std::uint64_t buffer) {
+      return where + ": its buffer " + std::to_string(buffer) + " is a placeholder without data";
+    });
   const auto* compressed = reinterpret_cast<const unsigned char*>(compressedBytes.data());
   const size_t sourceLength = compressedBytes.size();
 

@@ -121,6 +121,21 @@ Rgb ParseRgb(const std::string& text)
   return c;
 }
 
+Vec3 ParseAttenuation(const std::string& text)
+{
+  const Vec3 c = ParseTriple(text, "an attenuation C0,C1,C2");
+  if (c[0] < 0 || c[1] < 0 || c[2] < 0)
+  {
+    throw std::invalid_argument("attenuation '" + text + "' has a negative coefficient");
+  }
+  if (c == Vec3{ 0, 0, 0 })
+  {
+    throw std::invalid_argument(
+      "attenuation '" + text + "' is all zero: the light would be infinitely bright");
+  }
+  return c;
+}
+
 ImageSize ParseSize(const std::string& text)
 {
   const auto x = text.find_first_of("xX");
@@ -173,8 +188,11 @@ std::string RenderedSize(const SceneOptions& o, ImageSize& rendered)
   return {};
 }
 
-Light ParseLight(const std::string& text)
+Light ParseLight(const std::string& spec)
 {
+  // SPEC[@C0,C1,C2]: the light's own attenuation after the '@'.
+  const auto at = spec.find('@');
+  const std::string text = spec.substr(0, at);
   const auto parts = Split(text, ':');
   Light light;
   const std::string& kind = parts[0];
@@ -209,6 +227,15 @@ Light ParseLight(const std::string& text)
   if (parts.size() > colourAt)
   {
     light.Color = ParseRgb(parts[colourAt]);
+  }
+  if (at != std::string::npos)
+  {
+    if (!GeometryOf(light.Kind).Position)
+    {
+      throw std::invalid_argument(
+        "'" + spec + "': a " + kind + " light has no attenuation (it has no position)");
+    }
+    light.Attenuation = ParseAttenuation(spec.substr(at + 1));
   }
   return light;
 }

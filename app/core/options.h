@@ -145,6 +145,9 @@ struct SceneOptions
   // material table, whose ka values were chosen for it.
   Rgb Ambient{ 0.2, 0.2, 0.2 };
   std::vector<Light> Lights; // empty: one white point light at the camera
+  // Point and spot lights' Il / (C0 + C1*d + C2*d^2) where a light has no
+  // attenuation of its own (EffectiveLights); 1,0,0 is none.
+  Vec3 Attenuation = NoAttenuation;
   ImageSize Size;
   int Supersampling = 1; // --ssaa N: N x N samples per pixel, box-averaged in float
   std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
@@ -221,6 +224,7 @@ Vec3 ParseVec3(const std::string& text);
 Vec3 ParseDirection(const std::string& text); // a Vec3 of non-zero length
 double ParseNonNegative(const std::string& text);
 Rgb ParseRgb(const std::string& text);
+Vec3 ParseAttenuation(const std::string& text); // C0,C1,C2: none negative, not all zero
 ImageSize ParseSize(const std::string& text);
 Pixel ParsePixel(const std::string& text); // "X,Y", each a whole number >= 0
 Light ParseLight(const std::string& text);

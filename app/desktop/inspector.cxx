@@ -294,7 +294,8 @@ void Inspector::FollowCamera()
   {
     return;
   }
-  const std::vector<Light> lights = CameraLights(this->State.Scene);
+  const std::vector<Light> lights =
+    WithAttenuation(CameraLights(this->State.Scene), this->State.Scene.Attenuation);
   for (Slot& slot : this->Slots)
   {
     if (const BuiltScene* shown = slot.Scenes.GetShown())

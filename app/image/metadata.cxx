@@ -84,7 +84,12 @@ std::string QuoteCommandLine(int argc, const char* const* argv)
 
 nlohmann::ordered_json DescribeLight(const Light& light)
 {
-  return LightJson(light, "half_angle_deg");
+  nlohmann::ordered_json j = LightJson(light, "half_angle_deg");
+  if (!Attenuated(light))
+  {
+    j.erase("attenuation"); // resolved to 1,0,0: the light does not fall off
+  }
+  return j;
 }
 
 nlohmann::ordered_json DescribeMaterial(const Material& m)

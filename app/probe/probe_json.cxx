@@ -14,6 +14,15 @@ ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model
 {
   ordered_json j = DescribeLight(light);
   j["L"] = t.L;
+  if (Attenuated(light))
+  {
+    // The light's C0, C1, C2 as the picture's metadata names them
+    // "attenuation"; here that name is the factor they give at P.
+    j["attenuation_coefficients"] = j["attenuation"];
+    j.erase("attenuation");
+    j["distance"] = t.Distance;
+    j["attenuation"] = t.Attenuation;
+  }
   if (GeometryOf(light.Kind).Cone)
   {
     j["cos_angle"] = t.SpotCos;

@@ -87,6 +87,14 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
   const std::string in = indent + "  ";
   out.Add(in, "L = " + ProbeTriple(t.L),
     g.Position ? "normalize(light - P)" : "minus the direction it shines along");
+  if (Attenuated(light))
+  {
+    const Vec3& c = *light.Attenuation;
+    out.Add(in, "d = " + ProbeNumber(t.Distance), "|light - P|");
+    out.Add(in, "attenuation = " + ProbeNumber(t.Attenuation),
+      "1 / (" + ProbeNumber(c[0]) + " + " + ProbeNumber(c[1]) + "*d + " + ProbeNumber(c[2]) +
+        "*d^2)");
+  }
   if (g.Cone)
   {
     out.Add(in, "cos angle = " + ProbeNumber(t.SpotCos),
@@ -95,7 +103,9 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
                 : "outside the cone: no light");
     out.Add(in, "spot factor = " + ProbeNumber(t.SpotFactor), "(cos angle)^e, 1 for e = 0");
   }
-  out.Add(in, "Il = " + ProbeTriple(t.Il), "the light's colour reaching P");
+  out.Add(in, "Il = " + ProbeTriple(t.Il),
+    Attenuated(light) ? "the light's colour reaching P, times the attenuation"
+                      : "the light's colour reaching P");
   out.Add(in, "N.L = " + ProbeNumber(t.NdotL),
     !t.Reaches      ? "the light does not reach P: no diffuse, no specular"
       : t.Lit       ? "> 0: lit"

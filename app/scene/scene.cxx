@@ -23,15 +23,28 @@ bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh)
   return !options.OverridesKd() && mesh->GetPointData()->GetArray(ColorsArrayName);
 }
 
+std::vector<Light> WithAttenuation(std::vector<Light> lights, const Vec3& attenuation)
+{
+  for (Light& light : lights)
+  {
+    if (GeometryOf(light.Kind).Position)
+    {
+      light.Attenuation = light.Attenuation.value_or(attenuation);
+    }
+  }
+  return lights;
+}
+
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition)
 {
   if (!options.Lights.empty())
   {
-    return options.Lights;
+    return WithAttenuation(options.Lights, options.Attenuation);
   }
   Light atCamera; // the lecture: one white point light, usually at the viewpoint
   atCamera.Kind = LightKind::Point;
   atCamera.Position = cameraPosition;
+  atCamera.Attenuation = options.Attenuation;
   return { atCamera };
 }
 
@@ -119,6 +132,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
 {
   BuiltScene scene;
   scene.Mesh = mesh;
+  const std::vector<Light> resolved = WithAttenuation(lights, options.Attenuation);
   const std::vector<ScenePart> parts = SceneParts(options, mesh, images);
   const std::vector<std::vector<int>> groups = PartsByLook(parts);
   // The same mesh, rule and grouping: every actor keeps its buffers and program.
@@ -133,7 +147,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Parts = groups[g];
     drawn.Shading = vtkSmartPointer<vtkShadelabShading>::New();
     drawn.Shading->SetIllumination(options.ShadingRule, options.ReflectionModel,
-      parts[drawn.Parts.front()].Surface, options.Ambient, lights);
+      parts[drawn.Parts.front()].Surface, options.Ambient, resolved);
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);

@@ -69,7 +69,14 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
  */
 bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh);
 
-/** The lights the scene uses: the given ones, or the lecture's default. */
+/**
+ * `lights` with each point and spot light's attenuation resolved: its own,
+ * else `attenuation` (the scene's). Resolved lights stay as they are.
+ */
+std::vector<Light> WithAttenuation(std::vector<Light> lights, const Vec3& attenuation);
+
+/** The lights the scene uses, resolved (WithAttenuation): the given ones, or the lecture's default.
+ */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
 
 /**

@@ -13,7 +13,7 @@ namespace
 using namespace scene_file;
 
 const std::vector<std::string> LightKeys{ "kind", "position", "direction", "color", "half_angle",
-  "exponent" };
+  "exponent", "attenuation" };
 
 // A light's triples as --light writes them: the Triple kind's text.
 std::string Triple(const Vec3& v)
@@ -34,7 +34,8 @@ std::string LightText(const json& light, const std::string& path)
   // No key the kind has not; then every key it has (a spot's exponent may
   // be left out).
   const std::pair<const char*, bool> keys[] = { { "position", parts.Position },
-    { "direction", parts.Direction }, { "half_angle", parts.Cone }, { "exponent", parts.Cone } };
+    { "direction", parts.Direction }, { "half_angle", parts.Cone }, { "exponent", parts.Cone },
+    { "attenuation", parts.Position } };
   for (const auto& [key, has] : keys)
   {
     if (!has && light.contains(key))
@@ -69,6 +70,10 @@ std::string LightText(const json& light, const std::string& path)
   {
     text += ":" + scene_file::Triple(light["color"], path + ".color");
   }
+  if (light.contains("attenuation"))
+  {
+    text += "@" + scene_file::Triple(light["attenuation"], path + ".attenuation");
+  }
   return text;
 }
 
@@ -102,7 +107,10 @@ nlohmann::ordered_json LightSchema()
             { "color", { { "$ref", "#/$defs/color" } } },
             { "half_angle",
               { { "type", "number" }, { "exclusiveMinimum", 0 }, { "maximum", 90 } } },
-            { "exponent", { { "type", "number" }, { "minimum", 0 } } } } },
+            { "exponent", { { "type", "number" }, { "minimum", 0 } } },
+            { "attenuation",
+              { { "$ref", "#/$defs/attenuation" },
+                { "description", "Its own C0, C1, C2, instead of the scene's" } } } } },
         { "required", { "kind" } }, { "additionalProperties", false } } } };
 }
 }
@@ -124,7 +132,12 @@ std::string LightArgument(const Light& light)
     text +=
       ":" + settings::NumberText(light.HalfAngleDeg) + ":" + settings::NumberText(light.Exponent);
   }
-  return text + ":" + Triple(light.Color);
+  text += ":" + Triple(light.Color);
+  if (light.Attenuation)
+  {
+    text += "@" + Triple(*light.Attenuation);
+  }
+  return text;
 }
 
 nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey)
@@ -146,6 +159,10 @@ nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey)
     j[halfAngleKey] = light.HalfAngleDeg;
     j["exponent"] = light.Exponent;
   }
+  if (light.Attenuation)
+  {
+    j["attenuation"] = *light.Attenuation;
+  }
   return j;
 }
 
@@ -158,7 +175,8 @@ Setting LightsSetting()
   s.Key = "lights";
   s.ValueName = "SPEC";
   s.Help = "A light, repeatable: point:X,Y,Z[:R,G,B] | directional:DX,DY,DZ[:R,G,B] | "
-           "spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]]. "
+           "spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]], a point or spot light "
+           "followed by @C0,C1,C2 for its own attenuation (--attenuation). "
            "None given: one white point light at the camera";
   s.Default = "one white point light at the camera";
   s.Commands = PictureCommands;
@@ -217,6 +235,7 @@ Setting LightsSetting()
     spot.HalfAngleDeg = 12.5;
     spot.Exponent = 2.0 / 3;
     spot.Color = { 0.9, 0.8, 0.7 };
+    spot.Attenuation = Vec3{ 1, 0.25, 1.0 / 16 };
     Light sun;
     sun.Kind = LightKind::Directional;
     sun.Direction = { 1, 2, 3 };

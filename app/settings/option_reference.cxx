@@ -48,7 +48,10 @@ std::string Describe(const ordered_json& schema)
   }
   if (schema.contains("$ref"))
   {
-    return schema["$ref"] == "#/$defs/color" ? "[r, g, b], none negative" : "[x, y, z]";
+    const std::string ref = schema["$ref"];
+    return ref == "#/$defs/color"    ? "[r, g, b], none negative"
+      : ref == "#/$defs/attenuation" ? "[c0, c1, c2], none negative, not all zero"
+                                     : "[x, y, z]";
   }
   const std::string type = schema.value("type", "");
   if (type == "number" || type == "integer")

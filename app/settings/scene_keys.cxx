@@ -137,6 +137,7 @@ nlohmann::ordered_json SceneSchemaJson()
     { "$defs",
       { { "triple", triple },
         { "color", { { "$ref", "#/$defs/triple" }, { "items", { { "minimum", 0 } } } } },
+        { "attenuation", { { "$ref", "#/$defs/color" }, { "not", { { "const", { 0, 0, 0 } } } } } },
         { "shot", { { "type", "object" }, { "properties", shot } } } } } };
 }
 }

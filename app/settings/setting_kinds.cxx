@@ -139,6 +139,8 @@ Vec3 Triple::Parse(const std::string& text) const
       return ParseDirection(text);
     case Colour:
       return ParseRgb(text);
+    case Attenuation:
+      return ParseAttenuation(text);
   }
   throw std::logic_error("Triple: no such meaning");
 }
@@ -150,7 +152,10 @@ std::string Triple::Text(const Vec3& v) const
 
 ordered_json Triple::Schema() const
 {
-  return { { "$ref", this->Is == Colour ? "#/$defs/color" : "#/$defs/triple" } };
+  return { { "$ref",
+    this->Is == Colour          ? "#/$defs/color"
+      : this->Is == Attenuation ? "#/$defs/attenuation"
+                                : "#/$defs/triple" } };
 }
 
 Vec3 Triple::Sample(const Vec3& other) const

@@ -151,7 +151,8 @@ struct Triple
   {
     Point,
     Direction,
-    Colour
+    Colour,
+    Attenuation // C0, C1, C2 (ParseAttenuation)
   } Is;
 
   static constexpr bool IsFlag = false, ReadsDirectly = false;

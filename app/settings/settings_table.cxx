@@ -64,6 +64,12 @@ std::vector<Setting> MakeSettings()
       Choice<TextureFilter>{ "texture filter" }, SHADELAB_FIELD(TextureFiltering)),
     Plain({ "--ambient", "ambient", "R,G,B", "Ambient light Ia" }, colour, SHADELAB_FIELD(Ambient)),
     LightsSetting(),
+    Plain({ "--attenuation", "attenuation", "C0,C1,C2",
+            "Point and spot lights fall off with the distance d from them in world units: Il / "
+            "(C0 + C1*d + C2*d^2), for each light without attenuation of its own (--light's "
+            "@C0,C1,C2, a scene file light's \"attenuation\")",
+            PictureCommands, "1,0,0: none" },
+      Triple{ Triple::Attenuation }, SHADELAB_FIELD(Attenuation)),
     Plain({ "--camera-position", "camera.position", "X,Y,Z", "Camera position" }, point,
       SHADELAB_FIELD(CameraPosition)),
     Plain({ "--camera-focal-point", "camera.focal_point", "X,Y,Z", "Point the camera looks at" },

@@ -40,6 +40,16 @@ bool HasDirections(const ShaderFeatures& f)
   return Has(f, LightKind::Directional) || Has(f, LightKind::Spot);
 }
 
+// Distance attenuation, compiled in where a light has it (the oracle's
+// LightAt).
+const char* const AttenuationSource = R"glsl(uniform vec3 shadelabLightAttenuation[$];
+// 1 / (C0 + C1*d + C2*d^2): a point or spot light's fall-off at distance d.
+float shadelabAttenuation(vec3 c, float d)
+{
+  return 1.0 / (c.x + d * (c.y + d * c.z));
+}
+)glsl";
+
 // Shared by the per-scene and the all-features code: the constants of the
 // oracle's guards, its SpecularFalloff, and the view direction.
 const char* const GuardSource = R"glsl(const float shadelabTinyLength = 1e-20;
@@ -197,6 +207,10 @@ std::string DeclarationsSource(const ShaderFeatures& f)
   {
     s += LightUniforms(f.Lights.size(), HasPositions(f), HasDirections(f), Has(f, LightKind::Spot));
   }
+  if (f.Attenuation)
+  {
+    s += FillGlsl(AttenuationSource, std::to_string(f.Lights.size()));
+  }
   return s + GuardSource;
 }
 
@@ -224,9 +238,10 @@ const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N -
 }
 )glsl";
 
-// Light i's term, unrolled: its kind's direction, attenuation and guard;
+// Light i's term, unrolled: its kind's direction, distance attenuation
+// (with `attenuation`), spot fall-off and guard;
 // apart, its diffuse and specular parts added to D and S.
-std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
+std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenuation, bool apart)
 {
   const std::string index = std::to_string(i);
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
@@ -245,6 +260,13 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool apart)
 )glsl",
       index);
     guard = "distance > shadelabTinyLength && ";
+    if (attenuation)
+    {
+      s +=
+        FillGlsl("  Il *= shadelabAttenuation(shadelabLightAttenuation[$], distance); // shadelab: "
+                 "attenuation\n",
+          index);
+    }
   }
   if (g.Cone)
   {
@@ -333,7 +355,7 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   }
   for (size_t i = 0; i < f.Lights.size(); ++i)
   {
-    s += LightTermSource(i, f.Lights[i], f.Specular, apart);
+    s += LightTermSource(i, f.Lights[i], f.Specular, f.Attenuation, apart);
   }
   return s + (apart ? "}\n" : R"glsl(  return I;
 }

@@ -44,6 +44,12 @@ LightGeometry GeometryOf(LightKind kind)
   throw std::logic_error("GeometryOf: not a light kind");
 }
 
+bool Attenuated(const Light& light)
+{
+  return GeometryOf(light.Kind).Position &&
+    light.Attenuation.value_or(NoAttenuation) != NoAttenuation;
+}
+
 bool UsesVertexNormals(Shading rule)
 {
   switch (rule)

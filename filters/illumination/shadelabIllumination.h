@@ -8,6 +8,7 @@
 #include "shadelabNames.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -105,7 +106,18 @@ struct Light
   Rgb Color{ 1, 1, 1 };
   double HalfAngleDeg = 0; // spot cut-off
   double Exponent = 0;     // spot fall-off (cos angle)^e; 0 is a hard-edged cone
+  // Point and spot: Il is divided by C0 + C1*d + C2*d^2, d the distance from
+  // the light in world units. Its own coefficients; none: the scene's
+  // (EffectiveLights), for this library NoAttenuation.
+  std::optional<Vec3> Attenuation;
 };
+
+/** C0, C1, C2 = 1, 0, 0: no attenuation, and no code for it. */
+constexpr Vec3 NoAttenuation{ 1, 0, 0 };
+
+/** Whether the light's Il falls off with distance: a point or spot light whose coefficients are not
+ * NoAttenuation. */
+bool Attenuated(const Light& light);
 
 /**
  * The lecture's material table (data/materials.json, compiled in), in the

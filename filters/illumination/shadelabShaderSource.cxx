@@ -15,10 +15,10 @@ const char* const TermMarker = "// shadelab: ";
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
-    this->Specular == o.Specular && this->VertexKd == o.VertexKd &&
-    this->KdTexture == o.KdTexture && this->KaTexture == o.KaTexture &&
-    this->KsTexture == o.KsTexture && this->AllFeatures == o.AllFeatures &&
-    this->BehindLines == o.BehindLines;
+    this->Specular == o.Specular && this->Attenuation == o.Attenuation &&
+    this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
+    this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
+    this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
 }
 
 namespace

@@ -24,6 +24,10 @@ struct ShaderFeatures
   Reflection Model = Reflection::BlinnPhong;
   std::vector<LightKind> Lights;
   bool Specular = true; // false when ks is zero: no specular code at all
+  // A point or spot light falls off with distance (Attenuated): every such
+  // light's Il is divided by C0 + C1*d + C2*d^2 from its uniform
+  // (1, 0, 0 for those that do not, which divides exactly by 1).
+  bool Attenuation = false;
   // kd per vertex, from the mesh's colours (VertexKdAttributeName): the
   // vertex that lights uses its own (gouraud; flat's provoking vertex), phong
   // and none interpolate it to the fragment.

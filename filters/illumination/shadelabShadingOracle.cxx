@@ -24,7 +24,8 @@ bool Usable(double len, double shortest)
 }
 
 // The light's direction L (unit, towards the light) and its colour as it
-// reaches P, with the spot's cone and fall-off: the first fields of terms.
+// reaches P, with the distance attenuation and the spot's cone and
+// fall-off: the first fields of terms.
 void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
 {
   t.Il = light.Color;
@@ -44,6 +45,13 @@ void LightAt(const FrameLight& light, const Vec3& P, LightTerms& t)
   }
   t.L = (1 / distance) * toLight;
   t.Reaches = true;
+  t.Distance = distance;
+  if (light.Attenuation != NoAttenuation)
+  {
+    const Vec3& c = light.Attenuation;
+    t.Attenuation = 1 / (c[0] + distance * (c[1] + distance * c[2]));
+    t.Il = t.Attenuation * t.Il;
+  }
   if (g.Cone)
   {
     t.SpotCos = dot(-t.L, light.Direction);
@@ -119,6 +127,10 @@ FrameLight ToFrame(const Light& light, const double r[3][3], const Vec3& t)
   f.Color = light.Color;
   f.CosCutoff = std::cos(light.HalfAngleDeg * 3.14159265358979323846 / 180);
   f.Exponent = light.Exponent;
+  if (Attenuated(light))
+  {
+    f.Attenuation = *light.Attenuation;
+  }
   return f;
 }
 

@@ -23,8 +23,9 @@ struct FrameLight
   Vec3 Position{};  // point, spot
   Vec3 Direction{}; // directional, spot: unit, the direction the light shines along
   Rgb Color{ 1, 1, 1 };
-  double CosCutoff = 0; // spot: cos(half-angle)
-  double Exponent = 0;  // spot
+  double CosCutoff = 0;             // spot: cos(half-angle)
+  double Exponent = 0;              // spot
+  Vec3 Attenuation = NoAttenuation; // point, spot: C0, C1, C2
 };
 
 /** Everything the equation needs besides the surface point. */
@@ -62,10 +63,12 @@ struct LightTerms
   // It reaches P: it has a direction there (a point light is not at P itself)
   // and, a spot, P lies inside its cone.
   bool Reaches = false;
-  Vec3 L{};              // unit, towards the light; a directional light's is minus its direction
-  double SpotCos = 1;    // spot: cos of the angle between its axis and the ray from it to P
-  double SpotFactor = 1; // spot: (SpotCos)^e inside the cone (1 for e = 0), 0 outside
-  Rgb Il{};              // its colour as it reaches P: the colour times SpotFactor
+  Vec3 L{};               // unit, towards the light; a directional light's is minus its direction
+  double SpotCos = 1;     // spot: cos of the angle between its axis and the ray from it to P
+  double SpotFactor = 1;  // spot: (SpotCos)^e inside the cone (1 for e = 0), 0 outside
+  double Distance = 0;    // point, spot: from the light to P
+  double Attenuation = 1; // point, spot: 1 / (C0 + C1*d + C2*d^2), d the Distance
+  Rgb Il{};               // its colour as it reaches P: the colour times SpotFactor and Attenuation
   double NdotL = 0;
   bool Lit = false; // N.L > 0 (taken as N.L > 1e-5, see Illuminate): it adds a diffuse term
   // Blinn-Phong: H = normalize(L + V), or 0 where L = -V leaves it undefined;

@@ -102,6 +102,7 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   {
     this->Features.Lights.push_back(light.Kind);
   }
+  this->Features.Attenuation = std::any_of(lights.begin(), lights.end(), Attenuated);
   this->Features.Specular = material.Ks[0] != 0 || material.Ks[1] != 0 || material.Ks[2] != 0;
   this->Surface = material;
   this->Ambient = ambient;
@@ -180,10 +181,11 @@ void vtkShadelabShading::SetLightPlacement(const std::vector<Light>& lights)
 {
   const bool sameKinds = lights.size() == this->Lights.size() &&
     std::equal(lights.begin(), lights.end(), this->Lights.begin(),
-      [](const Light& a, const Light& b) { return a.Kind == b.Kind; });
+      [](const Light& a, const Light& b) { return a.Kind == b.Kind; }) &&
+    std::any_of(lights.begin(), lights.end(), Attenuated) == this->Features.Attenuation;
   if (!sameKinds)
   {
-    vtkErrorMacro("SetLightPlacement: other kinds of lights need SetIllumination");
+    vtkErrorMacro("SetLightPlacement: other kinds of lights or attenuation need SetIllumination");
     return;
   }
   this->Lights = lights;
@@ -325,10 +327,12 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   if (n > 0)
   {
     std::vector<std::array<float, 3>> colors, positions, directions;
+    std::vector<std::array<float, 3>> attenuations;
     std::vector<float> cutoffs, exponents;
     for (const Light& light : this->Lights)
     {
       const FrameLight f = ToFrame(light, rotation, translation);
+      attenuations.push_back(toFloat(f.Attenuation));
       colors.push_back(toFloat(f.Color));
       positions.push_back(toFloat(f.Position));
       directions.push_back(toFloat(f.Direction));
@@ -342,6 +346,11 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
       "shadelabLightDirection", n, reinterpret_cast<Triple>(directions.data()));
     program->SetUniform1fv("shadelabLightCosCutoff", n, cutoffs.data());
     program->SetUniform1fv("shadelabLightExponent", n, exponents.data());
+    if (this->Features.Attenuation)
+    {
+      program->SetUniform3fv(
+        "shadelabLightAttenuation", n, reinterpret_cast<Triple>(attenuations.data()));
+    }
   }
   if (this->Features.AllFeatures)
   {

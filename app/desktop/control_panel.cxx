@@ -3,6 +3,7 @@
 #include "desktop/color_edit.h"
 #include "desktop/light_list_edit.h"
 #include "desktop/shininess_edit.h"
+#include "desktop/triple_edit.h"
 #include "vtkShadelabMeshNormals.h"
 
 #include <QCheckBox>
@@ -49,6 +50,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , MaterialRow(new QComboBox(this))
   , Ns(new ShininessEdit(this))
   , AmbientLight(new ColorEdit("Ia", this))
+  , Attenuation(new TripleEdit("attenuation", { "c0", "c1", "c2" }, 0, 1e6, this))
   , LightChoice(new QComboBox(this))
   , NormalsChoice(new QComboBox(this))
   , FeatureAngle(new QDoubleSpinBox(this))
@@ -151,6 +153,20 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     [this](int mode)
     { this->Engine.Edit([mode](ViewState& s) { s.Lights = static_cast<LightMode>(mode); }); });
   light->addRow(this->Lights);
+  light->addRow("Attenuation", this->Attenuation);
+  this->Attenuation->setToolTip(
+    "Point and spot lights: Il / (c0 + c1*d + c2*d^2), d the distance from the light; 1, 0, 0 "
+    "is none");
+  this->Attenuation->Edited = [this](const Vec3& c)
+  {
+    if (c == Vec3{ 0, 0, 0 })
+    {
+      // No light is infinitely bright: the numbers go back to the scene's.
+      this->Attenuation->SetValue(this->Engine.GetState().Scene.Attenuation);
+      return;
+    }
+    this->Engine.Edit([&c](ViewState& s) { s.Scene.Attenuation = c; });
+  };
 
   QFormLayout* terms = group("Terms");
   terms->addRow(this->Toggle("ambient  ka Ia", &ViewState::Ambient));
@@ -262,6 +278,7 @@ void ControlPanel::Show()
   this->Coefficients[2]->SetColor(m.Ks);
   this->Ns->SetShininess(m.Ns);
   this->AmbientLight->SetColor(s.Ambient);
+  this->Attenuation->SetValue(s.Attenuation);
   this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights));
   const bool fromFile = s.Normals != NormalsMode::Compute && this->Engine.HasFileNormals();
   const auto weighting = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);

@@ -19,6 +19,7 @@ class QDoubleSpinBox;
 namespace shadelab
 {
 class ColorEdit;
+class TripleEdit;
 class LightListEdit;
 class ShininessEdit;
 
@@ -40,6 +41,7 @@ private:
   std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks
   ShininessEdit* Ns;
   ColorEdit* AmbientLight;
+  TripleEdit* Attenuation; // the scene's C0, C1, C2
   QComboBox* LightChoice;
   QComboBox* NormalsChoice;
   QDoubleSpinBox* FeatureAngle;

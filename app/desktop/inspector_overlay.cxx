@@ -102,7 +102,13 @@ void Inspector::UpdateHud()
   hud << (this->State.Compare ? "compare: " + this->Options.Panels.Modes
                               : std::string(ToString(s.ShadingRule)) + " shading")
       << " | " << (UsesHalfVector(s.ReflectionModel) ? "Blinn-Phong" : "Phong") << " | "
-      << material.str() << " | " << Describe(this->State.Lights) << "\n";
+      << material.str() << " | " << Describe(this->State.Lights);
+  if (s.Attenuation != NoAttenuation)
+  {
+    hud << " / (" << s.Attenuation[0] << " + " << s.Attenuation[1] << " d + " << s.Attenuation[2]
+        << " d^2)";
+  }
+  hud << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
                                                                  : s.Computed.Weighting.c_str())

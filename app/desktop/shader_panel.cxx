@@ -19,88 +19,97 @@ namespace shadelab
 {
 namespace
 {
-constexpr std::array<Terms, 3> MarkedTerms{ Terms::Ambient, Terms::Diffuse, Terms::Specular };
-
-// Light backgrounds, far enough apart to tell and light enough to read on.
-QColor Colour(Terms term)
+// What the generator marks (TermMarker): the equation's terms, in Terms'
+// order after All, then the effects a scene may add, each with the colour
+// of its lines and the formula its button names.
+struct Mark
 {
-  switch (term)
-  {
-    case Terms::Ambient:
-      return QColor(0xc8, 0xdc, 0xff);
-    case Terms::Diffuse:
-      return QColor(0xc8, 0xf0, 0xbe);
-    case Terms::Specular:
-      return QColor(0xff, 0xdc, 0xb4);
-    case Terms::All:
-      break;
-  }
-  return QColor(Qt::white);
+  const char* Name;
+  QColor Colour; // light backgrounds, far enough apart to tell and light enough to read on
+  const char* Formula;
+  bool Effect; // compiled in only where a scene uses it: its button shows only then
+};
+
+const std::array<Mark, 4>& Marks()
+{
+  static const std::array<Mark, 4> marks{ {
+    { "ambient", QColor(0xc8, 0xdc, 0xff), "ka*Ia", false },
+    { "diffuse", QColor(0xc8, 0xf0, 0xbe), "kd*Il*N.L", false },
+    { "specular", QColor(0xff, 0xdc, 0xb4), "ks*Il*base^ns", false },
+    { "attenuation", QColor(0xf0, 0xd2, 0xf0), "Il/(c0+c1*d+c2*d^2)", true },
+  } };
+  return marks;
 }
 
-// The equation's part that each term's button names.
-QString Formula(Terms term)
-{
-  switch (term)
-  {
-    case Terms::Ambient:
-      return "ka*Ia";
-    case Terms::Diffuse:
-      return "kd*Il*N.L";
-    case Terms::Specular:
-      return "ks*Il*base^ns";
-    case Terms::All:
-      break;
-  }
-  return "";
-}
-
-// The terms that line's marker names; none without a marker, or where a
-// name is not a term's (a comment that merely starts like a marker).
-std::vector<Terms> TermsOf(const QString& line)
+// The marks (indices into Marks) that line's marker names; none without a
+// marker, or where a name is not a mark's (a comment that merely starts like
+// a marker).
+std::vector<std::size_t> MarksOf(const QString& line)
 {
   const int at = line.lastIndexOf(TermMarker);
   if (at < 0)
   {
     return {};
   }
-  std::vector<Terms> terms;
+  std::vector<std::size_t> marks;
   for (const QString& name : line.mid(at + static_cast<int>(std::strlen(TermMarker))).split(','))
   {
-    const auto term = std::find_if(MarkedTerms.begin(), MarkedTerms.end(),
-      [&name](Terms t) { return name.trimmed() == ToString(t); });
-    if (term == MarkedTerms.end())
+    const auto& all = Marks();
+    const auto mark = std::find_if(
+      all.begin(), all.end(), [&name](const Mark& m) { return name.trimmed() == m.Name; });
+    if (mark == all.end())
     {
       return {};
     }
-    terms.push_back(*term);
+    marks.push_back(static_cast<std::size_t>(mark - all.begin()));
   }
-  return terms;
+  return marks;
 }
 
-// The background of a line with `terms` when `shown` is highlighted; none
-// (invalid) when the line is not one of them. A line that adds up several
-// terms mixes their colours.
-QColor Background(const std::vector<Terms>& terms, Terms shown)
+// The background of a line with `marks` when mark `shown` is highlighted
+// (ShaderPanel::AllMarks: every one); none (invalid) when the line is not
+// one of them. A line that adds up several terms mixes their colours.
+QColor Background(const std::vector<std::size_t>& marks, std::size_t shown)
 {
-  if (shown != Terms::All)
+  if (shown != ShaderPanel::AllMarks)
   {
-    return std::count(terms.begin(), terms.end(), shown) ? Colour(shown) : QColor();
+    return std::count(marks.begin(), marks.end(), shown) ? Marks()[shown].Colour : QColor();
   }
-  if (terms.empty())
+  if (marks.empty())
   {
     return QColor();
   }
   int red = 0, green = 0, blue = 0;
-  for (Terms term : terms)
+  for (std::size_t mark : marks)
   {
-    const QColor c = Colour(term);
+    const QColor c = Marks()[mark].Colour;
     red += c.red();
     green += c.green();
     blue += c.blue();
   }
-  const int n = static_cast<int>(terms.size());
+  const int n = static_cast<int>(marks.size());
   return QColor(red / n, green / n, blue / n);
+}
+
+// The button that highlights every mark's lines.
+QPushButton* AllMarksButton(QWidget* parent)
+{
+  auto* button = new QPushButton("all terms", parent);
+  button->setObjectName("highlight " + QString(ToString(Terms::All)));
+  button->setToolTip("Highlight the lines of every term");
+  return button;
+}
+
+QPushButton* MarkButton(const Mark& mark, QWidget* parent)
+{
+  const QString name = mark.Name;
+  auto* button = new QPushButton(name + "  " + mark.Formula, parent);
+  button->setObjectName("highlight " + name);
+  button->setToolTip("Highlight the lines that compute the " + name + (mark.Effect ? "" : " term") +
+    " only, and go to the first");
+  button->setStyleSheet("QPushButton { background-color: " + mark.Colour.name() +
+    "; padding: 3px 6px; } QPushButton:checked { border: 2px solid #404040; }");
+  return button;
 }
 }
 
@@ -117,28 +126,16 @@ ShaderPanel::ShaderPanel(QWidget* parent)
   }
   auto* legend = new QHBoxLayout;
   auto* group = new QButtonGroup(this);
-  for (Terms term : { Terms::All, Terms::Ambient, Terms::Diffuse, Terms::Specular })
+  for (std::size_t i = 0; i < this->Buttons.size(); ++i)
   {
-    const QString name = ToString(term);
-    auto* button = new QPushButton(
-      term == Terms::All ? QString("all terms") : name + "  " + Formula(term), this);
-    button->setObjectName("highlight " + name);
+    QPushButton* button = i == AllMarks ? AllMarksButton(this) : MarkButton(Marks()[i - 1], this);
     button->setCheckable(true);
-    button->setToolTip(term == Terms::All
-        ? "Highlight the lines of every term"
-        : "Highlight the lines that compute the " + name + " term only, and go to the first");
-    if (term != Terms::All)
-    {
-      button->setStyleSheet("QPushButton { background-color: " + Colour(term).name() +
-        "; padding: 3px 6px; } QPushButton:checked { border: 2px solid #404040; }");
-    }
     group->addButton(button);
     legend->addWidget(button);
-    this->Buttons[static_cast<std::size_t>(term)] = button;
-    QObject::connect(
-      button, &QPushButton::clicked, this, [this, term] { this->HighlightTerm(term); });
+    this->Buttons[i] = button;
+    QObject::connect(button, &QPushButton::clicked, this, [this, i] { this->HighlightMark(i); });
   }
-  this->Buttons[static_cast<std::size_t>(Terms::All)]->setChecked(true);
+  this->Buttons[AllMarks]->setChecked(true);
   auto* column = new QVBoxLayout(this);
   column->addLayout(legend);
   column->addWidget(this->Tabs);
@@ -153,13 +150,33 @@ void ShaderPanel::Show(const ShaderSources& sources)
   this->Sources = sources;
   this->Stages[0]->setPlainText(QString::fromStdString(sources.Vertex));
   this->Stages[1]->setPlainText(QString::fromStdString(sources.Fragment));
+  // An effect's button only where the program has its lines.
+  for (std::size_t i = 0; i < Marks().size(); ++i)
+  {
+    if (Marks()[i].Effect)
+    {
+      const std::string marker = std::string(TermMarker) + Marks()[i].Name;
+      const bool used = sources.Vertex.find(marker) != std::string::npos ||
+        sources.Fragment.find(marker) != std::string::npos;
+      this->Buttons[i + 1]->setVisible(used);
+      if (!used && this->Shown == i + 1)
+      {
+        this->HighlightMark(AllMarks);
+      }
+    }
+  }
   this->Highlight();
 }
 
 void ShaderPanel::HighlightTerm(Terms term)
 {
-  this->Shown = term;
-  this->Buttons[static_cast<std::size_t>(term)]->setChecked(true);
+  this->HighlightMark(static_cast<std::size_t>(term)); // Terms' order is the buttons'
+}
+
+void ShaderPanel::HighlightMark(std::size_t mark)
+{
+  this->Shown = mark;
+  this->Buttons[mark]->setChecked(true);
   this->Highlight();
 }
 
@@ -173,7 +190,7 @@ void ShaderPanel::Highlight()
     QList<QTextEdit::ExtraSelection> lines;
     for (QTextBlock block = edit->document()->begin(); block.isValid(); block = block.next())
     {
-      const QColor background = Background(TermsOf(block.text()), this->Shown);
+      const QColor background = Background(MarksOf(block.text()), this->Shown);
       if (!background.isValid())
       {
         continue;

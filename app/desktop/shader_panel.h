@@ -1,7 +1,8 @@
 // The running shader beside the picture: the complete vertex and fragment
 // GLSL that draws the view now (Inspector::GetShownShaders, the program the
 // mapper bound), in two read-only tabs with line numbers, with the lines that compute each
-// term of the equation on a background of the term's colour. The generator
+// term of the equation, and each effect a scene adds (attenuation), on a
+// background of its colour. The generator
 // marks those lines (TermMarker, shadelabShaderSource.h); nothing here
 // guesses from variable names. The term buttons are the colours' legend
 // and pick the term to highlight.
@@ -37,14 +38,19 @@ public:
    */
   void HighlightTerm(Terms term);
 
+  /** 0: every mark's lines; then the marks in the legend's order (the terms', then the effects').
+   */
+  static constexpr std::size_t AllMarks = 0;
+
 private:
+  void HighlightMark(std::size_t mark);
   void Highlight();
 
   QTabWidget* Tabs;
   std::array<QPlainTextEdit*, 2> Stages;   // vertex, fragment
-  std::array<QAbstractButton*, 4> Buttons; // in Terms' order
+  std::array<QAbstractButton*, 5> Buttons; // all, then Marks() (shader_panel.cxx)
   ShaderSources Sources;
-  Terms Shown = Terms::All;
+  std::size_t Shown = AllMarks;
 };
 }
 

@@ -328,6 +328,10 @@ struct Scene
   Material Surface = TestMaterial(20);
   Rgb Ambient{ 0.2, 0.25, 0.3 };
   std::vector<Light> Lights{ Point({ 0.3, 0.4, 1.5 }) }; // local coordinates
+  // --attenuation: point and spot lights' C0, C1, C2 where a light has none of
+  // its own (Light::Attenuation, given as --light SPEC@C0,C1,C2); per local
+  // unit: a scaled scene's are scaled to fall off alike (WorldAttenuation).
+  Vec3 Attenuation = shadelab::NoAttenuation;
   // The whole scene (mesh, lights, camera, parallel scale) maps local p to
   // Offset + Scale*p.
   double Scale = 1;
@@ -415,14 +419,29 @@ inline Material SurfaceOf(const Scene& s, int t)
   return m;
 }
 
+// Coefficients per local unit as per world unit: d grows by Scale.
+inline Vec3 WorldAttenuation(const Scene& s, const Vec3& c)
+{
+  return { c[0], c[1] / s.Scale, c[2] / (s.Scale * s.Scale) };
+}
+
 inline std::vector<Light> WorldLights(const Scene& s)
 {
   std::vector<Light> lights = s.Lights;
   for (Light& l : lights)
   {
     l.Position = s.World(l.Position);
+    if (l.Attenuation)
+    {
+      l.Attenuation = WorldAttenuation(s, *l.Attenuation);
+    }
   }
   return lights;
+}
+
+inline std::string OwnAttenuation(const Light& l)
+{
+  return l.Attenuation ? "@" + Triple(*l.Attenuation) : "";
 }
 
 inline std::string LightOption(const Light& l)
@@ -430,12 +449,12 @@ inline std::string LightOption(const Light& l)
   switch (l.Kind)
   {
     case LightKind::Point:
-      return "point:" + Triple(l.Position) + ":" + Triple(l.Color);
+      return "point:" + Triple(l.Position) + ":" + Triple(l.Color) + OwnAttenuation(l);
     case LightKind::Directional:
       return "directional:" + Triple(l.Direction) + ":" + Triple(l.Color);
     case LightKind::Spot:
       return "spot:" + Triple(l.Position) + ":" + Triple(l.Direction) + ":" + Num(l.HalfAngleDeg) +
-        ":" + Num(l.Exponent) + ":" + Triple(l.Color);
+        ":" + Num(l.Exponent) + ":" + Triple(l.Color) + OwnAttenuation(l);
   }
   return "";
 }
@@ -594,6 +613,10 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
     args.push_back("--light");
     args.push_back(LightOption(l));
   }
+  if (s.Attenuation != shadelab::NoAttenuation)
+  {
+    args.insert(args.end(), { "--attenuation", Triple(WorldAttenuation(s, s.Attenuation)) });
+  }
   const RunResult r = RunShadelab(args);
   if (r.ExitCode != 0)
   {
@@ -643,8 +666,12 @@ public:
     this->In.Model = s.Model;
     this->In.Orthographic = true;
     this->In.ViewDirection = { 0, 0, -1 };
-    for (const Light& l : WorldLights(s))
+    for (Light l : WorldLights(s))
     {
+      if (!l.Attenuation && shadelab::GeometryOf(l.Kind).Position)
+      {
+        l.Attenuation = WorldAttenuation(s, s.Attenuation); // the scene's
+      }
       this->In.Lights.push_back(shadelab::ToFrame(l));
     }
     if (s.Textured)

@@ -260,6 +260,42 @@ std::vector<Case> Cases()
     s.Offset = { 1e5, 1e5, 1e5 };
     add("offset_1e5_" + std::string(ToString(r)), s);
   }
+
+  // Distance attenuation: each rule and reflection model with a point light
+  // whose Il falls to about a quarter across the mesh; every light kind at
+  // once, one point light with attenuation of its own and the directional
+  // light unaffected; in 8 bits; and at 1e-6 and 1e6 world units, the
+  // coefficients scaled so that the picture stays the same.
+  for (Shading r : LitRules)
+  {
+    for (Reflection m : { Reflection::BlinnPhong, Reflection::Phong })
+    {
+      Scene s;
+      s.Rule = r;
+      s.Model = m;
+      s.Attenuation = { 0.25, 0.5, 0.75 };
+      add("attenuation_" + std::string(ToString(r)) + "_" + ToString(m), s);
+    }
+    Scene s = coloured;
+    s.Rule = r;
+    s.Attenuation = { 1, 0.5, 0.25 };
+    s.Lights.back().Attenuation = Vec3{ 0.125, 0, 2 };
+    add("attenuation_light_kinds_" + std::string(ToString(r)), s);
+    if (r != Shading::Gouraud)
+    {
+      for (double scale : { 1e-6, 1e6 })
+      {
+        s.Scale = scale;
+        add("attenuation_scale_" + std::string(scale < 1 ? "1em6_" : "1e6_") + ToString(r), s);
+      }
+    }
+  }
+  {
+    Scene s = coloured;
+    s.Attenuation = { 0.25, 0.5, 0.75 };
+    s.EightBit = true;
+    add("attenuation_png", s);
+  }
   return cases;
 }
 

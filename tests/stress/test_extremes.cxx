@@ -6,7 +6,8 @@
 // compared pixel by pixel with the oracle (its tolerances and their reasons
 // are there): slivers, faces of no area and nearly coincident vertices with
 // normals computed by shadelab, coordinates around 1e-8 and 1e8 and offset by 1e6, light within
-// 1e-6 of the surface's plane, shininess from 1e-3 to 1e6.
+// 1e-6 of the surface's plane, distance attenuation at those scales and with coefficients of 1e-6
+// and 1e6, shininess from 1e-3 to 1e6.
 // Normals: vtkShadelabMeshNormals on meshes built in double against the
 // same weighting's sums taken in long double.
 #include "oracle_scene.h"
@@ -88,6 +89,26 @@ std::vector<Case> Cases()
     add("grazing_directional_1em6_" + std::string(ToString(r)), s);
     s.Lights = { Point({ -3, 0.5, 1e-6 }) };
     add("grazing_point_1em6_" + std::string(ToString(r)), s);
+  }
+
+  // Distance attenuation at the extremes: the bowl at 1e-8 and 1e8 under a
+  // light that falls off with d^2 only, its coefficient scaled alike (d^2
+  // of 1e-16 and 1e16 in float); and coefficients that make the light a
+  // million times as bright (C0 = 1e-6) and a millionth as bright (C2 = 1e6).
+  for (Shading r : LitRules)
+  {
+    Scene s;
+    s.Rule = r;
+    s.Attenuation = { 0, 0, 1 };
+    s.Scale = 1e-8;
+    add("attenuation_quadratic_1em8_" + std::string(ToString(r)), s);
+    s.Scale = 1e8;
+    add("attenuation_quadratic_1e8_" + std::string(ToString(r)), s);
+    s.Scale = 1;
+    s.Attenuation = { 1e-6, 0, 0 };
+    add("attenuation_c0_1em6_" + std::string(ToString(r)), s);
+    s.Attenuation = { 0, 0, 1e6 };
+    add("attenuation_c2_1e6_" + std::string(ToString(r)), s);
   }
 
   // Shininess from 1e-3 to 1e6, per fragment (phong) with both reflection

@@ -41,7 +41,8 @@ const std::array<Mark, 4>& Marks()
   return marks;
 }
 
-// The marks (indices into Marks) that line's marker names; none without a
+// The marks that line's marker names, numbered as the buttons are (1 is
+// Marks()'s first; ShaderPanel::AllMarks is 0); none without a
 // marker, or where a name is not a mark's (a comment that merely starts like
 // a marker).
 std::vector<std::size_t> MarksOf(const QString& line)
@@ -61,7 +62,7 @@ std::vector<std::size_t> MarksOf(const QString& line)
     {
       return {};
     }
-    marks.push_back(static_cast<std::size_t>(mark - all.begin()));
+    marks.push_back(static_cast<std::size_t>(mark - all.begin()) + 1);
   }
   return marks;
 }
@@ -73,7 +74,7 @@ QColor Background(const std::vector<std::size_t>& marks, std::size_t shown)
 {
   if (shown != ShaderPanel::AllMarks)
   {
-    return std::count(marks.begin(), marks.end(), shown) ? Marks()[shown].Colour : QColor();
+    return std::count(marks.begin(), marks.end(), shown) ? Marks()[shown - 1].Colour : QColor();
   }
   if (marks.empty())
   {
@@ -82,7 +83,7 @@ QColor Background(const std::vector<std::size_t>& marks, std::size_t shown)
   int red = 0, green = 0, blue = 0;
   for (std::size_t mark : marks)
   {
-    const QColor c = Marks()[mark].Colour;
+    const QColor c = Marks()[mark - 1].Colour;
     red += c.red();
     green += c.green();
     blue += c.blue();
@@ -124,20 +125,28 @@ ShaderPanel::ShaderPanel(QWidget* parent)
     this->Stages[i] = edit;
     this->Tabs->addTab(edit, i == 0 ? "Vertex" : "Fragment");
   }
+  // The terms' buttons in a row, the effects' below, greyed where the
+  // program has no lines of theirs: the panel keeps its size, and with it
+  // the window and the view.
   auto* legend = new QHBoxLayout;
+  auto* effects = new QHBoxLayout;
   auto* group = new QButtonGroup(this);
   for (std::size_t i = 0; i < this->Buttons.size(); ++i)
   {
     QPushButton* button = i == AllMarks ? AllMarksButton(this) : MarkButton(Marks()[i - 1], this);
     button->setCheckable(true);
+    // An effect's button once a program has its lines (Show).
+    button->setEnabled(i == AllMarks || !Marks()[i - 1].Effect);
     group->addButton(button);
-    legend->addWidget(button);
+    (i != AllMarks && Marks()[i - 1].Effect ? effects : legend)->addWidget(button);
     this->Buttons[i] = button;
     QObject::connect(button, &QPushButton::clicked, this, [this, i] { this->HighlightMark(i); });
   }
   this->Buttons[AllMarks]->setChecked(true);
   auto* column = new QVBoxLayout(this);
   column->addLayout(legend);
+  effects->addStretch();
+  column->addLayout(effects);
   column->addWidget(this->Tabs);
 }
 
@@ -150,7 +159,7 @@ void ShaderPanel::Show(const ShaderSources& sources)
   this->Sources = sources;
   this->Stages[0]->setPlainText(QString::fromStdString(sources.Vertex));
   this->Stages[1]->setPlainText(QString::fromStdString(sources.Fragment));
-  // An effect's button only where the program has its lines.
+  // An effect's button enabled only where the program has its lines.
   for (std::size_t i = 0; i < Marks().size(); ++i)
   {
     if (Marks()[i].Effect)
@@ -158,7 +167,7 @@ void ShaderPanel::Show(const ShaderSources& sources)
       const std::string marker = std::string(TermMarker) + Marks()[i].Name;
       const bool used = sources.Vertex.find(marker) != std::string::npos ||
         sources.Fragment.find(marker) != std::string::npos;
-      this->Buttons[i + 1]->setVisible(used);
+      this->Buttons[i + 1]->setEnabled(used);
       if (!used && this->Shown == i + 1)
       {
         this->HighlightMark(AllMarks);

@@ -155,7 +155,6 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     if (takeOver)
     {
       drawn.Actor = reuse->Drawn[g].Actor;
-      drawn.Actor->GetMapper()->RemoveObservers(vtkCommand::UpdateShaderEvent);
       previous = reuse->Drawn[g].Shading;
     }
     else

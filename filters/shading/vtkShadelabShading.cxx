@@ -275,6 +275,12 @@ void vtkShadelabShading::Attach(
   {
     this->TextureObject = previous->TextureObject;
   }
+  if (previous && previous->Actor == actor)
+  {
+    // The actor's uniforms are this shading's now; other observers of the
+    // mapper (the window's shader panel) stay.
+    mapper->RemoveObserver(previous->Observer);
+  }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
   actor->GetProperty()->LightingOn();
 

@@ -283,6 +283,26 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--light", "directional:0,0,0" });
     },
     2, { "--light", "zero" } },
+  { "AttenuationAllZero",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--attenuation", "0,0,0" });
+    },
+    2, { "--attenuation", "all zero" } },
+  { "AttenuationNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--attenuation", "1,-0.5,0" });
+    },
+    2, { "--attenuation", "negative" } },
+  { "AttenuationNotATriple",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--attenuation", "1,0" });
+    },
+    2, { "--attenuation", "C0,C1,C2" } },
+  { "LightsOwnAttenuationNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--light", "point:0,0,5@0,0,-1" });
+    },
+    2, { "--light", "negative" } },
   { "ViewAngleOutOfRange",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" });

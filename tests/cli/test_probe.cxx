@@ -19,6 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -75,6 +77,12 @@ std::vector<ProbeCase> Cases()
         "iso", "--zoom", "1.6" },
       480, 400 };
     c.Options.insert(c.Options.end(), TeapotLights.begin(), TeapotLights.end());
+    cases.push_back(c);
+    // Distance attenuation: the scene's on every point and spot light but
+    // the first, which has its own.
+    c.Name = std::string("teapot_attenuated_") + ToString(rule);
+    c.Options.insert(c.Options.end(), { "--attenuation", "0.5,0.05,0.01" });
+    *std::find(c.Options.begin(), c.Options.end(), TeapotLights[1]) += "@0.25,0,0.02";
     cases.push_back(c);
   }
   return cases;
@@ -191,6 +199,26 @@ void ExpectNear(const Vec3& got, const Vec3& want, double tolerance, const std::
   }
 }
 
+// An attenuated light's distance and factor at the probed point, and its
+// Il: the colour times the factor (and a spot's factor).
+void ExpectAttenuation(const json& at)
+{
+  for (const json& l : at.at("lights"))
+  {
+    if (!l.contains("attenuation"))
+    {
+      continue;
+    }
+    const Vec3 c = Vec(l.at("attenuation_coefficients"));
+    const double d = length(Vec(l.at("position")) - Vec(at.at("position")));
+    EXPECT_NEAR(l.at("distance").get<double>(), d, 1e-12 * d);
+    const double factor = 1 / (c[0] + c[1] * d + c[2] * d * d);
+    EXPECT_NEAR(l.at("attenuation").get<double>(), factor, 1e-12 * factor);
+    const double spot = l.value("spot_factor", 1.0);
+    ExpectNear(Vec(l.at("Il")), factor * spot * Vec(l.at("color")), 1e-12, "Il attenuated");
+  }
+}
+
 class ProbePixels : public testing::TestWithParam<ProbeCase>
 {
 };
@@ -263,6 +291,10 @@ TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
     }
     const Rgb oracle = Vec(p.at("oracle"));
     ExpectNear(TermsSum(p), oracle, 1e-12, "ambient + terms against the oracle");
+    if (!gouraud)
+    {
+      ExpectAttenuation(p); // gouraud's lights are the vertices', below
+    }
 
     const auto corners = Corners(mesh, p.at("triangle").get<vtkIdType>());
     bool near = NearACase(p.at("lights"));
@@ -280,6 +312,7 @@ TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
       {
         const Rgb color = Vec(v.at("color"));
         ExpectNear(TermsSum(v), color, 1e-12, "a vertex's terms against its colour");
+        ExpectAttenuation(v);
         mixed = mixed + w * color;
         near = near || NearACase(v.at("lights"));
       }

@@ -81,6 +81,38 @@ TEST(Options, SpotLights)
   EXPECT_EQ(e.Color, (Rgb{ 1, 0, 0 }));
 }
 
+TEST(Options, AttenuationIsTheScenesOrALightsOwn)
+{
+  EXPECT_EQ(ParseAttenuation("1,0.5,0.25"), (Vec3{ 1, 0.5, 0.25 }));
+  EXPECT_EQ(ParseAttenuation("0,0,1e-6"), (Vec3{ 0, 0, 1e-6 })) << "one coefficient suffices";
+  EXPECT_FALSE(ParseLight("point:1,2,3").Attenuation) << "none of its own: the scene's";
+  EXPECT_EQ(ParseLight("point:1,2,3@1,0,2").Attenuation, (Vec3{ 1, 0, 2 }));
+  const Light spot = ParseLight("spot:0,0,5:0,0,-1:45:8:1,0,0@0,1,0");
+  EXPECT_EQ(spot.Color, (Rgb{ 1, 0, 0 }));
+  EXPECT_EQ(spot.Attenuation, (Vec3{ 0, 1, 0 }));
+  const std::pair<const char*, const char*> bad[] = {
+    { "1,0", "C0,C1,C2" },
+    { "1,-1,0", "negative" },
+    { "0,0,0", "all zero" },
+    { "1,nan,0", "not a finite number" },
+  };
+  for (const auto& [text, words] : bad)
+  {
+    for (const std::string& as : { std::string(text), "point:1,2,3@" + std::string(text) })
+    {
+      try
+      {
+        as[0] == 'p' ? static_cast<void>(ParseLight(as)) : static_cast<void>(ParseAttenuation(as));
+        ADD_FAILURE() << as << " was accepted";
+      }
+      catch (const std::invalid_argument& e)
+      {
+        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << as << ": " << e.what();
+      }
+    }
+  }
+}
+
 TEST(Options, BadLightsNameTheProblem)
 {
   const std::pair<const char*, const char*> cases[] = {
@@ -94,6 +126,7 @@ TEST(Options, BadLightsNameTheProblem)
     { "spot:0,0,5:0,0,-1:91", "half-angle" },
     { "spot:0,0,5:0,0,-1:30:-1", "negative" },
     { "spot:0,0,5:0,0,-1:30:1:1,1,1:extra", "spot:" },
+    { "directional:0,0,-1@1,0,1", "no attenuation" },
   };
   for (const auto& [text, words] : cases)
   {

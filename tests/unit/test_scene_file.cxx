@@ -55,7 +55,10 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
       { "material": { "base": "gold", "ns": 5 }, "camera": { "view_angle": 20 } },
       { "material": { "name": "red", "ka": [0.1, 0, 0], "kd": [0.8, 0, 0], "ks": [0, 0, 0], "ns": 1 },
         "lights": [ { "kind": "spot", "position": [0, 0, 5], "direction": [0, 0, -1],
-                      "half_angle": 30, "exponent": 2, "color": [1, 0.5, 0.5] } ],
+                      "half_angle": 30, "exponent": 2, "color": [1, 0.5, 0.5],
+                      "attenuation": [1, 0, 0.5] },
+                    { "kind": "point", "position": [1, 1, 1] } ],
+        "attenuation": [0.5, 0.25, 0],
         "reflection": "phong", "orient": true, "feature_angle": 30, "weighting": "max",
         "normals": "compute", "background": [0.1, 0.2, 0.3], "ambient": [0, 0, 0],
         "pixel_type": "uint16", "name": "third" }
@@ -88,7 +91,11 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
   const Shot& c = this->Shots[2];
   EXPECT_EQ(c.Output, "out/spot_phong_red_2.png");
   EXPECT_EQ(c.Scene.EffectiveMaterial().Kd, (Rgb{ 0.8, 0, 0 }));
-  ASSERT_EQ(c.Scene.Lights.size(), 1u);
+  EXPECT_EQ(c.Scene.Attenuation, (Vec3{ 0.5, 0.25, 0 }));
+  ASSERT_EQ(c.Scene.Lights.size(), 2u);
+  EXPECT_EQ(c.Scene.Lights[0].Attenuation, (Vec3{ 1, 0, 0.5 })) << "the light's own";
+  EXPECT_FALSE(c.Scene.Lights[1].Attenuation) << "none of its own: the scene's";
+  EXPECT_EQ(a.Attenuation, NoAttenuation) << "the default: none";
   EXPECT_EQ(c.Scene.Lights[0].Kind, LightKind::Spot);
   EXPECT_EQ(c.Scene.Lights[0].HalfAngleDeg, 30);
   EXPECT_EQ(c.Scene.Lights[0].Exponent, 2);
@@ -132,6 +139,14 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     { head +
         R"({ "lights": [ { "kind": "spot", "position": [0, 0, 1], "direction": [0, 0, -1], "half_angle": 120 } ] } ] })",
       "shots[3].lights[0]: spot half-angle '120' is outside (0, 90] degrees" },
+    { head +
+        R"({ "lights": [ { "kind": "directional", "direction": [0, 0, -1], "attenuation": [1, 0, 1] } ] } ] })",
+      "shots[3].lights[0].attenuation: not used by a directional light" },
+    { head +
+        R"({ "lights": [ { "kind": "point", "position": [0, 0, 1], "attenuation": [0, 0, 0] } ] } ] })",
+      "shots[3].lights[0]: attenuation '0,0,0' is all zero" },
+    { head + R"({ "attenuation": [1, -1, 0] } ] })",
+      "shots[3].attenuation: attenuation '1,-1,0' has a negative coefficient" },
     { head + R"({ "camera": { "view_angle": 200 } } ] })",
       "shots[3].camera.view_angle: '200' is outside (0, 180) degrees" },
     { head + R"({ "camera": { "dolly": 2 } } ] })", "shots[3].camera.dolly: unknown key" },

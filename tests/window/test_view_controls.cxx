@@ -244,6 +244,19 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
       { "--ns" } },
     { "ns typed", [&] { Type(window.findChild<QDoubleSpinBox*>("ns number"), "7"); }, { "--ns" } },
     { "Ia", [&] { Type(window.findChild<QDoubleSpinBox*>("Ia green"), "0.4"); }, { "--ambient" } },
+    { "attenuation", [&] { Type(window.findChild<QDoubleSpinBox*>("attenuation c2"), "0.01"); },
+      { "--attenuation" } },
+    { "attenuation all zero",
+      [&]
+      {
+        // Refused: the numbers go back to the scene's, which the next one changes.
+        Type(window.findChild<QDoubleSpinBox*>("attenuation c2"), "0");
+        Type(window.findChild<QDoubleSpinBox*>("attenuation c0"), "0");
+        EXPECT_EQ(window.findChild<QDoubleSpinBox*>("attenuation c0")->value(), 1);
+        EXPECT_EQ(inspector.GetState().Scene.Attenuation, (Vec3{ 1, 0, 0 }));
+        Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0.5");
+      },
+      { "--attenuation" } },
     { "lights", [&] { QTest::keyClick(find("lights"), Qt::Key_Down); }, { "--light" } },
     { "add spot", [&] { static_cast<QPushButton*>(find("add spot"))->click(); }, { "--light" } },
     { "light position", [&] { Type(window.findChild<QDoubleSpinBox*>("light position x"), "1.5"); },
@@ -446,4 +459,31 @@ TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
       EXPECT_TRUE(Highlighted(unlit).empty()) << term;
     }
   }
+}
+
+// Attenuation's lines are marked, and its button enabled, only where the
+// program has them: in the stage that lights, once per point or spot light.
+TEST(ShaderPanel, MarksTheAttenuationOnlyWhereTheSceneHasIt)
+{
+  Inspector inspector(SpotView(Shading::Phong), "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open({ 240, 180 }));
+  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
+  auto* button = window.findChild<QPushButton*>("highlight attenuation");
+  ASSERT_TRUE(fragment && button);
+  const auto attenuationLines = [fragment]
+  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: attenuation" }); };
+  EXPECT_TRUE(attenuationLines().empty());
+  EXPECT_FALSE(button->isEnabled());
+  Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0.25");
+  const std::set<int> lines = attenuationLines();
+  EXPECT_EQ(lines.size(), 1u) << "one point light at the camera";
+  EXPECT_TRUE(button->isEnabled());
+  button->click();
+  EXPECT_EQ(Highlighted(fragment), lines);
+  Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0");
+  EXPECT_TRUE(attenuationLines().empty()) << "1, 0, 0 compiles to no code";
+  EXPECT_FALSE(button->isEnabled());
 }

@@ -3,7 +3,9 @@
 // Phong (the peer a user would pick instead), with the all-features
 // program that per-scene generation is measured against, and with VTK's
 // unlit surface (one colour, positions alone: no normals, no lighting), the
-// least any shading rule's frame can cost through this mapper.
+// least any shading rule's frame can cost through this mapper; and ours with
+// distance attenuation (1, 0.05, 0.01 on the light at the camera), the
+// effect's cost against the same rule without it.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
 //                         [--vertex-colors] [--texture] [--parts N]
@@ -63,7 +65,8 @@ struct Variant
   Shading Rule;
   bool VtkOwn = false;
   bool AllFeatures = false;
-  bool Unlit = false; // VTK's own, lighting off, drawn from positions alone
+  bool Unlit = false;      // VTK's own, lighting off, drawn from positions alone
+  bool Attenuated = false; // ours with distance attenuation: its cost against the same rule's
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -238,7 +241,10 @@ int main(int argc, char** argv)
     { "gouraud", Shading::Gouraud }, { "phong", Shading::Phong },
     { "flat-allfeatures", Shading::Flat, false, true },
     { "gouraud-allfeatures", Shading::Gouraud, false, true },
-    { "phong-allfeatures", Shading::Phong, false, true } };
+    { "phong-allfeatures", Shading::Phong, false, true },
+    { "flat-attenuated", Shading::Flat, false, false, false, true },
+    { "gouraud-attenuated", Shading::Gouraud, false, false, false, true },
+    { "phong-attenuated", Shading::Phong, false, false, false, true } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -250,6 +256,10 @@ int main(int argc, char** argv)
     }
     SceneOptions scene = o;
     scene.ShadingRule = v.Rule;
+    if (v.Attenuated)
+    {
+      scene.Attenuation = { 1, 0.05, 0.01 };
+    }
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
     {

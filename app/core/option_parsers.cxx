@@ -136,6 +136,53 @@ Vec3 ParseAttenuation(const std::string& text)
   return c;
 }
 
+Fog ParseFog(const std::string& text)
+{
+  const auto parts = Split(text, ':');
+  Fog fog;
+  const std::optional<FogMode> mode = FromName<FogMode>(parts[0]);
+  if (!mode)
+  {
+    throw std::invalid_argument(
+      "unknown fog '" + parts[0] + "' (known: " + JoinedNames<FogMode>(", ") + ")");
+  }
+  fog.Mode = *mode;
+  const bool none = fog.Mode == FogMode::None;
+  if (none ? parts.size() != 1 : parts.size() < 2 || parts.size() > 3)
+  {
+    throw std::invalid_argument("'" + text +
+      "' is not none, linear:START,END[:R,G,B], exp:DENSITY[:R,G,B] or exp2:DENSITY[:R,G,B]");
+  }
+  if (fog.Mode == FogMode::Linear)
+  {
+    const auto ends = Split(parts[1], ',');
+    if (ends.size() != 2)
+    {
+      throw std::invalid_argument("'" + parts[1] + "' is not START,END");
+    }
+    fog.Start = ParseNumber(ends[0]);
+    fog.End = ParseNumber(ends[1]);
+    if (!(fog.End > fog.Start))
+    {
+      throw std::invalid_argument(
+        "fog END '" + ends[1] + "' is not beyond START '" + ends[0] + "'");
+    }
+  }
+  else if (!none)
+  {
+    fog.Density = ParseNumber(parts[1]);
+    if (fog.Density < 0)
+    {
+      throw std::invalid_argument("fog density '" + parts[1] + "' is negative");
+    }
+  }
+  if (parts.size() == 3)
+  {
+    fog.Color = ParseRgb(parts[2]);
+  }
+  return fog;
+}
+
 ImageSize ParseSize(const std::string& text)
 {
   const auto x = text.find_first_of("xX");

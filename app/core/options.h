@@ -4,6 +4,7 @@
 #ifndef shadelab_options_h
 #define shadelab_options_h
 
+#include "shadelabFog.h"
 #include "shadelabIllumination.h"
 #include "shadelabTexture.h"
 
@@ -148,6 +149,7 @@ struct SceneOptions
   // Point and spot lights' Il / (C0 + C1*d + C2*d^2) where a light has no
   // attenuation of its own (EffectiveLights); 1,0,0 is none.
   Vec3 Attenuation = NoAttenuation;
+  Fog Fogging; // --fog: none by default
   ImageSize Size;
   int Supersampling = 1; // --ssaa N: N x N samples per pixel, box-averaged in float
   std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
@@ -225,6 +227,8 @@ Vec3 ParseDirection(const std::string& text); // a Vec3 of non-zero length
 double ParseNonNegative(const std::string& text);
 Rgb ParseRgb(const std::string& text);
 Vec3 ParseAttenuation(const std::string& text); // C0,C1,C2: none negative, not all zero
+// none | linear:START,END[:R,G,B] | exp:DENSITY[:R,G,B] | exp2:DENSITY[:R,G,B]
+Fog ParseFog(const std::string& text);
 ImageSize ParseSize(const std::string& text);
 Pixel ParsePixel(const std::string& text); // "X,Y", each a whole number >= 0
 Light ParseLight(const std::string& text);

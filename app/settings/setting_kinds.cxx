@@ -164,6 +164,51 @@ Vec3 Triple::Sample(const Vec3& other) const
   return sample != other ? sample : Vec3{ 1.0 / 9, 1.0 / 3, 2.0 / 7 };
 }
 
+std::string FogSpec::Text(const Fog& fog) const
+{
+  std::string text = ToString(fog.Mode);
+  switch (fog.Mode)
+  {
+    case FogMode::None:
+      return text;
+    case FogMode::Linear:
+      text += ":" + NumberText(fog.Start) + "," + NumberText(fog.End);
+      break;
+    case FogMode::Exp:
+    case FogMode::Exp2:
+      text += ":" + NumberText(fog.Density);
+      break;
+  }
+  if (fog.Color)
+  {
+    text += ":" + Triple{ Triple::Colour }.Text(*fog.Color);
+  }
+  return text;
+}
+
+ordered_json FogSpec::Schema() const
+{
+  return { { "type", "string" },
+    { "pattern",
+      "^(none|linear:[^:,]+,[^:,]+(:[^:,]+,[^:,]+,[^:,]+)?|exp2?:[^:,]+(:[^:,]+,[^:,]+,[^:,]+)?)"
+      "$" } };
+}
+
+Fog FogSpec::Sample(const Fog& other) const
+{
+  Fog sample;
+  sample.Mode = FogMode::Linear;
+  sample.Start = 1.0 / 3;
+  sample.End = 25.0 / 7;
+  sample.Color = Rgb{ 0.5, 2.0 / 3, 0.75 };
+  if (sample == other)
+  {
+    sample.Mode = FogMode::Exp2;
+    sample.Density = 2.0 / 9;
+  }
+  return sample;
+}
+
 CLI::Option* NameChoice::Declare(CLI::App& c, const Setting& s, std::string& target) const
 {
   return c.add_option(s.Option, target, s.Help)

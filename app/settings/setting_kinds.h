@@ -174,6 +174,24 @@ struct Triple
   Vec3 Sample(const Vec3& other) const;
 };
 
+/** --fog's text (ParseFog), a string in scene files. */
+struct FogSpec
+{
+  static constexpr bool IsFlag = false, ReadsDirectly = false;
+  CLI::Option* Declare(CLI::App& c, const Setting& s, Fog& target) const
+  {
+    return AddParsed(c, s.Option, target, ParseFog, s.Help)->option_text(s.ValueName);
+  }
+  std::string Text(const Fog& fog) const;
+  std::string FromJson(const json& v, const std::string& path) const
+  {
+    return scene_file::Text(v, path);
+  }
+  ordered_json ToJson(const Fog& fog) const { return this->Text(fog); }
+  ordered_json Schema() const;
+  Fog Sample(const Fog& other) const;
+};
+
 /** One of an enum's names (its NameTable); Noun names the value in messages. */
 template <typename Enum>
 struct Choice

@@ -70,6 +70,13 @@ std::vector<Setting> MakeSettings()
             "@C0,C1,C2, a scene file light's \"attenuation\")",
             PictureCommands, "1,0,0: none" },
       Triple{ Triple::Attenuation }, SHADELAB_FIELD(Attenuation)),
+    Plain({ "--fog", "fog", "MODE",
+            "Fog over the surface, per fragment under every rule, d the depth along the view "
+            "direction from the camera: linear:START,END (f = (END-d)/(END-START) clamped to [0, "
+            "1]), exp:DENSITY (f = exp(-DENSITY*d)) or exp2:DENSITY (f = exp(-(DENSITY*d)^2)), "
+            "each with :R,G,B for its colour (default the background's; a transparent background "
+            "fogs towards transparent); the colour C becomes f*C + (1-f)*FOG" },
+      FogSpec{}, SHADELAB_FIELD(Fogging)),
     Plain({ "--camera-position", "camera.position", "X,Y,Z", "Camera position" }, point,
       SHADELAB_FIELD(CameraPosition)),
     Plain({ "--camera-focal-point", "camera.focal_point", "X,Y,Z", "Point the camera looks at" },

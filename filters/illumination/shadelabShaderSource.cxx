@@ -15,7 +15,7 @@ const char* const TermMarker = "// shadelab: ";
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
-    this->Specular == o.Specular && this->Attenuation == o.Attenuation &&
+    this->Specular == o.Specular && this->Attenuation == o.Attenuation && this->Fog == o.Fog &&
     this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
@@ -326,6 +326,47 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 
 namespace
 {
+// ShaderFeatures::Fog: after the rule's colour, per fragment (the oracle's
+// FogFactor and Fogged, shadelabFog.cxx). vertexVC is the fragment's
+// position in view coordinates, where the camera looks along -z.
+std::string FogFactorSource(FogMode mode)
+{
+  switch (mode)
+  {
+    case FogMode::None:
+      break;
+    case FogMode::Linear:
+      return "clamp((shadelabFogEnd - shadelabFogDepth) / (shadelabFogEnd - shadelabFogStart), "
+             "0.0, 1.0)";
+    case FogMode::Exp:
+      return "exp(-shadelabFogDensity * shadelabFogDepth)";
+    case FogMode::Exp2:
+      return "exp(-(shadelabFogDensity * shadelabFogDepth) * (shadelabFogDensity * "
+             "shadelabFogDepth))";
+  }
+  return "1.0";
+}
+
+void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
+{
+  Prepend(r, false, "//VTK::Light::Dec",
+    std::string("uniform vec4 shadelabFogColor; // alpha 0: towards a transparent background\n") +
+      (mode == FogMode::Linear ? "uniform float shadelabFogStart;\nuniform float shadelabFogEnd;\n"
+                               : "uniform float shadelabFogDensity;\n"));
+  for (ShaderReplacement& each : r)
+  {
+    if (!each.Vertex && each.Tag == "//VTK::Light::Impl")
+    {
+      each.Code += "  float shadelabFogDepth = -vertexVC.z; // shadelab: fog\n"
+                   "  float shadelabFogFactor = " +
+        FogFactorSource(mode) +
+        "; // shadelab: fog\n"
+        "  fragOutput0 = shadelabFogFactor * fragOutput0 + (1.0 - shadelabFogFactor) * "
+        "shadelabFogColor; // shadelab: fog\n";
+    }
+  }
+}
+
 // ShaderFeatures::BehindLines. The slope is taken where VTK takes
 // derivatives, in uniform control flow: appended to the rule's own code
 // there (a second replacement of the tag would take the first's place).
@@ -378,6 +419,10 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   if (f.BehindLines)
   {
     AddOffsetBehindLines(r);
+  }
+  if (f.Fog != FogMode::None)
+  {
+    AddFog(f.Fog, r);
   }
   return r;
 }

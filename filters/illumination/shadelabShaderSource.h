@@ -10,6 +10,7 @@
 #ifndef shadelabShaderSource_h
 #define shadelabShaderSource_h
 
+#include "shadelabFog.h"
 #include "shadelabIllumination.h"
 
 #include <string>
@@ -28,6 +29,10 @@ struct ShaderFeatures
   // light's Il is divided by C0 + C1*d + C2*d^2 from its uniform
   // (1, 0, 0 for those that do not, which divides exactly by 1).
   bool Attenuation = false;
+  // Fog over the fragment's colour, whatever the rule: its mode's factor
+  // from the fragment's depth -vertexVC.z, and the fog's colour (RGBA) and
+  // numbers as uniforms (shadelabFog.h).
+  FogMode Fog = FogMode::None;
   // kd per vertex, from the mesh's colours (VertexKdAttributeName): the
   // vertex that lights uses its own (gouraud; flat's provoking vertex), phong
   // and none interpolate it to the fragment.

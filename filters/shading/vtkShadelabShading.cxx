@@ -206,6 +206,20 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Modified();
 }
 
+void vtkShadelabShading::SetFog(const Fog& fog, const std::array<double, 4>& background)
+{
+  this->Features.Fog = fog.Mode;
+  this->FogSetting = fog;
+  const std::array<double, 4> colour = fog.Color
+    ? std::array<double, 4>{ (*fog.Color)[0], (*fog.Color)[1], (*fog.Color)[2], 1 }
+    : background;
+  for (int c = 0; c < 4; ++c)
+  {
+    this->FogColour[c] = static_cast<float>(colour[c]);
+  }
+  this->Modified();
+}
+
 void vtkShadelabShading::SetBehindLines(bool behind)
 {
   this->Features.BehindLines = behind;
@@ -357,6 +371,13 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
       program->SetUniform3fv(
         "shadelabLightAttenuation", n, reinterpret_cast<Triple>(attenuations.data()));
     }
+  }
+  if (this->Features.Fog != FogMode::None)
+  {
+    program->SetUniform4f("shadelabFogColor", this->FogColour.data());
+    program->SetUniformf("shadelabFogStart", static_cast<float>(this->FogSetting.Start));
+    program->SetUniformf("shadelabFogEnd", static_cast<float>(this->FogSetting.End));
+    program->SetUniformf("shadelabFogDensity", static_cast<float>(this->FogSetting.Density));
   }
   if (this->Features.AllFeatures)
   {

@@ -20,6 +20,7 @@
 #define shadelab_oracle_scene_h
 
 #include "cli_test_support.h"
+#include "shadelabFog.h"
 #include "shadelabPixelRays.h"
 #include "shadelabShadingOracle.h"
 #include "shadelabTriangleFragment.h"
@@ -332,6 +333,9 @@ struct Scene
   // its own (Light::Attenuation, given as --light SPEC@C0,C1,C2); per local
   // unit: a scaled scene's are scaled to fall off alike (WorldAttenuation).
   Vec3 Attenuation = shadelab::NoAttenuation;
+  // --fog, in local units (a scaled scene's depths and densities scaled to
+  // fog alike); its colour, where it has none, the background's (black).
+  shadelab::Fog Fog;
   // The whole scene (mesh, lights, camera, parallel scale) maps local p to
   // Offset + Scale*p.
   double Scale = 1;
@@ -437,6 +441,24 @@ inline std::vector<Light> WorldLights(const Scene& s)
     }
   }
   return lights;
+}
+
+// The fog in world units: depths times Scale, densities over it.
+inline shadelab::Fog WorldFog(const Scene& s)
+{
+  shadelab::Fog f = s.Fog;
+  f.Start *= s.Scale;
+  f.End *= s.Scale;
+  f.Density /= s.Scale;
+  return f;
+}
+
+inline std::string FogOption(const shadelab::Fog& f)
+{
+  std::string text = ToString(f.Mode);
+  text += f.Mode == shadelab::FogMode::Linear ? ":" + Num(f.Start) + "," + Num(f.End)
+                                              : ":" + Num(f.Density);
+  return f.Color ? text + ":" + Triple(*f.Color) : text;
 }
 
 inline std::string OwnAttenuation(const Light& l)
@@ -616,6 +638,10 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   if (s.Attenuation != shadelab::NoAttenuation)
   {
     args.insert(args.end(), { "--attenuation", Triple(WorldAttenuation(s, s.Attenuation)) });
+  }
+  if (s.Fog.Mode != shadelab::FogMode::None)
+  {
+    args.insert(args.end(), { "--fog", FogOption(WorldFog(s)) });
   }
   const RunResult r = RunShadelab(args);
   if (r.ExitCode != 0)
@@ -842,6 +868,23 @@ private:
     }
     const shadelab::ShadedFragment shaded = shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
+    if (this->S.Fog.Mode != shadelab::FogMode::None)
+    {
+      // Per fragment under every rule: at the point under the pixel centre.
+      Vec3 P{ 0, 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        P = P + w[k] * f.Positions[k];
+      }
+      const shadelab::Fog fog = WorldFog(this->S);
+      const double factor = shadelab::FogFactor(
+        fog, shadelab::FogDepth(P, this->S.World({ 0, 0, this->S.CameraDistance }), { 0, 0, -1 }));
+      const Rgb colour = fog.Color.value_or(Rgb{ 0, 0, 0 }); // the background: black
+      for (int c = 0; c < 3; ++c)
+      {
+        e.Value[c] = factor * e.Value[c] + (1 - factor) * colour[c];
+      }
+    }
     e.Terms = shaded.Terms;
     e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});
   }
@@ -1003,8 +1046,9 @@ inline Deviation Compare(
           d.WorstY = y;
         }
       }
-      // A texture varies per fragment under flat too.
-      if (s.Rule == Shading::Flat && !s.EightBit && !s.Textured)
+      // A texture and fog vary per fragment under flat too.
+      if (s.Rule == Shading::Flat && !s.EightBit && !s.Textured &&
+        s.Fog.Mode == shadelab::FogMode::None)
       {
         const auto [first, added] = flatColour.emplace(e.Triangle, got);
         if (!added && first->second != got && d.FlatDifferent++ == 0)

@@ -296,6 +296,47 @@ std::vector<Case> Cases()
     s.EightBit = true;
     add("attenuation_png", s);
   }
+
+  // Fog, per fragment under every rule: each mode over the tilted bowl,
+  // whose depth runs from about 9.6 to 10.4 (the camera 10 above it), so
+  // that the factor changes across the picture; towards the background
+  // (black) and towards a colour of its own; in 8 bits; and at 1e-6 and 1e6
+  // units with depths and density scaled alike.
+  shadelab::Fog linear, exp, exp2;
+  linear.Mode = shadelab::FogMode::Linear;
+  linear.Start = 9.5;
+  linear.End = 10.75;
+  exp.Mode = shadelab::FogMode::Exp;
+  exp.Density = 0.1;
+  exp2.Mode = shadelab::FogMode::Exp2;
+  exp2.Density = 0.09;
+  exp2.Color = Rgb{ 0.5, 0.625, 0.75 };
+  for (Shading r : LitRules)
+  {
+    for (const auto& [name, fog] : { std::pair{ "linear", linear }, std::pair{ "exp", exp },
+           std::pair{ "exp2_coloured", exp2 } })
+    {
+      Scene s = coloured;
+      s.Rule = r;
+      s.Fog = fog;
+      add("fog_" + std::string(name) + "_" + ToString(r), s);
+    }
+  }
+  {
+    Scene s = coloured;
+    s.Rule = Shading::Gouraud;
+    s.Fog = linear;
+    s.EightBit = true;
+    add("fog_linear_gouraud_png", s);
+    s.EightBit = false;
+    s.Rule = Shading::Phong;
+    for (double scale : { 1e-6, 1e6 })
+    {
+      s.Scale = scale;
+      s.Fog = exp2;
+      add("fog_exp2_scale_" + std::string(scale < 1 ? "1em6" : "1e6"), s);
+    }
+  }
   return cases;
 }
 

@@ -61,6 +61,7 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Background = options.Background;
   s.Orthographic = camera->GetParallelProjection();
   this->In = WorldIllumination(options, s.Lights);
+  this->Fogging = options.Fogging;
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
@@ -142,6 +143,27 @@ PixelProbe PixelProber::Probe(Pixel at) const
   in.Surface = part.Surface;
   in.Texture = part.Texture;
   p.Shaded = ShadeTriangleFragment(in, p.Rule, p.Fragment);
+  if (this->Fogging.Mode != FogMode::None)
+  {
+    // Per fragment under every rule: at the point under the pixel centre
+    // (flat's too, which is lit at its provoking vertex).
+    Vec3 P{ 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        P[c] += p.Fragment.Weights[k] * p.Fragment.Positions[k][c];
+      }
+    }
+    PixelProbe::FogAt fog;
+    fog.Mode = this->Fogging.Mode;
+    fog.Depth = FogDepth(P, this->In.Eye, this->In.ViewDirection);
+    fog.Factor = FogFactor(this->Fogging, fog.Depth);
+    fog.Color = this->Fogging.Color.value_or(p.Background);
+    fog.Before = p.Shaded.Color;
+    p.Shaded.Color = Fogged(fog.Before, fog.Factor, fog.Color);
+    p.Fogged = fog;
+  }
   return p;
 }
 }

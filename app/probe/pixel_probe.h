@@ -15,6 +15,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class vtkCamera;
@@ -53,6 +54,15 @@ struct PixelProbe
   MaterialSource Source = MaterialSource::Default; // where Surface came from
   TriangleFragment Fragment;                       // positions, normals, weights, facing (world)
   ShadedFragment Shaded;                           // the rule's value and terms: the oracle
+  // With fog, at the point under the pixel centre: its depth, factor and
+  // colour, and the rule's colour before it; Shaded.Color is the colour after.
+  struct FogAt
+  {
+    FogMode Mode = FogMode::None;
+    double Depth = 0, Factor = 1;
+    Rgb Color{}, Before{};
+  };
+  std::optional<FogAt> Fogged;
 };
 
 /** A scene's picture, ready to explain pixel after pixel. */
@@ -74,6 +84,7 @@ public:
 private:
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
+  Fog Fogging;
   PictureTriangles Triangles;
   std::vector<ScenePart> Parts;                 // as drawn
   std::vector<int> CellParts;                   // the part of each cell

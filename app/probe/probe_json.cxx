@@ -97,6 +97,13 @@ ordered_json ProbeJson(const PixelProbe& p)
     return j;
   }
   j["oracle"] = p.Shaded.Color;
+  if (p.Fogged)
+  {
+    // oracle = factor*before + (1 - factor)*color.
+    j["fog"] = { { "mode", ToString(p.Fogged->Mode) }, { "depth", p.Fogged->Depth },
+      { "factor", p.Fogged->Factor }, { "color", p.Fogged->Color },
+      { "before", p.Fogged->Before } };
+  }
   j["triangle"] = p.Triangle;
   j["front_facing"] = p.Fragment.Front;
   j["part"] = p.Part;
@@ -118,7 +125,7 @@ ordered_json ProbeJson(const PixelProbe& p)
   {
     case Shading::None:
       j["position"] = p.Shaded.Point;
-      j["unlit"] = p.Shaded.Color;
+      j["unlit"] = p.Fogged ? p.Fogged->Before : p.Shaded.Color;
       break;
     case Shading::Flat:
     case Shading::Gouraud:

@@ -242,7 +242,20 @@ std::string ProbeText(const PixelProbe& p)
       AddTerms(out, "", p, t, PhongNormal(p));
       break;
   }
-  out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
+  if (p.Fogged)
+  {
+    const PixelProbe::FogAt& fog = *p.Fogged;
+    out.Add("", oracle + " = " + ProbeTriple(fog.Before), "before the fog");
+    out.Add("", "d = " + ProbeNumber(fog.Depth), "the depth along the view direction, for the fog");
+    out.Add("", "f = " + ProbeNumber(fog.Factor),
+      std::string("the ") + ToString(fog.Mode) + " fog's factor at d");
+    out.Add("", "f*I + (1-f)*" + ProbeTriple(fog.Color) + " = " + ProbeTriple(p.Shaded.Color),
+      "the oracle, fogged");
+  }
+  else
+  {
+    out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
+  }
   out.Add("", rendered, p.RenderedFrom);
   out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
   return out.Str();

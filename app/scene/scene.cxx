@@ -48,15 +48,6 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
   return { atCamera };
 }
 
-std::array<double, 4> FogBackground(const SceneOptions& options)
-{
-  if (options.TransparentBackground)
-  {
-    return { 0, 0, 0, 0 };
-  }
-  return { options.Background[0], options.Background[1], options.Background[2], 1 };
-}
-
 IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
 {
   IlluminationInputs in;
@@ -160,7 +151,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
-    drawn.Shading->SetFog(options.Fogging, FogBackground(options));
+    drawn.Shading->SetFog(options.Fogging, options.Background);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

@@ -75,12 +75,6 @@ bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh);
  */
 std::vector<Light> WithAttenuation(std::vector<Light> lights, const Vec3& attenuation);
 
-/**
- * What fog without a colour of its own fogs towards: the background, with
- * alpha 1, or for a transparent background nothing (alpha 0).
- */
-std::array<double, 4> FogBackground(const SceneOptions& options);
-
 /** The lights the scene uses, resolved (WithAttenuation): the given ones, or the lecture's default.
  */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);

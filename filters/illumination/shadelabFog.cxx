@@ -30,11 +30,10 @@ double FogFactor(const Fog& fog, double depth)
   return 1;
 }
 
-std::array<double, 4> Fogged(
-  const std::array<double, 4>& colour, double factor, const std::array<double, 4>& fogColour)
+Rgb Fogged(const Rgb& colour, double factor, const Rgb& fogColour)
 {
-  std::array<double, 4> out{};
-  for (int c = 0; c < 4; ++c)
+  Rgb out{};
+  for (int c = 0; c < 3; ++c)
   {
     out[c] = factor * colour[c] + (1 - factor) * fogColour[c];
   }

@@ -35,7 +35,7 @@ struct Fog
   FogMode Mode = FogMode::None;
   double Start = 0, End = 1; // linear: f falls from 1 at Start to 0 at End (End > Start)
   double Density = 0;        // exp, exp2: >= 0
-  std::optional<Rgb> Color;  // none: the background's (transparent: towards transparent)
+  std::optional<Rgb> Color;  // none: the background's
 
   bool operator==(const Fog& o) const
   {
@@ -60,13 +60,8 @@ double FogDepth(const Vec3& P, const Vec3& eye, const Vec3& viewDirection);
  */
 double FogFactor(const Fog& fog, double depth);
 
-/**
- * The colour and alpha after fog: f*C + (1 - f)*F, F the fog's colour with
- * alpha 1, or, fogging towards a transparent background, F = 0 with alpha
- * 0 (associated alpha: the colour and the coverage both times f).
- */
-std::array<double, 4> Fogged(
-  const std::array<double, 4>& colour, double factor, const std::array<double, 4>& fogColour);
+/** The colour after fog: f*C + (1 - f)*F, F the fog's colour. */
+Rgb Fogged(const Rgb& colour, double factor, const Rgb& fogColour);
 }
 
 #endif

@@ -350,7 +350,7 @@ std::string FogFactorSource(FogMode mode)
 void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
 {
   Prepend(r, false, "//VTK::Light::Dec",
-    std::string("uniform vec4 shadelabFogColor; // alpha 0: towards a transparent background\n") +
+    std::string("uniform vec3 shadelabFogColor;\n") +
       (mode == FogMode::Linear ? "uniform float shadelabFogStart;\nuniform float shadelabFogEnd;\n"
                                : "uniform float shadelabFogDensity;\n"));
   for (ShaderReplacement& each : r)
@@ -361,7 +361,7 @@ void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
                    "  float shadelabFogFactor = " +
         FogFactorSource(mode) +
         "; // shadelab: fog\n"
-        "  fragOutput0 = shadelabFogFactor * fragOutput0 + (1.0 - shadelabFogFactor) * "
+        "  fragOutput0.rgb = shadelabFogFactor * fragOutput0.rgb + (1.0 - shadelabFogFactor) * "
         "shadelabFogColor; // shadelab: fog\n";
     }
   }

@@ -30,7 +30,7 @@ struct ShaderFeatures
   // (1, 0, 0 for those that do not, which divides exactly by 1).
   bool Attenuation = false;
   // Fog over the fragment's colour, whatever the rule: its mode's factor
-  // from the fragment's depth -vertexVC.z, and the fog's colour (RGBA) and
+  // from the fragment's depth -vertexVC.z, and the fog's colour and
   // numbers as uniforms (shadelabFog.h).
   FogMode Fog = FogMode::None;
   // kd per vertex, from the mesh's colours (VertexKdAttributeName): the

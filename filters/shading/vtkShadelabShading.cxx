@@ -206,17 +206,11 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Modified();
 }
 
-void vtkShadelabShading::SetFog(const Fog& fog, const std::array<double, 4>& background)
+void vtkShadelabShading::SetFog(const Fog& fog, const Rgb& background)
 {
   this->Features.Fog = fog.Mode;
   this->FogSetting = fog;
-  const std::array<double, 4> colour = fog.Color
-    ? std::array<double, 4>{ (*fog.Color)[0], (*fog.Color)[1], (*fog.Color)[2], 1 }
-    : background;
-  for (int c = 0; c < 4; ++c)
-  {
-    this->FogColour[c] = static_cast<float>(colour[c]);
-  }
+  this->FogColour = fog.Color.value_or(background);
   this->Modified();
 }
 
@@ -374,7 +368,7 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   }
   if (this->Features.Fog != FogMode::None)
   {
-    program->SetUniform4f("shadelabFogColor", this->FogColour.data());
+    program->SetUniform3f("shadelabFogColor", toFloat(this->FogColour).data());
     program->SetUniformf("shadelabFogStart", static_cast<float>(this->FogSetting.Start));
     program->SetUniformf("shadelabFogEnd", static_cast<float>(this->FogSetting.End));
     program->SetUniformf("shadelabFogDensity", static_cast<float>(this->FogSetting.Density));

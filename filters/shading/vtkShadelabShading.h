@@ -26,8 +26,6 @@
 #include <vtkWeakPointer.h>
 #include <vtkWrappingHints.h>
 
-#include <array>
-
 class vtkActor;
 class vtkCallbackCommand;
 class vtkPolyData;
@@ -97,10 +95,10 @@ public:
 
   /**
    * Fog over every fragment (ShaderFeatures::Fog), towards its colour, or
-   * without one towards `background` (RGBA: alpha 0 fogs towards a
-   * transparent background). Default none, and none the code has none.
+   * without one towards `background`. Default none, and none the code has
+   * none.
    */
-  VTK_WRAPEXCLUDE void SetFog(const shadelab::Fog& fog, const std::array<double, 4>& background);
+  VTK_WRAPEXCLUDE void SetFog(const shadelab::Fog& fog, const shadelab::Rgb& background);
 
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
@@ -144,7 +142,7 @@ private:
   std::vector<shadelab::Light> Lights;
   shadelab::SurfaceTexture Texture;
   shadelab::Fog FogSetting;
-  std::array<float, 4> FogColour{};
+  shadelab::Rgb FogColour{};
   // Texture.Map in OpenGL, made at the first draw; a shading that takes over
   // an actor takes this over too when its image and window are the same.
   vtkSmartPointer<vtkTextureObject> TextureObject;

@@ -84,6 +84,13 @@ std::vector<ProbeCase> Cases()
     c.Options.insert(c.Options.end(), { "--attenuation", "0.5,0.05,0.01" });
     *std::find(c.Options.begin(), c.Options.end(), TeapotLights[1]) += "@0.25,0,0.02";
     cases.push_back(c);
+    // Fog, in perspective: the depth along the view direction, per fragment.
+    ProbeCase fogged{ std::string("teapot_fog_perspective_") + ToString(rule), Teapot, rule,
+      { "--shading", ToString(rule), "--material", "polished-copper", "--view", "iso", "--zoom",
+        "1.6", "--fog", "exp2:0.07:0.3,0.35,0.4" },
+      480, 400 };
+    fogged.Options.insert(fogged.Options.end(), TeapotLights.begin(), TeapotLights.end());
+    cases.push_back(fogged);
   }
   return cases;
 }
@@ -290,7 +297,20 @@ TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
       ASSERT_TRUE(p.contains(key)) << key;
     }
     const Rgb oracle = Vec(p.at("oracle"));
-    ExpectNear(TermsSum(p), oracle, 1e-12, "ambient + terms against the oracle");
+    // The rule's colour: the oracle, or with fog what the fog took.
+    Rgb unfogged = oracle;
+    if (p.contains("fog"))
+    {
+      const json& fog = p.at("fog");
+      unfogged = Vec(fog.at("before"));
+      const double f = fog.at("factor").get<double>();
+      ExpectNear(f * unfogged + (1 - f) * Vec(fog.at("color")), oracle, 1e-12, "fogged");
+      // The depth is the GPU's own (-z in view coordinates) where the
+      // rendered value is held to the oracle below.
+      const double x = 0.07 * fog.at("depth").get<double>();
+      EXPECT_NEAR(f, std::exp(-x * x), 1e-12);
+    }
+    ExpectNear(TermsSum(p), unfogged, 1e-12, "ambient + terms against the oracle");
     if (!gouraud)
     {
       ExpectAttenuation(p); // gouraud's lights are the vertices', below
@@ -320,7 +340,7 @@ TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
     EXPECT_NEAR(weights, 1, 1e-12);
     if (gouraud)
     {
-      ExpectNear(mixed, oracle, 1e-12, "the vertex colours mixed by the weights");
+      ExpectNear(mixed, unfogged, 1e-12, "the vertex colours mixed by the weights");
     }
     if (flat)
     {

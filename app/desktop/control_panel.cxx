@@ -1,9 +1,11 @@
 #include "desktop/control_panel.h"
 
 #include "desktop/color_edit.h"
+#include "desktop/fog_edit.h"
 #include "desktop/light_list_edit.h"
 #include "desktop/shininess_edit.h"
 #include "desktop/triple_edit.h"
+#include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
 
 #include <QCheckBox>
@@ -51,6 +53,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , Ns(new ShininessEdit(this))
   , AmbientLight(new ColorEdit("Ia", this))
   , Attenuation(new TripleEdit("attenuation", { "c0", "c1", "c2" }, 0, 1e6, this))
+  , Fogging(new FogEdit(this))
   , LightChoice(new QComboBox(this))
   , NormalsChoice(new QComboBox(this))
   , FeatureAngle(new QDoubleSpinBox(this))
@@ -168,6 +171,26 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     this->Engine.Edit([&c](ViewState& s) { s.Scene.Attenuation = c; });
   };
 
+  group("Atmosphere")->addRow(this->Fogging);
+  this->Fogging->Edited = [this](Fog fog)
+  {
+    // Fog switched on with no numbers yet: ones that show on the mesh,
+    // from the camera's distance to what it looks at (world units).
+    if (this->Engine.GetState().Scene.Fogging.Mode == FogMode::None && fog.Start == Fog{}.Start &&
+      fog.End == Fog{}.End && fog.Density == Fog{}.Density)
+    {
+      const SceneOptions shown = this->Engine.ShownScene();
+      const double distance = shown.CameraPosition && shown.CameraFocalPoint
+        ? length(*shown.CameraPosition - *shown.CameraFocalPoint)
+        : 1;
+      fog.Start = 0.5 * distance;
+      fog.End = 1.5 * distance;
+      fog.Density = 1 / distance;
+      this->Fogging->SetFog(fog);
+    }
+    this->Engine.Edit([&fog](ViewState& s) { s.Scene.Fogging = fog; });
+  };
+
   QFormLayout* terms = group("Terms");
   terms->addRow(this->Toggle("ambient  ka Ia", &ViewState::Ambient));
   terms->addRow(this->Toggle("diffuse  kd Il (N.L)", &ViewState::Diffuse));
@@ -279,6 +302,7 @@ void ControlPanel::Show()
   this->Ns->SetShininess(m.Ns);
   this->AmbientLight->SetColor(s.Ambient);
   this->Attenuation->SetValue(s.Attenuation);
+  this->Fogging->SetFog(s.Fogging);
   this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights));
   const bool fromFile = s.Normals != NormalsMode::Compute && this->Engine.HasFileNormals();
   const auto weighting = std::find(Weightings.begin(), Weightings.end(), s.Computed.Weighting);

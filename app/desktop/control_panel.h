@@ -19,6 +19,7 @@ class QDoubleSpinBox;
 namespace shadelab
 {
 class ColorEdit;
+class FogEdit;
 class TripleEdit;
 class LightListEdit;
 class ShininessEdit;
@@ -42,6 +43,7 @@ private:
   ShininessEdit* Ns;
   ColorEdit* AmbientLight;
   TripleEdit* Attenuation; // the scene's C0, C1, C2
+  FogEdit* Fogging;
   QComboBox* LightChoice;
   QComboBox* NormalsChoice;
   QDoubleSpinBox* FeatureAngle;

@@ -2,6 +2,7 @@
 // key list (key h) in the middle.
 #include "desktop/inspector.h"
 #include "scene/scene_parts.h"
+#include "settings/setting_kinds.h"
 
 #include <vtkTextProperty.h>
 
@@ -107,6 +108,10 @@ void Inspector::UpdateHud()
   {
     hud << " / (" << s.Attenuation[0] << " + " << s.Attenuation[1] << " d + " << s.Attenuation[2]
         << " d^2)";
+  }
+  if (s.Fogging.Mode != FogMode::None)
+  {
+    hud << " | fog " << settings::FogSpec{}.Text(s.Fogging);
   }
   hud << "\n";
   hud << this->Triangles << " triangles | normals: "

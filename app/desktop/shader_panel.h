@@ -1,7 +1,7 @@
 // The running shader beside the picture: the complete vertex and fragment
 // GLSL that draws the view now (Inspector::GetShownShaders, the program the
 // mapper bound), in two read-only tabs with line numbers, with the lines that compute each
-// term of the equation, and each effect a scene adds (attenuation), on a
+// term of the equation, and each effect a scene adds (attenuation, fog), on a
 // background of its colour. The generator
 // marks those lines (TermMarker, shadelabShaderSource.h); nothing here
 // guesses from variable names. The term buttons are the colours' legend
@@ -48,7 +48,7 @@ private:
 
   QTabWidget* Tabs;
   std::array<QPlainTextEdit*, 2> Stages;   // vertex, fragment
-  std::array<QAbstractButton*, 5> Buttons; // all, then Marks() (shader_panel.cxx)
+  std::array<QAbstractButton*, 6> Buttons; // all, then Marks() (shader_panel.cxx)
   ShaderSources Sources;
   std::size_t Shown = AllMarks;
 };

@@ -4,6 +4,7 @@
 #include "scene/scene_file.h"
 #include "scene/scene_parts.h"
 #include "settings/light_setting.h"
+#include "settings/setting_kinds.h"
 #include "shadelabJsonProblem.h"
 #include "shadelabVersion.h"
 
@@ -180,6 +181,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["ssaa"] = o.Supersampling;
   j["background"] =
     o.TransparentBackground ? nlohmann::json("transparent") : nlohmann::json(o.Background);
+  if (o.Fogging.Mode != FogMode::None)
+  {
+    j["fog"] = settings::FogSpec{}.Text(o.Fogging); // as --fog and the scene key write it
+  }
   j["normals"] = ToString(o.Normals);
   j["weighting"] = o.Computed.Weighting;
   j["feature_angle"] =

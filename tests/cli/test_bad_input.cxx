@@ -303,6 +303,23 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--light", "point:0,0,5@0,0,-1" });
     },
     2, { "--light", "negative" } },
+  { "FogEndNotBeyondStart",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "linear:10,2" });
+    },
+    2, { "--fog", "not beyond" } },
+  { "FogDensityNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "exp2:-1" });
+    },
+    2, { "--fog", "negative" } },
+  { "FogTowardsTransparentWithoutAColour",
+    [](const TempDir& d)
+    {
+      return WithMesh(
+        d, "t.obj", Tetrahedron, { "--fog", "exp:0.1", "--background", "transparent" });
+    },
+    1, { "--fog", "colour of its own" } },
   { "ViewAngleOutOfRange",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" });

@@ -113,6 +113,44 @@ TEST(Options, AttenuationIsTheScenesOrALightsOwn)
   }
 }
 
+TEST(Options, FogModesAndTheirNumbers)
+{
+  EXPECT_EQ(ParseFog("none").Mode, FogMode::None);
+  const Fog linear = ParseFog("linear:2,10");
+  EXPECT_EQ(linear.Mode, FogMode::Linear);
+  EXPECT_EQ(linear.Start, 2);
+  EXPECT_EQ(linear.End, 10);
+  EXPECT_FALSE(linear.Color) << "no colour: the background's";
+  const Fog exp2 = ParseFog("exp2:0.25:0.5,0.5,1");
+  EXPECT_EQ(exp2.Mode, FogMode::Exp2);
+  EXPECT_EQ(exp2.Density, 0.25);
+  EXPECT_EQ(exp2.Color, (Rgb{ 0.5, 0.5, 1 }));
+  EXPECT_EQ(ParseFog("exp:0").Density, 0) << "no fog at all, but a valid one";
+  const std::pair<const char*, const char*> bad[] = {
+    { "mist:1", "unknown fog 'mist'" },
+    { "linear:10,2", "fog END '2' is not beyond START '10'" },
+    { "linear:3,3", "not beyond" },
+    { "linear:1", "START,END" },
+    { "exp:-0.1", "fog density '-0.1' is negative" },
+    { "exp2", "exp2:DENSITY" },
+    { "exp:1:1,1", "R,G,B" },
+    { "none:1", "is not none" },
+    { "exp:1:1,1,1:extra", "is not none" },
+  };
+  for (const auto& [text, words] : bad)
+  {
+    try
+    {
+      ParseFog(text);
+      ADD_FAILURE() << text << " was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << text << ": " << e.what();
+    }
+  }
+}
+
 TEST(Options, BadLightsNameTheProblem)
 {
   const std::pair<const char*, const char*> cases[] = {

@@ -58,7 +58,7 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
                       "half_angle": 30, "exponent": 2, "color": [1, 0.5, 0.5],
                       "attenuation": [1, 0, 0.5] },
                     { "kind": "point", "position": [1, 1, 1] } ],
-        "attenuation": [0.5, 0.25, 0],
+        "attenuation": [0.5, 0.25, 0], "fog": "exp:0.5:0.25,0.5,1",
         "reflection": "phong", "orient": true, "feature_angle": 30, "weighting": "max",
         "normals": "compute", "background": [0.1, 0.2, 0.3], "ambient": [0, 0, 0],
         "pixel_type": "uint16", "name": "third" }
@@ -96,6 +96,10 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
   EXPECT_EQ(c.Scene.Lights[0].Attenuation, (Vec3{ 1, 0, 0.5 })) << "the light's own";
   EXPECT_FALSE(c.Scene.Lights[1].Attenuation) << "none of its own: the scene's";
   EXPECT_EQ(a.Attenuation, NoAttenuation) << "the default: none";
+  EXPECT_EQ(c.Scene.Fogging.Mode, FogMode::Exp);
+  EXPECT_EQ(c.Scene.Fogging.Density, 0.5);
+  EXPECT_EQ(c.Scene.Fogging.Color, (Rgb{ 0.25, 0.5, 1 }));
+  EXPECT_EQ(a.Fogging.Mode, FogMode::None);
   EXPECT_EQ(c.Scene.Lights[0].Kind, LightKind::Spot);
   EXPECT_EQ(c.Scene.Lights[0].HalfAngleDeg, 30);
   EXPECT_EQ(c.Scene.Lights[0].Exponent, 2);
@@ -145,6 +149,9 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     { head +
         R"({ "lights": [ { "kind": "point", "position": [0, 0, 1], "attenuation": [0, 0, 0] } ] } ] })",
       "shots[3].lights[0]: attenuation '0,0,0' is all zero" },
+    { head + R"({ "fog": "linear:5,1" } ] })",
+      "shots[3].fog: fog END '1' is not beyond START '5'" },
+    { head + R"({ "fog": 0.5 } ] })", "shots[3].fog: " },
     { head + R"({ "attenuation": [1, -1, 0] } ] })",
       "shots[3].attenuation: attenuation '1,-1,0' has a negative coefficient" },
     { head + R"({ "camera": { "view_angle": 200 } } ] })",

@@ -257,6 +257,20 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
         Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0.5");
       },
       { "--attenuation" } },
+    { "fog", [&] { QTest::keyClick(find("fog"), Qt::Key_Down); }, { "--fog" } },
+    { "fog end", [&] { Type(window.findChild<QDoubleSpinBox*>("fog end"), "1e6"); }, { "--fog" } },
+    { "fog end not beyond start",
+      [&]
+      {
+        // Refused as --fog refuses it: the number goes back.
+        const Fog before = inspector.GetState().Scene.Fogging;
+        ASSERT_EQ(before.Mode, FogMode::Linear);
+        Type(window.findChild<QDoubleSpinBox*>("fog end"), "-5");
+        EXPECT_EQ(inspector.GetState().Scene.Fogging, before);
+        EXPECT_EQ(window.findChild<QDoubleSpinBox*>("fog end")->value(), before.End);
+        Type(window.findChild<QDoubleSpinBox*>("fog start"), "1");
+      },
+      { "--fog" } },
     { "lights", [&] { QTest::keyClick(find("lights"), Qt::Key_Down); }, { "--light" } },
     { "add spot", [&] { static_cast<QPushButton*>(find("add spot"))->click(); }, { "--light" } },
     { "light position", [&] { Type(window.findChild<QDoubleSpinBox*>("light position x"), "1.5"); },
@@ -485,5 +499,34 @@ TEST(ShaderPanel, MarksTheAttenuationOnlyWhereTheSceneHasIt)
   EXPECT_EQ(Highlighted(fragment), lines);
   Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0");
   EXPECT_TRUE(attenuationLines().empty()) << "1, 0, 0 compiles to no code";
+  EXPECT_FALSE(button->isEnabled());
+}
+
+// Fog's lines are the fragment stage's last, under every rule, and only
+// with fog.
+TEST(ShaderPanel, MarksTheFogOnlyWhereTheSceneHasIt)
+{
+  Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open({ 240, 180 }));
+  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
+  auto* button = window.findChild<QPushButton*>("highlight fog");
+  ASSERT_TRUE(fragment && button);
+  const auto fogLines = [fragment]
+  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: fog" }); };
+  EXPECT_TRUE(fogLines().empty());
+  EXPECT_FALSE(button->isEnabled());
+  QTest::keyClick(window.findChild<QComboBox*>("fog"), Qt::Key_End); // exp2
+  ASSERT_EQ(inspector.GetState().Scene.Fogging.Mode, FogMode::Exp2);
+  EXPECT_GT(inspector.GetState().Scene.Fogging.Density, 0) << "seeded from the camera";
+  const std::set<int> lines = fogLines();
+  EXPECT_EQ(lines.size(), 3u) << "the depth, the factor, the colour";
+  EXPECT_TRUE(button->isEnabled());
+  button->click();
+  EXPECT_EQ(Highlighted(fragment), lines);
+  QTest::keyClick(window.findChild<QComboBox*>("fog"), Qt::Key_Home); // none
+  EXPECT_TRUE(fogLines().empty());
   EXPECT_FALSE(button->isEnabled());
 }

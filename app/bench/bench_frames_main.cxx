@@ -4,8 +4,8 @@
 // program that per-scene generation is measured against, and with VTK's
 // unlit surface (one colour, positions alone: no normals, no lighting), the
 // least any shading rule's frame can cost through this mapper; and ours with
-// distance attenuation (1, 0.05, 0.01 on the light at the camera), the
-// effect's cost against the same rule without it.
+// distance attenuation (1, 0.05, 0.01 on the light at the camera) and with
+// fog (exp2:0.1), each effect's cost against the same rule without it.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
 //                         [--vertex-colors] [--texture] [--parts N]
@@ -67,6 +67,7 @@ struct Variant
   bool AllFeatures = false;
   bool Unlit = false;      // VTK's own, lighting off, drawn from positions alone
   bool Attenuated = false; // ours with distance attenuation: its cost against the same rule's
+  bool Fogged = false;     // ours with fog: the same
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -244,7 +245,10 @@ int main(int argc, char** argv)
     { "phong-allfeatures", Shading::Phong, false, true },
     { "flat-attenuated", Shading::Flat, false, false, false, true },
     { "gouraud-attenuated", Shading::Gouraud, false, false, false, true },
-    { "phong-attenuated", Shading::Phong, false, false, false, true } };
+    { "phong-attenuated", Shading::Phong, false, false, false, true },
+    { "flat-fogged", Shading::Flat, false, false, false, false, true },
+    { "gouraud-fogged", Shading::Gouraud, false, false, false, false, true },
+    { "phong-fogged", Shading::Phong, false, false, false, false, true } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -259,6 +263,10 @@ int main(int argc, char** argv)
     if (v.Attenuated)
     {
       scene.Attenuation = { 1, 0.05, 0.01 };
+    }
+    if (v.Fogged)
+    {
+      scene.Fogging = ParseFog("exp2:0.1");
     }
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())

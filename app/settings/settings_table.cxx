@@ -75,7 +75,7 @@ std::vector<Setting> MakeSettings()
             "direction from the camera: linear:START,END (f = (END-d)/(END-START) clamped to [0, "
             "1]), exp:DENSITY (f = exp(-DENSITY*d)) or exp2:DENSITY (f = exp(-(DENSITY*d)^2)), "
             "each with :R,G,B for its colour (default the background's; a transparent background "
-            "fogs towards transparent); the colour C becomes f*C + (1-f)*FOG" },
+            "needs one); the colour C becomes f*C + (1-f)*FOG" },
       FogSpec{}, SHADELAB_FIELD(Fogging)),
     Plain({ "--camera-position", "camera.position", "X,Y,Z", "Camera position" }, point,
       SHADELAB_FIELD(CameraPosition)),

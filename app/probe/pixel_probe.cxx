@@ -147,22 +147,9 @@ PixelProbe PixelProber::Probe(Pixel at) const
   {
     // Per fragment under every rule: at the point under the pixel centre
     // (flat's too, which is lit at its provoking vertex).
-    Vec3 P{ 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        P[c] += p.Fragment.Weights[k] * p.Fragment.Positions[k][c];
-      }
-    }
-    PixelProbe::FogAt fog;
-    fog.Mode = this->Fogging.Mode;
-    fog.Depth = FogDepth(P, this->In.Eye, this->In.ViewDirection);
-    fog.Factor = FogFactor(this->Fogging, fog.Depth);
-    fog.Color = this->Fogging.Color.value_or(p.Background);
-    fog.Before = p.Shaded.Color;
-    p.Shaded.Color = Fogged(fog.Before, fog.Factor, fog.Color);
-    p.Fogged = fog;
+    p.Fogged = FogOver(this->Fogging, p.Shaded.Color, p.Shaded.Point, this->In.Eye,
+      this->In.ViewDirection, p.Background);
+    p.Shaded.Color = p.Fogged->After;
   }
   return p;
 }

@@ -54,14 +54,8 @@ struct PixelProbe
   MaterialSource Source = MaterialSource::Default; // where Surface came from
   TriangleFragment Fragment;                       // positions, normals, weights, facing (world)
   ShadedFragment Shaded;                           // the rule's value and terms: the oracle
-  // With fog, at the point under the pixel centre: its depth, factor and
-  // colour, and the rule's colour before it; Shaded.Color is the colour after.
-  struct FogAt
-  {
-    FogMode Mode = FogMode::None;
-    double Depth = 0, Factor = 1;
-    Rgb Color{}, Before{};
-  };
+  // With fog, at the point under the pixel centre (FogOver); Shaded.Color
+  // is its After.
   std::optional<FogAt> Fogged;
 };
 

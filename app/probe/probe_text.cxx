@@ -244,7 +244,7 @@ std::string ProbeText(const PixelProbe& p)
   }
   if (p.Fogged)
   {
-    const PixelProbe::FogAt& fog = *p.Fogged;
+    const FogAt& fog = *p.Fogged;
     out.Add("", oracle + " = " + ProbeTriple(fog.Before), "before the fog");
     out.Add("", "d = " + ProbeNumber(fog.Depth), "the depth along the view direction, for the fog");
     out.Add("", "f = " + ProbeNumber(fog.Factor),

@@ -5,12 +5,8 @@
 
 namespace shadelab
 {
-double FogDepth(const Vec3& P, const Vec3& eye, const Vec3& viewDirection)
+namespace
 {
-  return (P[0] - eye[0]) * viewDirection[0] + (P[1] - eye[1]) * viewDirection[1] +
-    (P[2] - eye[2]) * viewDirection[2];
-}
-
 double FogFactor(const Fog& fog, double depth)
 {
   switch (fog.Mode)
@@ -29,14 +25,24 @@ double FogFactor(const Fog& fog, double depth)
   }
   return 1;
 }
+}
 
-Rgb Fogged(const Rgb& colour, double factor, const Rgb& fogColour)
+FogAt FogOver(const Fog& fog, const Rgb& C, const Vec3& P, const Vec3& eye,
+  const Vec3& viewDirection, const Rgb& background)
 {
-  Rgb out{};
+  FogAt at;
+  at.Mode = fog.Mode;
   for (int c = 0; c < 3; ++c)
   {
-    out[c] = factor * colour[c] + (1 - factor) * fogColour[c];
+    at.Depth += (P[c] - eye[c]) * viewDirection[c];
   }
-  return out;
+  at.Factor = FogFactor(fog, at.Depth);
+  at.Color = fog.Color.value_or(background);
+  at.Before = C;
+  for (int c = 0; c < 3; ++c)
+  {
+    at.After[c] = at.Factor * C[c] + (1 - at.Factor) * at.Color[c];
+  }
+  return at;
 }
 }

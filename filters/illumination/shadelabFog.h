@@ -45,23 +45,27 @@ struct Fog
   bool operator!=(const Fog& o) const { return !(*this == o); }
 };
 
-/**
- * The depth that fog takes: P's distance from the camera's position along
- * its unit view direction (OpenGL's eye-space depth, -z in view
- * coordinates), for both projections.
- */
-double FogDepth(const Vec3& P, const Vec3& eye, const Vec3& viewDirection);
+/** Fog at one surface point: what it took and what it made. */
+struct FogAt
+{
+  FogMode Mode = FogMode::None;
+  // P's distance from the camera's position along its unit view direction
+  // (OpenGL's eye-space depth, -z in view coordinates), for both projections.
+  double Depth = 0;
+  // How much of the colour is left at Depth: clamp((End - d)/(End - Start),
+  // 0, 1), exp(-Density*d) or exp(-(Density*d)^2); 1 without fog.
+  double Factor = 1;
+  Rgb Color{};  // the fog's: its own, or the background's
+  Rgb Before{}; // the shaded colour C
+  Rgb After{};  // f*C + (1 - f)*Color
+};
 
 /**
- * How much of the shaded colour is left at depth d (the point's distance
- * along the camera's view direction from the camera's position):
- * clamp((End - d)/(End - Start), 0, 1), exp(-Density*d) or
- * exp(-(Density*d)^2); 1 without fog.
+ * `fog` over colour C at surface point P, seen from `eye` along the unit
+ * `viewDirection`, towards its colour or else `background`.
  */
-double FogFactor(const Fog& fog, double depth);
-
-/** The colour after fog: f*C + (1 - f)*F, F the fog's colour. */
-Rgb Fogged(const Rgb& colour, double factor, const Rgb& fogColour);
+FogAt FogOver(const Fog& fog, const Rgb& C, const Vec3& P, const Vec3& eye,
+  const Vec3& viewDirection, const Rgb& background);
 }
 
 #endif

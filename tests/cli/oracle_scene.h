@@ -870,20 +870,11 @@ private:
     e.Value = shaded.Color;
     if (this->S.Fog.Mode != shadelab::FogMode::None)
     {
-      // Per fragment under every rule: at the point under the pixel centre.
-      Vec3 P{ 0, 0, 0 };
-      for (int k = 0; k < 3; ++k)
-      {
-        P = P + w[k] * f.Positions[k];
-      }
-      const shadelab::Fog fog = WorldFog(this->S);
-      const double factor = shadelab::FogFactor(
-        fog, shadelab::FogDepth(P, this->S.World({ 0, 0, this->S.CameraDistance }), { 0, 0, -1 }));
-      const Rgb colour = fog.Color.value_or(Rgb{ 0, 0, 0 }); // the background: black
-      for (int c = 0; c < 3; ++c)
-      {
-        e.Value[c] = factor * e.Value[c] + (1 - factor) * colour[c];
-      }
+      // Per fragment under every rule: at the point under the pixel centre,
+      // towards the background (black) unless the fog has a colour.
+      e.Value = shadelab::FogOver(WorldFog(this->S), e.Value, shaded.Point,
+        this->S.World({ 0, 0, this->S.CameraDistance }), { 0, 0, -1 }, { 0, 0, 0 })
+                  .After;
     }
     e.Terms = shaded.Terms;
     e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});

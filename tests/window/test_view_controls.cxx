@@ -28,6 +28,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <regex>
@@ -475,8 +476,33 @@ TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
   }
 }
 
-// Attenuation's lines are marked, and its button enabled, only where the
-// program has them: in the stage that lights, once per point or spot light.
+// An effect's lines are marked, and its button enabled, only where the
+// program has them: none before `on`, `count` in the fragment stage after
+// it, highlighted by the button, and none again after `off`.
+void ExpectMarkedOnlyWhenUsed(InspectorWindow& window, const std::string& effect,
+  const std::function<void()>& on, std::size_t count, const std::function<void()>& off)
+{
+  SCOPED_TRACE(effect);
+  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
+  auto* button = window.findChild<QPushButton*>(QString::fromStdString("highlight " + effect));
+  ASSERT_TRUE(fragment && button);
+  const auto marked = [fragment, &effect]
+  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: " + effect }); };
+  EXPECT_TRUE(marked().empty());
+  EXPECT_FALSE(button->isEnabled());
+  on();
+  const std::set<int> lines = marked();
+  EXPECT_EQ(lines.size(), count);
+  EXPECT_TRUE(button->isEnabled());
+  button->click();
+  EXPECT_EQ(Highlighted(fragment), lines);
+  off();
+  EXPECT_TRUE(marked().empty()) << "switched off, it compiles to no code";
+  EXPECT_FALSE(button->isEnabled());
+}
+
+// Attenuation's line is in the stage that lights, once per point or spot
+// light (phong: the fragment stage); 1, 0, 0 is none.
 TEST(ShaderPanel, MarksTheAttenuationOnlyWhereTheSceneHasIt)
 {
   Inspector inspector(SpotView(Shading::Phong), "shadelab view");
@@ -484,26 +510,13 @@ TEST(ShaderPanel, MarksTheAttenuationOnlyWhereTheSceneHasIt)
   const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open({ 240, 180 }));
-  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
-  auto* button = window.findChild<QPushButton*>("highlight attenuation");
-  ASSERT_TRUE(fragment && button);
-  const auto attenuationLines = [fragment]
-  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: attenuation" }); };
-  EXPECT_TRUE(attenuationLines().empty());
-  EXPECT_FALSE(button->isEnabled());
-  Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0.25");
-  const std::set<int> lines = attenuationLines();
-  EXPECT_EQ(lines.size(), 1u) << "one point light at the camera";
-  EXPECT_TRUE(button->isEnabled());
-  button->click();
-  EXPECT_EQ(Highlighted(fragment), lines);
-  Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0");
-  EXPECT_TRUE(attenuationLines().empty()) << "1, 0, 0 compiles to no code";
-  EXPECT_FALSE(button->isEnabled());
+  auto* c1 = window.findChild<QDoubleSpinBox*>("attenuation c1");
+  ExpectMarkedOnlyWhenUsed(
+    window, "attenuation", [c1] { Type(c1, "0.25"); }, 1, [c1] { Type(c1, "0"); });
 }
 
-// Fog's lines are the fragment stage's last, under every rule, and only
-// with fog.
+// Fog's lines are the fragment stage's last under every rule: the depth,
+// the factor, the colour.
 TEST(ShaderPanel, MarksTheFogOnlyWhereTheSceneHasIt)
 {
   Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");
@@ -511,22 +524,14 @@ TEST(ShaderPanel, MarksTheFogOnlyWhereTheSceneHasIt)
   const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open({ 240, 180 }));
-  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
-  auto* button = window.findChild<QPushButton*>("highlight fog");
-  ASSERT_TRUE(fragment && button);
-  const auto fogLines = [fragment]
-  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: fog" }); };
-  EXPECT_TRUE(fogLines().empty());
-  EXPECT_FALSE(button->isEnabled());
-  QTest::keyClick(window.findChild<QComboBox*>("fog"), Qt::Key_End); // exp2
-  ASSERT_EQ(inspector.GetState().Scene.Fogging.Mode, FogMode::Exp2);
-  EXPECT_GT(inspector.GetState().Scene.Fogging.Density, 0) << "seeded from the camera";
-  const std::set<int> lines = fogLines();
-  EXPECT_EQ(lines.size(), 3u) << "the depth, the factor, the colour";
-  EXPECT_TRUE(button->isEnabled());
-  button->click();
-  EXPECT_EQ(Highlighted(fragment), lines);
-  QTest::keyClick(window.findChild<QComboBox*>("fog"), Qt::Key_Home); // none
-  EXPECT_TRUE(fogLines().empty());
-  EXPECT_FALSE(button->isEnabled());
+  auto* mode = window.findChild<QComboBox*>("fog");
+  ExpectMarkedOnlyWhenUsed(
+    window, "fog",
+    [&]
+    {
+      QTest::keyClick(mode, Qt::Key_End); // exp2
+      ASSERT_EQ(inspector.GetState().Scene.Fogging.Mode, FogMode::Exp2);
+      EXPECT_GT(inspector.GetState().Scene.Fogging.Density, 0) << "seeded from the camera";
+    },
+    3, [mode] { QTest::keyClick(mode, Qt::Key_Home); }); // none
 }

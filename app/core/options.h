@@ -6,6 +6,7 @@
 
 #include "shadelabFog.h"
 #include "shadelabIllumination.h"
+#include "shadelabRepresentation.h"
 #include "shadelabTexture.h"
 
 #include <array>
@@ -150,6 +151,11 @@ struct SceneOptions
   // attenuation of its own (EffectiveLights); 1,0,0 is none.
   Vec3 Attenuation = NoAttenuation;
   Fog Fogging; // --fog: none by default
+  // --representation: the surface, or its edges or points lit by the same
+  // rule (DrawnElements), as lines and squares this many pixels wide.
+  Representation Drawn = Representation::Surface;
+  int LineWidth = 1;
+  int PointSize = 1;
   ImageSize Size;
   int Supersampling = 1; // --ssaa N: N x N samples per pixel, box-averaged in float
   std::optional<Vec3> CameraPosition, CameraFocalPoint, CameraViewUp;
@@ -242,6 +248,11 @@ std::string RenderedSize(const SceneOptions& o, ImageSize& rendered);
 
 /** The largest supersampling, N x N samples a pixel. */
 constexpr int MaxSupersampling = 8;
+// Aliased lines and points as OpenGL draws them without VTK's geometry
+// shader (which would not pass the generated stages' values on): OpenGL
+// 3.2 promises no more than 1, Mesa's llvmpipe draws up to 255.
+constexpr int MaxLineWidth = 16;
+constexpr int MaxPointSize = 64;
 
 /** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
 constexpr int MaxOrbitFrames = 3600;

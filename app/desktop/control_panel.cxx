@@ -3,6 +3,7 @@
 #include "desktop/color_edit.h"
 #include "desktop/fog_edit.h"
 #include "desktop/light_list_edit.h"
+#include "desktop/representation_edit.h"
 #include "desktop/shininess_edit.h"
 #include "desktop/triple_edit.h"
 #include "shadelabVec3.h"
@@ -49,6 +50,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , Engine(inspector)
   , Rule(NamesBox<Shading>(this))
   , Model(new QComboBox(this))
+  , Drawn(new RepresentationEdit(this))
   , MaterialRow(new QComboBox(this))
   , Ns(new ShininessEdit(this))
   , AmbientLight(new ColorEdit("Ia", this))
@@ -80,6 +82,18 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   shading->addRow("Rule", this->Rule);
   this->Model->addItems({ "Blinn-Phong", "Phong" }); // Reflection's order
   shading->addRow("Reflection", this->Model);
+  shading->addRow("Drawn", this->Drawn);
+  this->Drawn->setToolTip("The surface, or its edges or points lit by the same rule");
+  this->Drawn->Edited = [this](Representation drawn, int lineWidth, int pointSize)
+  {
+    this->Engine.Edit(
+      [=](ViewState& s)
+      {
+        s.Scene.Drawn = drawn;
+        s.Scene.LineWidth = lineWidth;
+        s.Scene.PointSize = pointSize;
+      });
+  };
   QObject::connect(this->Rule, QOverload<int>::of(&QComboBox::activated), this,
     [this](int rule) {
       this->Engine.Edit([rule](ViewState& s) { s.Scene.ShadingRule = static_cast<Shading>(rule); });
@@ -290,6 +304,7 @@ void ControlPanel::Show()
     QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle) };
   this->Rule->setCurrentIndex(static_cast<int>(s.ShadingRule));
   this->Model->setCurrentIndex(static_cast<int>(s.ReflectionModel));
+  this->Drawn->Set(s.Drawn, s.LineWidth, s.PointSize);
   const auto& table = LectureMaterials();
   const auto row = std::find_if(
     table.begin(), table.end(), [&s](const Material& t) { return t.Name == s.MaterialName; });

@@ -22,6 +22,7 @@ class ColorEdit;
 class FogEdit;
 class TripleEdit;
 class LightListEdit;
+class RepresentationEdit;
 class ShininessEdit;
 
 class ControlPanel : public QWidget
@@ -38,6 +39,7 @@ private:
   Inspector& Engine;
   QComboBox* Rule;
   QComboBox* Model;
+  RepresentationEdit* Drawn;
   QComboBox* MaterialRow;
   std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks
   ShininessEdit* Ns;

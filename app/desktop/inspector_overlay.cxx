@@ -113,6 +113,14 @@ void Inspector::UpdateHud()
   {
     hud << " | fog " << settings::FogSpec{}.Text(s.Fogging);
   }
+  if (s.Drawn == Representation::Wireframe)
+  {
+    hud << " | wireframe, " << s.LineWidth << " px lines";
+  }
+  else if (s.Drawn == Representation::Points)
+  {
+    hud << " | points, " << s.PointSize << " px";
+  }
   hud << "\n";
   hud << this->Triangles << " triangles | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"

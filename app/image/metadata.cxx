@@ -185,6 +185,12 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   {
     j["fog"] = settings::FogSpec{}.Text(o.Fogging); // as --fog and the scene key write it
   }
+  if (o.Drawn != Representation::Surface)
+  {
+    j["representation"] = ToString(o.Drawn);
+    j[o.Drawn == Representation::Wireframe ? "line_width" : "point_size"] =
+      o.Drawn == Representation::Wireframe ? o.LineWidth : o.PointSize;
+  }
   j["normals"] = ToString(o.Normals);
   j["weighting"] = o.Computed.Weighting;
   j["feature_angle"] =

@@ -152,6 +152,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
     drawn.Shading->SetFog(options.Fogging, options.Background);
+    drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

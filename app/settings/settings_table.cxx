@@ -77,6 +77,15 @@ std::vector<Setting> MakeSettings()
             "each with :R,G,B for its colour (default the background's; a transparent background "
             "needs one); the colour C becomes f*C + (1-f)*FOG" },
       FogSpec{}, SHADELAB_FIELD(Fogging)),
+    Plain({ "--representation", "representation", "",
+            "Draw the surface, or its edges (wireframe) or its points, each once, lit by the same "
+            "rule and equation with the normal turned towards the viewer; flat lights an edge "
+            "or a point with the normal of the first triangle that has it" },
+      Choice<Representation>{ "representation" }, SHADELAB_FIELD(Drawn)),
+    Plain({ "--line-width", "line_width", "W", "Wireframe: the edges' width in whole pixels" },
+      Integer{ 1, MaxLineWidth }, SHADELAB_FIELD(LineWidth)),
+    Plain({ "--point-size", "point_size", "S", "Points: the squares' side in whole pixels" },
+      Integer{ 1, MaxPointSize }, SHADELAB_FIELD(PointSize)),
     Plain({ "--camera-position", "camera.position", "X,Y,Z", "Camera position" }, point,
       SHADELAB_FIELD(CameraPosition)),
     Plain({ "--camera-focal-point", "camera.focal_point", "X,Y,Z", "Point the camera looks at" },

@@ -113,13 +113,13 @@ PictureTriangles::PictureTriangles(const PinholeCamera& camera, int width, int h
     // The inverse of PictureRay.
     const double scale = camera.Orthographic ? half : half * depth;
     const double h = dot(d, f.Right) / (scale * aspect), v = dot(d, f.Up) / scale;
-    this->Projected.push_back({ (h + 1) * width / 2, (1 - v) * height / 2, depth });
+    this->Projections.push_back({ (h + 1) * width / 2, (1 - v) * height / 2, depth });
   }
   for (const TriangleCorners& t : this->Triangles)
   {
-    const auto& a = this->Projected[t[0]];
-    const auto& b = this->Projected[t[1]];
-    const auto& c = this->Projected[t[2]];
+    const auto& a = this->Projections[t[0]];
+    const auto& b = this->Projections[t[1]];
+    const auto& c = this->Projections[t[2]];
     // A margin far below a pixel and far above the rounding of two routes
     // to the same point (the projection here, the ray's hit there).
     constexpr double Margin = 1e-6;
@@ -138,9 +138,9 @@ Ray PictureTriangles::RayAt(double x, double y) const
 double PictureTriangles::EdgeDistance(std::size_t t, double x, double y) const
 {
   const TriangleCorners& c = this->Triangles[t];
-  const auto& a = this->Projected[c[0]];
-  const auto& b = this->Projected[c[1]];
-  const auto& d = this->Projected[c[2]];
+  const auto& a = this->Projections[c[0]];
+  const auto& b = this->Projections[c[1]];
+  const auto& d = this->Projections[c[2]];
   return std::min(
     { SegmentDistance(x, y, a, b), SegmentDistance(x, y, b, d), SegmentDistance(x, y, d, a) });
 }

@@ -87,6 +87,9 @@ public:
 
   const std::vector<Vec3>& GetPoints() const { return this->Points; }
   const std::vector<TriangleCorners>& GetTriangles() const { return this->Triangles; }
+  const PinholeCamera& GetCamera() const { return this->Camera; }
+  /** Point p in the picture: x, y, and its depth along the direction of view. */
+  const std::array<double, 3>& Projected(std::size_t p) const { return this->Projections[p]; }
 
 private:
   // Pixels from (x, y) to the boundary of triangle t's projection.
@@ -107,8 +110,8 @@ private:
   std::vector<Vec3> Points;
   std::vector<TriangleCorners> Triangles;
   Vec3 Forward;
-  std::vector<std::array<double, 3>> Projected; // per point: x, y, depth along the view
-  std::vector<Footprint> Footprints;            // per triangle
+  std::vector<std::array<double, 3>> Projections; // per point: x, y, depth along the view
+  std::vector<Footprint> Footprints;              // per triangle
 };
 }
 

@@ -16,7 +16,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
     this->Specular == o.Specular && this->Attenuation == o.Attenuation && this->Fog == o.Fog &&
-    this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
+    this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
 }
@@ -120,6 +120,29 @@ const char* const ShadeFragmentSource = R"glsl(  vec3 shadelabN;
   fragOutput0 = vec4(shadelabIlluminate(vertexVC.xyz, shadelabN), 1.0);
 )glsl";
 
+// Edges and points (ShaderFeatures::Drawn): a line or a point has no
+// facing (gl_FrontFacing is true for them), so the normal that lights is
+// turned towards the viewer, as a back face's is (ShadeElementFragment).
+const char* const TowardsViewerSource = R"glsl(vec3 shadelabTowardsViewer(vec3 n, vec3 p)
+{
+  vec3 v = shadelabOrthographic == 1 ? vec3(0.0, 0.0, 1.0) : -p;
+  return dot(n, v) < 0.0 ? -n : n;
+}
+)glsl";
+
+// Phong for edges and points: the interpolated normal turned towards the
+// viewer; one of no usable length lights ka*Ia alone (no face to fall back to).
+const char* const ShadeElementFragmentSource =
+  R"glsl(  vec3 shadelabLit = shadelabKa * shadelabIa; // shadelab: ambient
+  float shadelabLength = length(normalVCVSOutput);
+  if (shadelabLength > 1e-6 && !isinf(shadelabLength))
+  {
+    shadelabLit = shadelabIlluminate(
+      vertexVC.xyz, shadelabTowardsViewer(normalVCVSOutput, vertexVC.xyz) / shadelabLength);
+  }
+  fragOutput0 = vec4(shadelabLit, 1.0);
+)glsl";
+
 // The texel that multiplies kd and ka, per fragment under every rule.
 const char* const TexelSource =
   "  vec3 shadelabTexel = texture(shadelabTexture, shadelabTCoordVSOutput).rgb;\n";
@@ -143,6 +166,13 @@ void Prepend(
     }
   }
   r.push_back({ vertex, tag, code });
+}
+
+// The equation's functions for the stage that lights, and for edges and
+// points the turn towards the viewer.
+std::string LitSource(const ShaderFeatures& f)
+{
+  return IlluminateSource(f) + (f.Drawn == Representation::Surface ? "" : TowardsViewerSource);
 }
 
 // The texture coordinates, passed to the fragment (interpolated with
@@ -229,10 +259,12 @@ std::string PickApartByFacing(const ShaderFeatures& f)
 void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
   const bool apart = f.Textured();
-  std::string declarations = IlluminateSource(f) +
+  std::string declarations = LitSource(f) +
     (apart ? ApartOutputs("out") : "out vec3 shadelabFront;\nout vec3 shadelabBack;\n");
-  std::string lighting =
-    FillGlsl(apart ? VertexLightingApartSource : VertexLightingSource, "normalVCVSOutput");
+  std::string lighting = FillGlsl(apart ? VertexLightingApartSource : VertexLightingSource,
+    f.Drawn == Representation::Surface
+      ? "normalVCVSOutput"
+      : "shadelabTowardsViewer(normalVCVSOutput, vertexVCVSOutput.xyz)");
   if (f.VertexKd)
   {
     declarations = std::string("in vec4 ") + VertexKdAttributeName + ";\n" + declarations;
@@ -263,8 +295,7 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
   const bool apart = f.Textured();
-  std::string declarations = IlluminateSource(f) + "uniform samplerBuffer " +
-    FaceNormalSamplerName +
+  std::string declarations = LitSource(f) + "uniform samplerBuffer " + FaceNormalSamplerName +
     ";\nuniform mat3 shadelabNormalMatrix;\nflat in vec4 shadelabProvokingVC;\n";
   std::string shade;
   if (f.VertexKd)
@@ -277,6 +308,9 @@ void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
     declarations += TexelKsUniformsSource;
   }
   shade += FillGlsl(FaceNormalFetchSource, FaceNormalSamplerName) +
+    (f.Drawn == Representation::Surface
+        ? ""
+        : "  n = shadelabTowardsViewer(n, shadelabProvokingVC.xyz);\n") +
     (apart ? FlatLightingApartSource : FlatLightingSource);
   if (apart)
   {
@@ -296,8 +330,9 @@ void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 // Phong: lit per fragment by the interpolated normal.
 void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
 {
-  std::string declarations = IlluminateSource(f) + "//VTK::Light::Dec";
-  std::string shade = ShadeFragmentSource;
+  const bool surface = f.Drawn == Representation::Surface;
+  std::string declarations = LitSource(f) + "//VTK::Light::Dec";
+  std::string shade = surface ? ShadeFragmentSource : ShadeElementFragmentSource;
   if (f.VertexKd)
   {
     AddVertexKdPassing(r);
@@ -319,7 +354,7 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
     shade = std::string("  shadelabKs = ") + TexelKsSource + ";\n" + shade;
   }
   r.push_back({ false, "//VTK::Light::Dec", declarations });
-  r.push_back({ false, "//VTK::UniformFlow::Impl", GeometricNormalSource });
+  r.push_back({ false, "//VTK::UniformFlow::Impl", surface ? GeometricNormalSource : "" });
   r.push_back({ false, "//VTK::Light::Impl", shade });
 }
 }

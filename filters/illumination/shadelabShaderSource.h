@@ -12,6 +12,7 @@
 
 #include "shadelabFog.h"
 #include "shadelabIllumination.h"
+#include "shadelabRepresentation.h"
 
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ struct ShaderFeatures
   // from the fragment's depth -vertexVC.z, and the fog's colour and
   // numbers as uniforms (shadelabFog.h).
   FogMode Fog = FogMode::None;
+  // What is drawn: the surface, or its edges or points, whose normal is
+  // turned towards the viewer (they have no facing) and, under phong, fall
+  // back to ka*Ia rather than to a face normal (ShadeElementFragment).
+  Representation Drawn = Representation::Surface;
   // kd per vertex, from the mesh's colours (VertexKdAttributeName): the
   // vertex that lights uses its own (gouraud; flat's provoking vertex), phong
   // and none interpolate it to the fragment.

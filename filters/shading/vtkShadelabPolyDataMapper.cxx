@@ -1,5 +1,6 @@
 #include "vtkShadelabPolyDataMapper.h"
 
+#include "shadelabRepresentation.h"
 #include "shadelabTriangleIndexBuffer.h"
 
 #include <vtkActor.h>
@@ -46,14 +47,14 @@ bool vtkShadelabPolyDataMapper::BuildSurfaceIBO(vtkActor* actor, vtkPolyData* me
   vtkProperty* property = actor->GetProperty();
   vtkCellArray* polys = mesh->GetPolys();
   vtkPoints* points = mesh->GetPoints();
-  if (property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
-    property->GetVertexVisibility() || mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() ||
-    mesh->GetNumberOfStrips() || !points ||
+  const int representation = property->GetRepresentation();
+  if (property->GetEdgeVisibility() || property->GetVertexVisibility() ||
+    mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() || mesh->GetNumberOfStrips() || !points ||
     mesh->GetPointData()->GetAttribute(vtkDataSetAttributes::EDGEFLAG))
   {
     return false;
   }
-  if (polys->GetMTime() == this->SurfacePolysTime)
+  if (polys->GetMTime() == this->SurfacePolysTime && representation == this->SurfaceRepresentation)
   {
     return true; // built from these polys, as VTK's BuildIBO keeps its own
   }
@@ -62,9 +63,21 @@ bool vtkShadelabPolyDataMapper::BuildSurfaceIBO(vtkActor* actor, vtkPolyData* me
   {
     return false;
   }
+  if (representation != VTK_SURFACE)
+  {
+    // Each edge or point once (VTK's would draw a shared edge once for
+    // each triangle, in either direction), so that gl_PrimitiveID counts
+    // the elements flat's face normals are given for (DrawnElements).
+    indices =
+      shadelab::ElementsOf(representation == VTK_POINTS ? shadelab::Representation::Points
+                                                        : shadelab::Representation::Wireframe,
+        indices)
+        .Corners;
+  }
   // VTK's BuildIBO must rebuild after this, even for a state it built before.
   this->IBOBuildState.Clear();
   this->SurfacePolysTime = polys->GetMTime();
+  this->SurfaceRepresentation = representation;
   this->EdgeValues.clear();
   // The other primitives have no cells: their buffers are emptied as VTK empties them.
   this->Primitives[PrimitivePoints].IBO->CreatePointIndexBuffer(mesh->GetVerts());

@@ -13,7 +13,8 @@
  * It also builds a surface's triangle index buffer itself
  * (shadelabTriangleIndexBuffer: the same indices, without VTK's copy of
  * each cell), where the surface is only polygons drawn without edges or
- * vertices; VTK builds every other case.
+ * vertices; VTK builds every other case. Drawn as a wireframe or as points,
+ * those polygons' edges or points are each drawn once (DrawnElements).
  */
 #ifndef vtkShadelabPolyDataMapper_h
 #define vtkShadelabPolyDataMapper_h
@@ -42,6 +43,7 @@ private:
   // The modification time of the polys that BuildSurfaceIBO last built the
   // buffers from; 0 once VTK's BuildIBO has built them.
   vtkMTimeType SurfacePolysTime = 0;
+  int SurfaceRepresentation = -1; // the representation (VTK_SURFACE, ...) they were built for
 
   vtkShadelabPolyDataMapper(const vtkShadelabPolyDataMapper&) = delete;
   void operator=(const vtkShadelabPolyDataMapper&) = delete;

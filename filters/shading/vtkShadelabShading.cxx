@@ -7,6 +7,7 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkFloatArray.h>
 #include <vtkLight.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
@@ -214,6 +215,14 @@ void vtkShadelabShading::SetFog(const Fog& fog, const Rgb& background)
   this->Modified();
 }
 
+void vtkShadelabShading::SetRepresentation(Representation drawn, double lineWidth, double pointSize)
+{
+  this->Features.Drawn = drawn;
+  this->LineWidth = lineWidth;
+  this->PointSize = pointSize;
+  this->Modified();
+}
+
 void vtkShadelabShading::SetBehindLines(bool behind)
 {
   this->Features.BehindLines = behind;
@@ -230,7 +239,20 @@ vtkSmartPointer<vtkPolyData> vtkShadelabShading::PrepareMesh(vtkPolyData* mesh) 
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(mesh);
-  if (this->Features.Rule == Shading::None || this->Features.Rule == Shading::Flat)
+  if (this->Features.Rule == Shading::Flat && this->Features.Drawn == Representation::Points)
+  {
+    // VTK 9.1 gives points the view-position plumbing flat needs only when
+    // they have point normals (GetNeedToRebuildShaders): unused zeros then.
+    if (!copy->GetPointData()->GetNormals())
+    {
+      auto zeros = vtkSmartPointer<vtkFloatArray>::New();
+      zeros->SetNumberOfComponents(3);
+      zeros->SetNumberOfTuples(copy->GetNumberOfPoints());
+      zeros->Fill(0);
+      copy->GetPointData()->SetNormals(zeros);
+    }
+  }
+  else if (this->Features.Rule == Shading::None || this->Features.Rule == Shading::Flat)
   {
     copy->GetPointData()->SetNormals(nullptr);
   }
@@ -290,7 +312,13 @@ void vtkShadelabShading::Attach(
     mapper->RemoveObserver(previous->Observer);
   }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
-  actor->GetProperty()->LightingOn();
+  vtkProperty* property = actor->GetProperty();
+  property->LightingOn();
+  property->SetRepresentation(this->Features.Drawn == Representation::Points ? VTK_POINTS
+      : this->Features.Drawn == Representation::Wireframe                    ? VTK_WIREFRAME
+                                                                             : VTK_SURFACE);
+  property->SetLineWidth(static_cast<float>(this->LineWidth));
+  property->SetPointSize(static_cast<float>(this->PointSize));
 
   auto dark = vtkSmartPointer<vtkLight>::New();
   dark->SetIntensity(0);
@@ -413,15 +441,18 @@ void vtkShadelabShading::BindFaceNormals(vtkShaderProgram* program)
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
   vtkPolyData* mesh = vtkPolyData::SafeDownCast(this->Actor->GetMapper()->GetInput());
   if (!this->FaceNormals.Texture || this->FaceNormals.Texture->GetContext() != window ||
-    this->FaceNormalsMesh != mesh || this->FaceNormalsTime < mesh->GetMTime())
+    this->FaceNormalsMesh != mesh || this->FaceNormalsTime < mesh->GetMTime() ||
+    this->FaceNormalsDrawn != this->Features.Drawn)
   {
-    if (const std::string problem = UploadFaceNormals(mesh, window, this->FaceNormals);
+    if (const std::string problem =
+          UploadFaceNormals(mesh, this->Features.Drawn, window, this->FaceNormals);
         !problem.empty())
     {
       vtkErrorMacro(<< problem);
       return;
     }
     this->FaceNormalsMesh = mesh;
+    this->FaceNormalsDrawn = this->Features.Drawn;
     this->FaceNormalsTime.Modified();
   }
   // Kept active (its unit reserved) while the shading draws.

@@ -100,6 +100,15 @@ public:
    */
   VTK_WRAPEXCLUDE void SetFog(const shadelab::Fog& fog, const shadelab::Rgb& background);
 
+  /**
+   * Draws the mesh's surface, or its edges as lines `lineWidth` pixels wide,
+   * or its points as squares `pointSize` pixels wide, each once and lit by
+   * the same rule (ShaderFeatures::Drawn, DrawnElements). Default the
+   * surface, whose code has none of it.
+   */
+  VTK_WRAPEXCLUDE void SetRepresentation(
+    shadelab::Representation drawn, double lineWidth = 1, double pointSize = 1);
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 
@@ -109,7 +118,9 @@ public:
   /**
    * The mesh as the rule reads it: none and flat lose the point normals
    * they do not use (flat reads its triangles' face normals, computed as
-   * they are uploaded); gouraud and phong keep the mesh as it is. Not
+   * they are uploaded), except that flat's points keep them (or get zeros),
+   * which VTK gives a view position only with point normals; gouraud and
+   * phong keep the mesh as it is. Not
    * wrapped (VTK 9.1's Python cannot return a vtkSmartPointer): from Python
    * the mesh goes to the mapper as it is.
    */
@@ -142,6 +153,7 @@ private:
   std::vector<shadelab::Light> Lights;
   shadelab::SurfaceTexture Texture;
   shadelab::Fog FogSetting;
+  double LineWidth = 1, PointSize = 1;
   shadelab::Rgb FogColour{};
   // Texture.Map in OpenGL, made at the first draw; a shading that takes over
   // an actor takes this over too when its image and window are the same.
@@ -150,6 +162,7 @@ private:
   // FaceNormalsMesh (not owned) for its window.
   shadelab::FaceNormalTexture FaceNormals;
   vtkPolyData* FaceNormalsMesh = nullptr;
+  shadelab::Representation FaceNormalsDrawn = shadelab::Representation::Surface;
   vtkTimeStamp FaceNormalsTime;
   // Not owned, and either may go first (a Python script drops its actor
   // before its shading): weak, so that neither is used once gone.

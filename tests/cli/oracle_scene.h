@@ -21,6 +21,7 @@
 
 #include "cli_test_support.h"
 #include "shadelabFog.h"
+#include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
 #include "shadelabShadingOracle.h"
 #include "shadelabTriangleFragment.h"
@@ -64,6 +65,11 @@ constexpr double ParallelScale = 1.1;
 // not what is tested. Nor, per fragment, those this close to a spot cone's
 // boundary or another curve where a term switches on or off.
 constexpr double EdgeMargin = 1.5;
+// Drawn as edges or points: pixels whose centre lies within this many pixels
+// of where an element's coverage ends (its footprint's boundary, another's)
+// are not compared: the rasteriser's rules at a boundary are not what is
+// tested, only the colour and the coverage away from it.
+constexpr double ElementMargin = 0.25;
 
 inline std::string Num(double v)
 {
@@ -336,6 +342,9 @@ struct Scene
   // --fog, in local units (a scaled scene's depths and densities scaled to
   // fog alike); its colour, where it has none, the background's (black).
   shadelab::Fog Fog;
+  // --representation, and Pixels as --line-width or --point-size.
+  shadelab::Representation Drawn = shadelab::Representation::Surface;
+  int Pixels = 3;
   // The whole scene (mesh, lights, camera, parallel scale) maps local p to
   // Offset + Scale*p.
   double Scale = 1;
@@ -643,6 +652,13 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   {
     args.insert(args.end(), { "--fog", FogOption(WorldFog(s)) });
   }
+  if (s.Drawn != shadelab::Representation::Surface)
+  {
+    args.insert(args.end(),
+      { "--representation", ToString(s.Drawn),
+        s.Drawn == shadelab::Representation::Points ? "--point-size" : "--line-width",
+        std::to_string(s.Pixels) });
+  }
   const RunResult r = RunShadelab(args);
   if (r.ExitCode != 0)
   {
@@ -668,7 +684,7 @@ struct Expected
     Skipped,    // near an edge, or (phong) near a switch of the lecture's cases
     Interior    // compared with the oracle
   } What = Skipped;
-  int Triangle = -1;
+  int Triangle = -1; // drawn as edges or points, the element: flat's unit of one colour
   Rgb Value{};
   // How the rule lit the pixel (world): where (the pixel centre on the mesh,
   // or for flat the provoking vertex), with which normal (unit, facing the
@@ -700,6 +716,11 @@ public:
       }
       this->In.Lights.push_back(shadelab::ToFrame(l));
     }
+    if (s.Drawn != shadelab::Representation::Surface)
+    {
+      this->Elements =
+        std::make_unique<shadelab::PictureElements>(this->Triangles, s.Drawn, s.Pixels);
+    }
     if (s.Textured)
     {
       shadelab::SurfaceTexture& t = this->In.Texture;
@@ -713,8 +734,22 @@ public:
   Expected At(int x, int y) const
   {
     const double cx = x + 0.5, cy = y + 0.5; // the pixel centre
-    const shadelab::PictureTriangles::Hit hit = this->Triangles.Under(cx, cy);
     Expected e;
+    if (this->Elements)
+    {
+      const shadelab::PictureElements::Hit drawn = this->Elements->Under(cx, cy);
+      if (drawn.Element < 0 || drawn.Margin <= ElementMargin)
+      {
+        e.What = drawn.Element < 0 && drawn.Margin > ElementMargin ? Expected::Background
+                                                                   : Expected::Skipped;
+        return e;
+      }
+      this->Shade(static_cast<int>(drawn.Owner), drawn.Corners, drawn.Weights, true, e, true);
+      e.Triangle = static_cast<int>(drawn.Element);
+      e.What = Expected::Interior;
+      return e;
+    }
+    const shadelab::PictureTriangles::Hit hit = this->Triangles.Under(cx, cy);
     if (hit.Triangle < 0)
     {
       e.What = hit.EdgeDistance > EdgeMargin ? Expected::Background : Expected::Skipped;
@@ -725,7 +760,7 @@ public:
     {
       return e;
     }
-    this->Shade(e.Triangle, hit.Weights, hit.Front, e);
+    this->Shade(e.Triangle, this->M.Triangles[e.Triangle], hit.Weights, hit.Front, e);
     e.What = Expected::Interior;
     return e;
   }
@@ -819,7 +854,7 @@ private:
       const shadelab::TriangleHit h =
         shadelab::IntersectTriangle(this->Triangles.RayAt(px, py), p[c[0]], p[c[1]], p[c[2]]);
       Expected at;
-      this->Shade(t, h.Weights, front, at);
+      this->Shade(t, c, h.Weights, front, at);
       return Switches(at);
     };
     const std::vector<long long> centre = switches(x, y);
@@ -834,13 +869,15 @@ private:
     return false;
   }
 
-  // The rules of doc/design.md through the oracle's functions.
-  void Shade(int t, const std::array<double, 3>& w, bool front, Expected& e) const
+  // The rules of doc/design.md through the oracle's functions: a fragment
+  // of triangle t (its corners as drawn, or turned for an element of it).
+  void Shade(int t, const shadelab::TriangleCorners& corners, const std::array<double, 3>& w,
+    bool front, Expected& e, bool element = false) const
   {
     shadelab::TriangleFragment f;
     for (int k = 0; k < 3; ++k)
     {
-      const auto v = this->M.Triangles[t][k];
+      const auto v = corners[k];
       f.Positions[k] = this->Triangles.GetPoints()[v];
       f.Normals[k] = this->M.Normals[v];
       f.TexCoords[k] = this->M.TexCoords[v];
@@ -852,7 +889,7 @@ private:
       f.VertexKd.emplace();
       for (int k = 0; k < 3; ++k)
       {
-        const auto& c = this->M.Colors[this->M.Triangles[t][k]];
+        const auto& c = this->M.Colors[corners[k]];
         for (int channel = 0; channel < 3; ++channel)
         {
           // What the reader keeps: the fraction of 255 as float.
@@ -866,7 +903,9 @@ private:
     {
       in.Texture = {};
     }
-    const shadelab::ShadedFragment shaded = shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
+    const shadelab::ShadedFragment shaded = element
+      ? shadelab::ShadeElementFragment(in, this->S.Rule, f)
+      : shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
     if (this->S.Fog.Mode != shadelab::FogMode::None)
     {
@@ -882,7 +921,8 @@ private:
 
   const Scene& S;
   Mesh M;
-  shadelab::PictureTriangles Triangles; // in world coordinates
+  shadelab::PictureTriangles Triangles;                // in world coordinates
+  std::unique_ptr<shadelab::PictureElements> Elements; // drawn as edges or points
   IlluminationInputs In;
 };
 // ---------------------------------------------------------------- cases

@@ -62,6 +62,14 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Orthographic = camera->GetParallelProjection();
   this->In = WorldIllumination(options, s.Lights);
   this->Fogging = options.Fogging;
+  if (options.Drawn != Representation::Surface)
+  {
+    s.Drawn = options.Drawn;
+    this->ElementPixels =
+      options.Drawn == Representation::Points ? options.PointSize : options.LineWidth;
+    this->Elements =
+      std::make_unique<PictureElements>(this->Triangles, s.Drawn, this->ElementPixels);
+  }
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
@@ -105,15 +113,11 @@ PixelProbe PixelProber::Probe(Pixel at) const
 {
   PixelProbe p = this->Scene;
   p.At = at;
-  const PictureTriangles::Hit hit = this->Triangles.Under(at.X + 0.5, at.Y + 0.5);
-  p.EdgeDistance = hit.EdgeDistance;
-  if (hit.Triangle < 0)
+  TriangleCorners corners;
+  if (!this->Locate(at, p, corners))
   {
     return p;
   }
-  p.Hit = true;
-  p.Triangle = hit.Triangle;
-  const TriangleCorners& corners = this->Triangles.GetTriangles()[hit.Triangle];
   for (int k = 0; k < 3; ++k)
   {
     p.Corners[k] = corners[k];
@@ -131,9 +135,7 @@ PixelProbe PixelProber::Probe(Pixel at) const
   {
     p.Fragment.VertexKd = { this->Kd[corners[0]], this->Kd[corners[1]], this->Kd[corners[2]] };
   }
-  p.Fragment.Weights = hit.Weights;
-  p.Fragment.Front = hit.Front;
-  const ScenePart& part = this->Parts[this->CellParts[hit.Triangle]];
+  const ScenePart& part = this->Parts[this->CellParts[p.Triangle]];
   p.Part = part.Index;
   p.PartName = part.Name;
   p.Source = part.Source;
@@ -142,7 +144,8 @@ PixelProbe PixelProber::Probe(Pixel at) const
   IlluminationInputs in = this->In;
   in.Surface = part.Surface;
   in.Texture = part.Texture;
-  p.Shaded = ShadeTriangleFragment(in, p.Rule, p.Fragment);
+  p.Shaded = p.Element ? ShadeElementFragment(in, p.Rule, p.Fragment)
+                       : ShadeTriangleFragment(in, p.Rule, p.Fragment);
   if (this->Fogging.Mode != FogMode::None)
   {
     // Per fragment under every rule: at the point under the pixel centre
@@ -152,5 +155,45 @@ PixelProbe PixelProber::Probe(Pixel at) const
     p.Shaded.Color = p.Fogged->After;
   }
   return p;
+}
+
+bool PixelProber::Locate(Pixel at, PixelProbe& p, TriangleCorners& corners) const
+{
+  const double x = at.X + 0.5, y = at.Y + 0.5;
+  if (this->Elements)
+  {
+    const PictureElements::Hit hit = this->Elements->Under(x, y);
+    p.EdgeDistance = hit.Margin;
+    if (hit.Element < 0)
+    {
+      return false;
+    }
+    PixelProbe::DrawnElement& e = p.Element.emplace();
+    e.Pixels = this->ElementPixels;
+    const DrawnElements& all = this->Elements->GetElements();
+    const std::size_t per = p.Drawn == Representation::Points ? 1 : 2;
+    e.Index = hit.Element;
+    for (std::size_t k = 0; k < per; ++k)
+    {
+      e.Points.push_back(all.Corners[per * hit.Element + k]);
+    }
+    p.Hit = true;
+    p.Triangle = hit.Owner;
+    corners = hit.Corners;
+    p.Fragment.Weights = hit.Weights;
+    return true;
+  }
+  const PictureTriangles::Hit hit = this->Triangles.Under(x, y);
+  p.EdgeDistance = hit.EdgeDistance;
+  if (hit.Triangle < 0)
+  {
+    return false;
+  }
+  p.Hit = true;
+  p.Triangle = hit.Triangle;
+  corners = this->Triangles.GetTriangles()[hit.Triangle];
+  p.Fragment.Weights = hit.Weights;
+  p.Fragment.Front = hit.Front;
+  return true;
 }
 }

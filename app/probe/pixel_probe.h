@@ -8,6 +8,7 @@
 
 #include "core/options.h"
 #include "scene/scene_parts.h"
+#include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
 #include "shadelabTriangleFragment.h"
 
@@ -35,6 +36,7 @@ struct PixelProbe
   std::vector<Light> Lights; // as lit, in world coordinates
   Rgb Background{};
   bool Orthographic = false;
+  Representation Drawn = Representation::Surface;
   bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
   bool VertexKd = false;   // kd from the mesh's vertex colours (Fragment.VertexKd)
   bool Textured = false;   // kd and ka times a texel (Fragment.TexCoords; Shaded.Texel)
@@ -42,8 +44,19 @@ struct PixelProbe
   // Where Rendered was read, as the text says it: the window reads its own 8-bit pixel.
   const char* RenderedFrom = "the float render at the pixel";
   // Pixels from its centre to the nearest edge that may cover it (with no
-  // hit: of any triangle).
+  // hit: of any triangle); drawn as edges or points, to where an element's
+  // coverage may change (PictureElements::Hit::Margin).
   double EdgeDistance = 0;
+  // Drawn as edges or points: the element drawn at the pixel, which
+  // Triangle owns and Corners and Fragment describe turned (its provoking
+  // point last, ShadeElementFragment).
+  struct DrawnElement
+  {
+    int Pixels = 1;                // the line's width or the point's size
+    std::int64_t Index = -1;       // in the order they are drawn (DrawnElements)
+    std::vector<vtkIdType> Points; // the edge's two ends, or the point
+  };
+  std::optional<DrawnElement> Element;
 
   // The ray through the pixel's centre meets the mesh; the rest holds only then.
   bool Hit = false;
@@ -75,11 +88,21 @@ public:
   /** The pixel explained; its Rendered value left at 0. */
   PixelProbe Probe(Pixel at) const;
 
+  PixelProber(const PixelProber&) = delete; // Elements refers to Triangles
+  void operator=(const PixelProber&) = delete;
+
 private:
+  // Which triangle, or drawn as edges or points which element, is under the
+  // pixel: the fragment's corners and weights, and p's Hit, Triangle and
+  // EdgeDistance.
+  bool Locate(Pixel at, PixelProbe& p, TriangleCorners& corners) const;
+
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
   Fog Fogging;
   PictureTriangles Triangles;
+  std::unique_ptr<PictureElements> Elements;    // drawn as edges or points
+  int ElementPixels = 1;                        // the lines' width or the points' size
   std::vector<ScenePart> Parts;                 // as drawn
   std::vector<int> CellParts;                   // the part of each cell
   std::vector<Vec3> Normals;                    // per point, when the mesh has them

@@ -105,7 +105,16 @@ ordered_json ProbeJson(const PixelProbe& p)
       { "before", p.Fogged->Before } };
   }
   j["triangle"] = p.Triangle;
-  j["front_facing"] = p.Fragment.Front;
+  if (p.Element)
+  {
+    // The edge or point drawn here; triangle is the one that owns it.
+    j["element"] = { { "representation", ToString(p.Drawn) }, { "index", p.Element->Index },
+      { "points", p.Element->Points }, { "pixels", p.Element->Pixels } };
+  }
+  else
+  {
+    j["front_facing"] = p.Fragment.Front;
+  }
   j["part"] = p.Part;
   j["part_name"] = p.PartName;
   j["material"] = DescribeMaterial(p.Surface);

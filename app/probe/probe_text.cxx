@@ -169,19 +169,39 @@ std::string ProbeText(const PixelProbe& p)
   if (!p.Hit)
   {
     out.Add("",
-      pixel + ": no triangle under its centre, the nearest edge " + ProbeNumber(p.EdgeDistance) +
-        " px away");
+      pixel +
+        (p.Drawn != Representation::Surface ? ": no edge or point drawn there, "
+                                            : ": no triangle under its centre, the nearest edge ") +
+        ProbeNumber(p.EdgeDistance) + " px away");
     out.Add("", "background = " + ProbeTriple(p.Background));
     out.Add("", rendered, p.RenderedFrom);
     out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");
     return out.Str();
   }
   const Material& m = p.Surface;
-  out.Add("",
-    pixel + ": triangle " + std::to_string(p.Triangle) + " (points " +
-      std::to_string(p.Corners[0]) + ", " + std::to_string(p.Corners[1]) + ", " +
-      std::to_string(p.Corners[2]) + "), " + (p.Fragment.Front ? "front" : "back") + " face, " +
-      ProbeNumber(p.EdgeDistance) + " px from an edge that may cover it");
+  const std::string corners = std::to_string(p.Corners[0]) + ", " + std::to_string(p.Corners[1]) +
+    ", " + std::to_string(p.Corners[2]);
+  if (p.Element)
+  {
+    const bool point = p.Drawn == Representation::Points;
+    out.Add("",
+      pixel + ": " +
+        (point ? "point " + std::to_string(p.Element->Points[0])
+               : "edge " + std::to_string(p.Element->Points[0]) + "-" +
+              std::to_string(p.Element->Points[1])) +
+        " of triangle " + std::to_string(p.Triangle) + " (turned: points " + corners + "), " +
+        ProbeNumber(p.EdgeDistance) + " px from where its coverage may change",
+      point ? "a square " + std::to_string(p.Element->Pixels) + " px on a side, lit at the point"
+            : "a line " + std::to_string(p.Element->Pixels) +
+          " px wide, at its step along the major axis; its normal turned towards the viewer");
+  }
+  else
+  {
+    out.Add("",
+      pixel + ": triangle " + std::to_string(p.Triangle) + " (points " + corners + "), " +
+        (p.Fragment.Front ? "front" : "back") + " face, " + ProbeNumber(p.EdgeDistance) +
+        " px from an edge that may cover it");
+  }
   out.Add("",
     std::string("shading ") + ToString(p.Rule) + ", reflection " +
       (UsesHalfVector(p.Model) ? "Blinn-Phong" : "Phong") + "; material " + m.Name + ": ka " +

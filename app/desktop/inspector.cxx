@@ -129,6 +129,11 @@ void Inspector::SetUpWindow()
   const SceneOptions& scene = this->Options.Scene;
   // No multisampling: the pixels are the shading rule's alone, as headless.
   this->Window->SetMultiSamples(0);
+  // The wireframe's lines drawn by OpenGL at any width --line-width takes,
+  // never by VTK's wide-line geometry shader, which does not pass the
+  // generated stages' own values on (flat's lines came out unlit); VTK read
+  // the range as 1 in Qt's context here, where Mesa draws them wider.
+  this->Window->SetForceMaximumHardwareLineWidth(MaxLineWidth);
   this->Window->SetNumberOfLayers(2);
   // Cleared first each frame: a grid's empty cells would keep stale pixels.
   this->Backdrop->SetBackground(scene.Background.data());

@@ -181,7 +181,12 @@ int RunView(const ViewOptions& options, const std::string& commandLine)
     return code;
   }
   // Before the application exists (QVTKOpenGLNativeWidget's documentation).
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  // Not forward-compatible: such a core context refuses lines wider than a
+  // pixel, and the wireframe's widths are OpenGL's own wide lines
+  // (Inspector::SetUpWindow says why not VTK's).
+  QSurfaceFormat format = QVTKOpenGLNativeWidget::defaultFormat();
+  format.setOption(QSurfaceFormat::DeprecatedFunctions);
+  QSurfaceFormat::setDefaultFormat(format);
   int argc = 1;
   char name[] = "shadelab-view";
   char* argv[] = { name, nullptr };

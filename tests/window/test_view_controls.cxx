@@ -21,6 +21,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QTabWidget>
 #include <QTest>
@@ -272,6 +273,27 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
         Type(window.findChild<QDoubleSpinBox*>("fog start"), "1");
       },
       { "--fog" } },
+    { "wireframe", [&] { QTest::keyClick(find("representation"), Qt::Key_Down); },
+      { "--representation" } },
+    { "line width", [&] { Type(window.findChild<QSpinBox*>("representation pixels"), "4"); },
+      { "--line-width" } },
+    { "points", [&] { QTest::keyClick(find("representation"), Qt::Key_Down); },
+      { "--representation" } },
+    { "point size",
+      [&]
+      {
+        Type(window.findChild<QSpinBox*>("representation pixels"), "7");
+        EXPECT_EQ(inspector.GetState().Scene.LineWidth, 4) << "the lines' width kept";
+      },
+      { "--point-size" } },
+    { "surface",
+      [&]
+      {
+        QTest::keyClick(find("representation"), Qt::Key_Up);
+        QTest::keyClick(find("representation"), Qt::Key_Up);
+        EXPECT_FALSE(window.findChild<QSpinBox*>("representation pixels")->isEnabled());
+      },
+      { "--representation" } },
     { "lights", [&] { QTest::keyClick(find("lights"), Qt::Key_Down); }, { "--light" } },
     { "add spot", [&] { static_cast<QPushButton*>(find("add spot"))->click(); }, { "--light" } },
     { "light position", [&] { Type(window.findChild<QDoubleSpinBox*>("light position x"), "1.5"); },

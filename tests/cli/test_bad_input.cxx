@@ -320,6 +320,21 @@ const BadCase Cases[] = {
         d, "t.obj", Tetrahedron, { "--fog", "exp:0.1", "--background", "transparent" });
     },
     1, { "--fog", "colour of its own" } },
+  { "RepresentationUnknown",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--representation", "lines" });
+    },
+    2, { "--representation", "lines" } },
+  { "LineWidthNotWhole",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--line-width", "1.5" });
+    },
+    2, { "--line-width", "1.5" } },
+  { "PointSizeOutOfRange",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--point-size", "0" });
+    },
+    2, { "--point-size", "0" } },
   { "ViewAngleOutOfRange",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--view-angle", "200" });

@@ -108,6 +108,33 @@ TEST(Compare, OnePanelPerModeEachExactlyWhatRenderGives)
   EXPECT_GT(LargestDifference(panels[1], panels[2]), 2) << "gouraud and phong differ";
 }
 
+// The representation applies to every panel: each is what render draws
+// with it, and the picture's metadata names it.
+TEST(Compare, EveryPanelDrawnAsTheRepresentationSays)
+{
+  TempDir dir;
+  const std::vector<std::string> drawn{ "--representation", "wireframe", "--line-width", "2" };
+  const RunResult run = Compare(dir / "c.png", drawn);
+  ASSERT_EQ(run.ExitCode, 0) << run.Stderr;
+  const Image picture = ReadImage(dir / "c.png");
+  EXPECT_NE(picture.Description.find(R"("representation":"wireframe")"), std::string::npos)
+    << picture.Description;
+  EXPECT_NE(picture.Description.find(R"("line_width":2)"), std::string::npos);
+  const std::vector<std::string> rules{ "flat", "gouraud", "phong" };
+  for (int i = 0; i < 3; ++i)
+  {
+    std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o",
+      (dir / (rules[i] + ".png")).string(), "--shading", rules[i] };
+    args.insert(args.end(), Camera.begin(), Camera.end());
+    args.insert(args.end(), drawn.begin(), drawn.end());
+    const RunResult render = RunShadelab(args);
+    ASSERT_EQ(render.ExitCode, 0) << render.Stderr;
+    const Image wireframe = ReadImage(dir / (rules[i] + ".png"));
+    EXPECT_EQ(LargestDifference(PanelOf(picture, i, 3), wireframe), 0) << rules[i];
+    EXPECT_NE(wireframe.Description.find(R"("representation":"wireframe")"), std::string::npos);
+  }
+}
+
 TEST(Compare, LabelsSayWhatDiffers)
 {
   TempDir dir;

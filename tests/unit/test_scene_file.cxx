@@ -59,6 +59,7 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
                       "attenuation": [1, 0, 0.5] },
                     { "kind": "point", "position": [1, 1, 1] } ],
         "attenuation": [0.5, 0.25, 0], "fog": "exp:0.5:0.25,0.5,1",
+        "representation": "points", "point_size": 5,
         "reflection": "phong", "orient": true, "feature_angle": 30, "weighting": "max",
         "normals": "compute", "background": [0.1, 0.2, 0.3], "ambient": [0, 0, 0],
         "pixel_type": "uint16", "name": "third" }
@@ -99,6 +100,9 @@ TEST_F(SceneFile, DefaultsAndShotsMerge)
   EXPECT_EQ(c.Scene.Fogging.Mode, FogMode::Exp);
   EXPECT_EQ(c.Scene.Fogging.Density, 0.5);
   EXPECT_EQ(c.Scene.Fogging.Color, (Rgb{ 0.25, 0.5, 1 }));
+  EXPECT_EQ(c.Scene.Drawn, Representation::Points);
+  EXPECT_EQ(c.Scene.PointSize, 5);
+  EXPECT_EQ(c.Scene.LineWidth, 1) << "its default";
   EXPECT_EQ(a.Fogging.Mode, FogMode::None);
   EXPECT_EQ(c.Scene.Lights[0].Kind, LightKind::Spot);
   EXPECT_EQ(c.Scene.Lights[0].HalfAngleDeg, 30);
@@ -152,6 +156,9 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     { head + R"({ "fog": "linear:5,1" } ] })",
       "shots[3].fog: fog END '1' is not beyond START '5'" },
     { head + R"({ "fog": 0.5 } ] })", "shots[3].fog: " },
+    { head + R"({ "representation": "lines" } ] })", "shots[3].representation: " },
+    { head + R"({ "line_width": 17 } ] })", "shots[3].line_width: " },
+    { head + R"({ "point_size": 2.5 } ] })", "shots[3].point_size: " },
     { head + R"({ "attenuation": [1, -1, 0] } ] })",
       "shots[3].attenuation: attenuation '1,-1,0' has a negative coefficient" },
     { head + R"({ "camera": { "view_angle": 200 } } ] })",

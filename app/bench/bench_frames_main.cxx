@@ -5,7 +5,10 @@
 // unlit surface (one colour, positions alone: no normals, no lighting), the
 // least any shading rule's frame can cost through this mapper; and ours with
 // distance attenuation (1, 0.05, 0.01 on the light at the camera) and with
-// fog (exp2:0.1), each effect's cost against the same rule without it.
+// fog (exp2:0.1), each effect's cost against the same rule without it; and
+// the wireframe (1 pixel) and points (1 pixel) under each of ours, beside
+// VTK's own Phong wireframe through VTK's own mapper (a shared edge drawn
+// once for each of its triangles), the picture a user would get instead.
 //
 //   shadelab-bench-frames MESH [--size WxH] [--frames N] [--subdivide LEVELS]
 //                         [--vertex-colors] [--texture] [--parts N]
@@ -42,6 +45,7 @@
 #include <vtkLogger.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -68,6 +72,7 @@ struct Variant
   bool Unlit = false;      // VTK's own, lighting off, drawn from positions alone
   bool Attenuated = false; // ours with distance attenuation: its cost against the same rule's
   bool Fogged = false;     // ours with fog: the same
+  Representation Drawn = Representation::Surface;
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -248,7 +253,17 @@ int main(int argc, char** argv)
     { "phong-attenuated", Shading::Phong, false, false, false, true },
     { "flat-fogged", Shading::Flat, false, false, false, false, true },
     { "gouraud-fogged", Shading::Gouraud, false, false, false, false, true },
-    { "phong-fogged", Shading::Phong, false, false, false, false, true } };
+    { "phong-fogged", Shading::Phong, false, false, false, false, true },
+    { "vtk-phong-wireframe", Shading::Phong, true, false, false, false, false,
+      Representation::Wireframe },
+    { "flat-wireframe", Shading::Flat, false, false, false, false, false,
+      Representation::Wireframe },
+    { "gouraud-wireframe", Shading::Gouraud, false, false, false, false, false,
+      Representation::Wireframe },
+    { "phong-wireframe", Shading::Phong, false, false, false, false, false,
+      Representation::Wireframe },
+    { "phong-points", Shading::Phong, false, false, false, false, false,
+      Representation::Points } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -268,6 +283,7 @@ int main(int argc, char** argv)
     {
       scene.Fogging = ParseFog("exp2:0.1");
     }
+    scene.Drawn = v.Drawn;
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
     {
@@ -286,6 +302,10 @@ int main(int argc, char** argv)
         drawn = vtkSmartPointer<vtkPolyData>::New();
         drawn->SetPoints(mesh->GetPoints());
         drawn->SetPolys(mesh->GetPolys());
+      }
+      if (v.Drawn != Representation::Surface)
+      {
+        built.Actor->SetMapper(vtkSmartPointer<vtkOpenGLPolyDataMapper>::New());
       }
       vtkPolyDataMapper::SafeDownCast(built.Actor->GetMapper())->SetInputData(drawn);
       UseVtkLighting(scene, v.Rule, renderer.GetRenderer(), built.Actor);

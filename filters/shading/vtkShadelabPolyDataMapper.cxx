@@ -48,8 +48,9 @@ bool vtkShadelabPolyDataMapper::BuildSurfaceIBO(vtkActor* actor, vtkPolyData* me
   vtkCellArray* polys = mesh->GetPolys();
   vtkPoints* points = mesh->GetPoints();
   const int representation = property->GetRepresentation();
-  if (property->GetEdgeVisibility() || property->GetVertexVisibility() ||
-    mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() || mesh->GetNumberOfStrips() || !points ||
+  if ((representation != VTK_SURFACE && !this->EachElementOnce) || property->GetEdgeVisibility() ||
+    property->GetVertexVisibility() || mesh->GetNumberOfVerts() || mesh->GetNumberOfLines() ||
+    mesh->GetNumberOfStrips() || !points ||
     mesh->GetPointData()->GetAttribute(vtkDataSetAttributes::EDGEFLAG))
   {
     return false;

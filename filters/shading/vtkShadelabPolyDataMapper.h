@@ -14,7 +14,9 @@
  * (shadelabTriangleIndexBuffer: the same indices, without VTK's copy of
  * each cell), where the surface is only polygons drawn without edges or
  * vertices; VTK builds every other case. Drawn as a wireframe or as points,
- * those polygons' edges or points are each drawn once (DrawnElements).
+ * those polygons' edges or points are drawn as VTK draws them (an edge once
+ * for each triangle that has it), or with EachElementOnce each once
+ * (DrawnElements), as shadelab's shading needs.
  */
 #ifndef vtkShadelabPolyDataMapper_h
 #define vtkShadelabPolyDataMapper_h
@@ -28,6 +30,14 @@ class SHADELAB_FILTERS_EXPORT vtkShadelabPolyDataMapper : public vtkOpenGLPolyDa
 public:
   static vtkShadelabPolyDataMapper* New();
   vtkTypeMacro(vtkShadelabPolyDataMapper, vtkOpenGLPolyDataMapper);
+
+  /**
+   * Drawn as a wireframe or as points, each edge or point once, in
+   * DrawnElements' order, so that gl_PrimitiveID counts them (flat's face
+   * normals per element). Default off: VTK's own index buffers.
+   */
+  vtkSetMacro(EachElementOnce, bool);
+  vtkGetMacro(EachElementOnce, bool);
 
 protected:
   vtkShadelabPolyDataMapper() = default;
@@ -44,6 +54,7 @@ private:
   // buffers from; 0 once VTK's BuildIBO has built them.
   vtkMTimeType SurfacePolysTime = 0;
   int SurfaceRepresentation = -1; // the representation (VTK_SURFACE, ...) they were built for
+  bool EachElementOnce = false;
 
   vtkShadelabPolyDataMapper(const vtkShadelabPolyDataMapper&) = delete;
   void operator=(const vtkShadelabPolyDataMapper&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkShadelabShading.h"
 
 #include "shadelabTriangleMesh.h"
+#include "vtkShadelabPolyDataMapper.h"
 
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
@@ -312,6 +313,10 @@ void vtkShadelabShading::Attach(
     mapper->RemoveObserver(previous->Observer);
   }
   mapper->AddObserver(vtkCommand::UpdateShaderEvent, this->Observer);
+  if (auto* ours = vtkShadelabPolyDataMapper::SafeDownCast(mapper))
+  {
+    ours->SetEachElementOnce(this->Features.Drawn != Representation::Surface);
+  }
   vtkProperty* property = actor->GetProperty();
   property->LightingOn();
   property->SetRepresentation(this->Features.Drawn == Representation::Points ? VTK_POINTS

@@ -103,8 +103,9 @@ public:
   /**
    * Draws the mesh's surface, or its edges as lines `lineWidth` pixels wide,
    * or its points as squares `pointSize` pixels wide, each once and lit by
-   * the same rule (ShaderFeatures::Drawn, DrawnElements). Default the
-   * surface, whose code has none of it.
+   * the same rule (ShaderFeatures::Drawn, DrawnElements), through a
+   * vtkShadelabPolyDataMapper (EachElementOnce: flat reads a face normal
+   * per element). Default the surface, whose code has none of it.
    */
   VTK_WRAPEXCLUDE void SetRepresentation(
     shadelab::Representation drawn, double lineWidth = 1, double pointSize = 1);

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -67,13 +68,28 @@ inline std::vector<json> Probe(const std::vector<std::string>& common,
   return lines;
 }
 
-inline void ExpectNear(
-  const Vec3& got, const Vec3& want, double tolerance, const std::string& what)
+inline void ExpectNear(const Vec3& got, const Vec3& want, double tolerance, const std::string& what)
 {
   for (int c = 0; c < 3; ++c)
   {
     EXPECT_NEAR(got[c], want[c], tolerance) << what << " " << Show(got) << " " << Show(want);
   }
+}
+
+// The rendered value within the oracle tests' bound of the oracle, per
+// channel (oracle_scene.h's Standard, reasoned there); the largest
+// deviation in units of the bound.
+inline double ExpectWithinTheBound(const Rgb& got, const Rgb& oracle)
+{
+  double worst = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double bound = Standard.Relative * std::max(std::abs(oracle[k]), Standard.Floor);
+    EXPECT_LE(std::abs(got[k] - oracle[k]), bound)
+      << "channel " << k << ": rendered " << got[k] << ", oracle " << oracle[k];
+    worst = std::max(worst, std::abs(got[k] - oracle[k]) / bound);
+  }
+  return worst;
 }
 
 inline Rgb Vec(const json& v)

@@ -248,14 +248,7 @@ TEST_P(ProbePixels, AgreeWithRenderAndTheOracle)
       continue;
     }
     ++compared;
-    for (int k = 0; k < 3; ++k)
-    {
-      // The oracle tests' bound (oracle_scene.h's Standard, reasoned there).
-      const double bound = Standard.Relative * std::max(std::abs(oracle[k]), Standard.Floor);
-      EXPECT_LE(std::abs(got[k] - oracle[k]), bound)
-        << "channel " << k << ": rendered " << got[k] << ", oracle " << oracle[k];
-      worst = std::max(worst, std::abs(got[k] - oracle[k]) / bound);
-    }
+    worst = std::max(worst, ExpectWithinTheBound(got, oracle));
   }
   std::cout << "[probe] " << c.Name << ": " << probes.size() << " pixels, " << compared
             << " compared with the oracle (worst " << worst << " of the bound), " << background

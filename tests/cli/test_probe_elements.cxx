@@ -81,12 +81,7 @@ TEST_P(ProbeElements, AgreeWithRenderAndTheOracle)
       continue;
     }
     ++compared;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double bound = Standard.Relative * std::max(std::abs(oracle[k]), Standard.Floor);
-      EXPECT_LE(std::abs(got[k] - oracle[k]), bound)
-        << "channel " << k << ": rendered " << got[k] << ", oracle " << oracle[k];
-    }
+    ExpectWithinTheBound(got, oracle);
   }
   std::cout << "[probe] " << ToString(rule) << (points ? " points: " : " wireframe: ") << compared
             << " compared with the oracle, " << background << " background" << std::endl;

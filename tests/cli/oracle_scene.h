@@ -382,6 +382,18 @@ struct Scene
   Vec3 World(const Vec3& p) const { return this->Offset + this->Scale * p; }
 };
 
+// Several coloured lights at once, of every kind; their sum exceeds 1 in
+// places, which the PNG clamps and the EXR keeps.
+inline Scene ColouredLights()
+{
+  Scene s;
+  s.Lights = { Point({ -0.8, 0.6, 1.2 }, { 1, 0.2, 0.1 }),
+    Directional({ 0.4, -0.3, -1 }, { 0.1, 0.9, 0.2 }),
+    Spot({ 0.5, -0.5, 2 }, { 0, 0, -1 }, 35, 2, { 0.2, 0.3, 1 }),
+    Point({ 0.9, 0.9, 0.8 }, { 0.6, 0.6, 0.6 }) };
+  return s;
+}
+
 // The part of triangle t of the scene's grid, 0 without parts.
 inline int PartOf(const Scene& s, int t)
 {

@@ -113,16 +113,15 @@ void Inspector::UpdateHud()
   {
     hud << " | fog " << settings::FogSpec{}.Text(s.Fogging);
   }
-  if (s.Drawn == Representation::Wireframe)
-  {
-    hud << " | wireframe, " << s.LineWidth << " px lines";
-  }
-  else if (s.Drawn == Representation::Points)
-  {
-    hud << " | points, " << s.PointSize << " px";
-  }
   hud << "\n";
-  hud << this->Triangles << " triangles | normals: "
+  hud << this->Triangles << " triangles";
+  // On the second line, the shorter: the first fills the view with fog on.
+  if (s.Drawn != Representation::Surface)
+  {
+    hud << " as " << ToString(s.Drawn) << " of "
+        << (s.Drawn == Representation::Points ? s.PointSize : s.LineWidth) << " px";
+  }
+  hud << " | normals: "
       << (s.Normals != NormalsMode::Compute && this->FileNormals ? "from the file"
                                                                  : s.Computed.Weighting.c_str())
       << " | terms:" << (this->State.Ambient ? " ambient" : "")

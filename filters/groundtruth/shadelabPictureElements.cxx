@@ -1,5 +1,7 @@
 #include "shadelabPictureElements.h"
 
+#include "shadelabTriangleIndexBuffer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,14 +13,13 @@ PictureElements::PictureElements(const PictureTriangles& mesh, Representation dr
   , Drawn(drawn)
   , HalfWidth(0.5 * pixels)
 {
-  // The triangles OpenGL draws (shadelabTriangleIndexBuffer's IsDrawn):
-  // not those with two corners at one position.
+  // The triangles OpenGL draws: not those with two corners at one position.
   std::vector<unsigned int> corners, kept;
   const std::vector<Vec3>& p = mesh.GetPoints();
   for (std::size_t t = 0; t < mesh.GetTriangles().size(); ++t)
   {
     const TriangleCorners& c = mesh.GetTriangles()[t];
-    if (p[c[0]] != p[c[1]] && p[c[0]] != p[c[2]] && p[c[1]] != p[c[2]])
+    if (IsDrawn(p[c[0]], p[c[1]], p[c[2]]))
     {
       kept.push_back(static_cast<unsigned int>(t));
       for (std::int64_t corner : c)

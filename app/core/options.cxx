@@ -18,6 +18,7 @@ Material SceneOptions::Overridden(Material m) const
   m.Kd = this->Kd.value_or(textured ? Rgb{ 1, 1, 1 } : m.Kd);
   m.Ks = this->Ks.value_or(m.Ks);
   m.Ns = this->Ns.value_or(m.Ns);
+  m.Translucency = this->Translucency.value_or(m.Translucency);
   return m;
 }
 

@@ -138,6 +138,10 @@ struct SceneOptions
   bool MaterialGiven = false; // --material: it replaces the file's materials and colours
   std::optional<Rgb> Ka, Kd, Ks;
   std::optional<double> Ns;
+  // --translucency: every part's a (Material::Translucency), composited in
+  // depth order (vtkShadelabPeelingPass), at most Peels layers (0: all).
+  std::optional<double> Translucency;
+  int Peels = 0;
   // --texture: an image whose texel is kd and ka of the whole mesh (times
   // --kd and --ka when given), looked up at its texture coordinates.
   std::string Texture;
@@ -253,6 +257,8 @@ constexpr int MaxSupersampling = 8;
 // 3.2 promises no more than 1, Mesa's llvmpipe draws up to 255.
 constexpr int MaxLineWidth = 16;
 constexpr int MaxPointSize = 64;
+/** The most --peels a limit may give (more would be no limit for any mesh drawn). */
+constexpr int MaxPeels = 10000;
 
 /** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
 constexpr int MaxOrbitFrames = 3600;

@@ -30,14 +30,15 @@ struct Mark
   bool Effect; // compiled in only where a scene uses it: its button shows only then
 };
 
-const std::array<Mark, 5>& Marks()
+const std::array<Mark, 6>& Marks()
 {
-  static const std::array<Mark, 5> marks{ {
+  static const std::array<Mark, 6> marks{ {
     { "ambient", QColor(0xc8, 0xdc, 0xff), "ka*Ia", false },
     { "diffuse", QColor(0xc8, 0xf0, 0xbe), "kd*Il*N.L", false },
     { "specular", QColor(0xff, 0xdc, 0xb4), "ks*Il*base^ns", false },
     { "attenuation", QColor(0xf0, 0xd2, 0xf0), "Il/(c0+c1*d+c2*d^2)", true },
     { "fog", QColor(0xdc, 0xdc, 0xdc), "f*C+(1-f)*fog", true },
+    { "translucency", QColor(0xff, 0xf5, 0xb4), "a*I+(1-a)*behind", true },
   } };
   return marks;
 }

@@ -223,6 +223,7 @@ private:
         std::string(ToString(options.ShadingRule)) + "-" + ToString(options.ReflectionModel));
     }
     const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());
+    renderer.SetMaximumNumberOfPeels(options.Peels);
     // An 8-bit file's picture is rendered in 8 bits, the same bytes for less.
     const bool eightBit = ResolvePixelType(shot.Output, shot.Scene.Pixels) == PixelType::UInt8;
     FloatImage image;

@@ -3,10 +3,12 @@
 #include "core/errors.h"
 #include "headless/vtkShadelabCapturePass.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
+#include "headless/vtkShadelabPeelingPass.h"
 #include "vtkShadelabOutputWindow.h"
 
 #include <vtkAutoInit.h>
 #include <vtkRenderStepsPass.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 
 // vtkRenderer::New and vtkPolyDataMapper::New return the OpenGL2 classes only
@@ -19,8 +21,11 @@ HeadlessRenderer::HeadlessRenderer()
   : Window(vtkSmartPointer<vtkShadelabOSMesaRenderWindow>::New())
   , Renderer(vtkSmartPointer<vtkRenderer>::New())
   , Capture(vtkSmartPointer<vtkShadelabCapturePass>::New())
+  , Peeling(vtkSmartPointer<vtkShadelabPeelingPass>::New())
 {
-  this->Capture->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
+  auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+  steps->SetTranslucentPass(this->Peeling);
+  this->Capture->SetDelegatePass(steps);
   this->Renderer->SetPass(this->Capture);
   this->Window->SetFramebuffersUnused(true);
   this->Window->AddRenderer(this->Renderer);
@@ -63,9 +68,30 @@ FloatImage HeadlessRenderer::Render()
   return this->Samples > 1 ? BoxAverage(samples, this->Samples) : samples;
 }
 
+void HeadlessRenderer::SetMaximumNumberOfPeels(int peels)
+{
+  this->Peeling->SetMaximumNumberOfPeels(peels);
+}
+
+bool HeadlessRenderer::Translucent() const
+{
+  vtkPropCollection* props = this->Renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 Image8 HeadlessRenderer::RenderEightBit(bool alpha)
 {
-  if (this->Samples > 1)
+  // Composited in floats, then quantised: blending in 8 bits would not be that.
+  if (this->Samples > 1 || this->Translucent())
   {
     FloatImage average = this->Render();
     average.Alpha = alpha;

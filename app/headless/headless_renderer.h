@@ -12,6 +12,7 @@
 class vtkRenderer;
 class vtkShadelabCapturePass;
 class vtkShadelabOSMesaRenderWindow;
+class vtkShadelabPeelingPass;
 
 namespace shadelab
 {
@@ -42,16 +43,22 @@ public:
    * Renders one frame for an 8-bit file (RGB, or RGBA with alpha): byte for
    * byte Quantise(Render()), at a quarter of the target's memory
    * (vtkShadelabCapturePass::SetEightBit), for a scene of opaque actors.
-   * With samples > 1, Render's average quantised. Errors as Render.
+   * With samples > 1 or translucent props, Render's picture quantised.
+   * Errors as Render.
    */
   Image8 RenderEightBit(bool alpha);
 
+  /** --peels: the most peels of translucent surfaces; 0, as many as they have layers. */
+  void SetMaximumNumberOfPeels(int peels);
+
 private:
+  bool Translucent() const; // a visible prop is drawn in the translucent step
   void RenderFrame(bool eightBit);
 
   vtkSmartPointer<vtkShadelabOSMesaRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkShadelabCapturePass> Capture;
+  vtkSmartPointer<vtkShadelabPeelingPass> Peeling; // the translucent step
   std::string Error;
   int Samples = 1;
 };

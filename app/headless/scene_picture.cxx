@@ -20,6 +20,7 @@ ScenePicture RenderScenePicture(
   }
   picture.Scene = shown.Scene;
   const SceneOverlays overlays(options, shown.Scene->Mesh, meshes, renderer.GetRenderer());
+  renderer.SetMaximumNumberOfPeels(options.Peels);
   picture.Picture = renderer.Render();
   if (!renderer.GetError().empty())
   {

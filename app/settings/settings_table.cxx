@@ -49,6 +49,17 @@ std::vector<Setting> MakeSettings()
       { "--ks", "material.ks", "R,G,B", "Specular coefficients" }, colour, SHADELAB_FIELD(Ks))),
     ReadByParent(Plain({ "--ns", "material.ns", "X", "Specular exponent" }, Number::NonNegative(),
       SHADELAB_FIELD(Ns))),
+    Plain({ "--translucency", "translucency", "A",
+            "Opacity a of every part, overriding its material's (MTL d, glTF alpha; 1 in the "
+            "lecture's table): a surface's colour I goes over what lies behind it as a*I + "
+            "(1-a)*behind, in exact depth order, every surface included",
+            PictureCommands, "the material's" },
+      ClosedRange{ 0, 1 }, SHADELAB_FIELD(Translucency)),
+    Plain({ "--peels", "peels", "N",
+            "Translucency: composite at most the N nearest layers at each pixel (depth "
+            "peeling), for speed; the farther ones are left out",
+            PictureCommands, "0: every layer" },
+      Integer{ 0, MaxPeels }, SHADELAB_FIELD(Peels)),
     Plain({ "--texture", "texture", "IMAGE",
             "An image (any format OpenImageIO reads; its stored values, as display colours) whose "
             "texel "

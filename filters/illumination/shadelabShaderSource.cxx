@@ -16,6 +16,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
     this->Specular == o.Specular && this->Attenuation == o.Attenuation && this->Fog == o.Fog &&
+    this->Translucent == o.Translucent &&
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
@@ -402,6 +403,19 @@ void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
   }
 }
 
+// ShaderFeatures::Translucent: the fragment's opacity, from VTK's colour
+// code (its property's), before fog, which changes the colour alone.
+void AddTranslucency(std::vector<ShaderReplacement>& r)
+{
+  for (ShaderReplacement& each : r)
+  {
+    if (!each.Vertex && each.Tag == "//VTK::Light::Impl")
+    {
+      each.Code += "  fragOutput0.a = opacity; // shadelab: translucency\n";
+    }
+  }
+}
+
 // ShaderFeatures::BehindLines. The slope is taken where VTK takes
 // derivatives, in uniform control flow: appended to the rule's own code
 // there (a second replacement of the tag would take the first's place).
@@ -454,6 +468,10 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   if (f.BehindLines)
   {
     AddOffsetBehindLines(r);
+  }
+  if (f.Translucent)
+  {
+    AddTranslucency(r);
   }
   if (f.Fog != FogMode::None)
   {

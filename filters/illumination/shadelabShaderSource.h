@@ -34,6 +34,10 @@ struct ShaderFeatures
   // from the fragment's depth -vertexVC.z, and the fog's colour and
   // numbers as uniforms (shadelabFog.h).
   FogMode Fog = FogMode::None;
+  // The surface is translucent (a < 1): the fragment's alpha is VTK's
+  // opacity (the actor's property's, the material's a) rather than 1, for
+  // the translucent step to composite (vtkShadelabPeelingPass).
+  bool Translucent = false;
   // What is drawn: the surface, or its edges or points, whose normal is
   // turned towards the viewer (they have no facing) and, under phong, fall
   // back to ka*Ia rather than to a face normal (ShadeElementFragment).

@@ -106,6 +106,7 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   }
   this->Features.Attenuation = std::any_of(lights.begin(), lights.end(), Attenuated);
   this->Features.Specular = material.Ks[0] != 0 || material.Ks[1] != 0 || material.Ks[2] != 0;
+  this->Features.Translucent = material.Translucency < 1;
   this->Surface = material;
   this->Ambient = ambient;
   this->Lights = lights;
@@ -324,6 +325,8 @@ void vtkShadelabShading::Attach(
                                                                              : VTK_SURFACE);
   property->SetLineWidth(static_cast<float>(this->LineWidth));
   property->SetPointSize(static_cast<float>(this->PointSize));
+  // The shader's opacity; below 1 the actor is drawn in the translucent step.
+  property->SetOpacity(this->Surface.Translucency);
 
   auto dark = vtkSmartPointer<vtkLight>::New();
   dark->SetIntensity(0);

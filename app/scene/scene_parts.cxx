@@ -136,6 +136,10 @@ std::vector<ScenePart> SceneParts(
       file.Kd = FieldTuple<3>(field, PartKdArrayName, p);
       file.Ks = FieldTuple<3>(field, PartKsArrayName, p);
       file.Ns = FieldTuple<1>(field, PartNsArrayName, p)[0];
+      if (field->GetArray(PartTranslucencyArrayName))
+      {
+        file.Translucency = FieldTuple<1>(field, PartTranslucencyArrayName, p)[0];
+      }
       part.Surface = options.Overridden(file);
       part.Source = MaterialSource::File;
     }

@@ -145,11 +145,10 @@ double PictureTriangles::EdgeDistance(std::size_t t, double x, double y) const
     { SegmentDistance(x, y, a, b), SegmentDistance(x, y, b, d), SegmentDistance(x, y, d, a) });
 }
 
-PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
+std::vector<std::pair<double, PictureTriangles::Hit>> PictureTriangles::Met(
+  const Ray& ray, double x, double y) const
 {
-  const Ray ray = this->RayAt(x, y);
-  Hit hit;
-  double nearest = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, Hit>> met;
   for (std::size_t t = 0; t < this->Triangles.size(); ++t)
   {
     const Footprint& f = this->Footprints[t];
@@ -158,40 +157,77 @@ PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
       continue;
     }
     const TriangleCorners& c = this->Triangles[t];
-    const TriangleHit h =
-      IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
-    if (h.Inside && h.T < nearest)
+    const Vec3 &a = this->Points[c[0]], &b = this->Points[c[1]], &d = this->Points[c[2]];
+    const TriangleHit h = IntersectTriangle(ray, a, b, d);
+    if (h.Inside)
     {
-      nearest = h.T;
+      Hit hit;
       hit.Triangle = static_cast<std::int64_t>(t);
       hit.Weights = h.Weights;
+      hit.Front = dot(cross(b - a, d - a), ray.Direction) < 0;
+      met.emplace_back(h.T, hit);
     }
   }
-  // The depth of the point met; only triangles with a corner nearer may cover it.
-  double depth = std::numeric_limits<double>::infinity();
-  if (hit.Triangle >= 0)
-  {
-    const TriangleCorners& c = this->Triangles[hit.Triangle];
-    const Vec3& a = this->Points[c[0]];
-    hit.Front = dot(cross(this->Points[c[1]] - a, this->Points[c[2]] - a), ray.Direction) < 0;
-    depth = dot(ray.Origin + nearest * ray.Direction - this->Camera.Position, this->Forward);
-  }
-  hit.EdgeDistance = std::numeric_limits<double>::infinity();
+  return met;
+}
+
+double PictureTriangles::NearestEdge(double x, double y, double depth, std::int64_t met) const
+{
+  double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < this->Triangles.size(); ++t)
   {
     const Footprint& f = this->Footprints[t];
-    if (!f.Projects || !(f.Nearest < depth || static_cast<std::int64_t>(t) == hit.Triangle))
+    if (!f.Projects || !(f.Nearest < depth || static_cast<std::int64_t>(t) == met))
     {
       continue;
     }
     // The box is no nearer than any edge: skip triangles it puts too far.
     const double dx = std::max({ f.Left - x, x - f.Right, 0.0 });
     const double dy = std::max({ f.Top - y, y - f.Bottom, 0.0 });
-    if (dx * dx + dy * dy < hit.EdgeDistance * hit.EdgeDistance)
+    if (dx * dx + dy * dy < nearest * nearest)
     {
-      hit.EdgeDistance = std::min(hit.EdgeDistance, this->EdgeDistance(t, x, y));
+      nearest = std::min(nearest, this->EdgeDistance(t, x, y));
     }
   }
+  return nearest;
+}
+
+PictureTriangles::Hit PictureTriangles::Under(double x, double y) const
+{
+  const Ray ray = this->RayAt(x, y);
+  Hit hit;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [t, met] : this->Met(ray, x, y))
+  {
+    if (t < nearest)
+    {
+      nearest = t;
+      hit = met;
+    }
+  }
+  // The depth of the point met; only triangles with a corner nearer may cover it.
+  const double depth = hit.Triangle < 0
+    ? std::numeric_limits<double>::infinity()
+    : dot(ray.Origin + nearest * ray.Direction - this->Camera.Position, this->Forward);
+  hit.EdgeDistance = this->NearestEdge(x, y, depth, hit.Triangle);
   return hit;
+}
+
+std::vector<PictureTriangles::Hit> PictureTriangles::Through(double x, double y) const
+{
+  std::vector<std::pair<double, Hit>> met = this->Met(this->RayAt(x, y), x, y);
+  // Nearest first; at the same distance, in draw order.
+  std::stable_sort(met.begin(), met.end(),
+    [](const std::pair<double, Hit>& a, const std::pair<double, Hit>& b)
+    { return a.first < b.first; });
+  const double edge =
+    this->NearestEdge(x, y, std::numeric_limits<double>::infinity(), -1);
+  std::vector<Hit> layers;
+  for (auto& [t, hit] : met)
+  {
+    hit.EdgeDistance = edge;
+    layers.push_back(hit);
+  }
+  return layers;
 }
 }

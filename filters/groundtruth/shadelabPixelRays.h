@@ -83,6 +83,14 @@ public:
   /** What the ray through picture point (x, y) meets first. */
   Hit Under(double x, double y) const;
 
+  /**
+   * Every triangle the ray through picture point (x, y) meets, nearest
+   * first (at the same distance, in draw order): the layers that
+   * translucency composites. Each one's EdgeDistance is the same, to the
+   * nearest projected edge of any triangle, since every layer shows.
+   */
+  std::vector<Hit> Through(double x, double y) const;
+
   Ray RayAt(double x, double y) const;
 
   const std::vector<Vec3>& GetPoints() const { return this->Points; }
@@ -92,6 +100,12 @@ public:
   const std::array<double, 3>& Projected(std::size_t p) const { return this->Projections[p]; }
 
 private:
+  // The triangles ray (through picture point (x, y)) meets, each with the
+  // distance along the ray, in draw order.
+  std::vector<std::pair<double, Hit>> Met(const Ray& ray, double x, double y) const;
+  // Pixels from (x, y) to the nearest projected edge of triangle `met` or of
+  // one with a corner nearer than depth along the view.
+  double NearestEdge(double x, double y, double depth, std::int64_t met) const;
   // Pixels from (x, y) to the boundary of triangle t's projection.
   double EdgeDistance(std::size_t t, double x, double y) const;
 

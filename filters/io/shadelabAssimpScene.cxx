@@ -149,8 +149,7 @@ PartMaterial MapMaterial(const aiScene& scene, unsigned index, const std::string
   m.Ks = { ks.r * strength, ks.g * strength, ks.b * strength };
   material.Get(AI_MATKEY_SHININESS, shininess);
   m.Ns = shininess;
-  // Translucency goes where MTL's d and glTF's alpha go: no part array
-  // carries it yet (a later change adds one), so it is not drawn.
+  // Translucency: the format's opacity (a file's d, a transparency's 1 - Tr).
   material.Get(AI_MATKEY_OPACITY, opacity);
   m.Translucency = opacity;
   if (!Finite(m.Ka) || !Finite(m.Kd) || !Finite(m.Ks) || !std::isfinite(m.Ns) ||

@@ -42,7 +42,27 @@ Material LectureMaterial(const Json& material, const std::string& where)
   m.Ka = m.Kd;
   const double r4 = std::pow(f.Roughness, 4);
   m.Ns = r4 > 2 / (MaxNs + 2) ? 2 / r4 - 2 : MaxNs;
-  m.Translucency = f.Base[3];
+  // a from alphaMode: OPAQUE (the default) ignores the alpha; BLEND takes
+  // baseColorFactor's; MASK draws the part whole or not at all by
+  // alphaCutoff (default 0.5). A texture's alpha is not read.
+  const std::string mode = String(material, "alphaMode", where);
+  const double alpha = std::clamp(f.Base[3], 0.0, 1.0);
+  if (mode == "BLEND")
+  {
+    m.Translucency = alpha;
+  }
+  else if (mode == "MASK")
+  {
+    m.Translucency = alpha >= Number(material, "alphaCutoff", where, 0.5) ? 1 : 0;
+  }
+  else if (mode.empty() || mode == "OPAQUE")
+  {
+    m.Translucency = 1;
+  }
+  else
+  {
+    Fail(where + ".alphaMode is \"" + mode + "\", not OPAQUE, MASK or BLEND");
+  }
   return m;
 }
 

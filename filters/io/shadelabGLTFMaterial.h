@@ -13,6 +13,10 @@
  *     ns = 2 / r^4 - 2            Blinn-Phong's exponent for GGX's alpha = r^2,
  *                                 clamped to [0, 10000]
  *
+ * The opacity a (Translucency) is baseColorFactor's alpha with alphaMode
+ * BLEND, 1 with OPAQUE (the default), and 1 or 0 with MASK as the alpha
+ * reaches alphaCutoff or not.
+ *
  * baseColorTexture T multiplies kd and ka (shadelabGLTFTexture.h), as it
  * multiplies baseColorFactor in glTF; in ks it multiplies B m, the metal's
  * part: ks = 0.04 (1 - m) + B m T (KsTextureScale).

@@ -74,6 +74,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto kd = coefficients(PartKdArrayName, 3);
   auto ks = coefficients(PartKsArrayName, 3);
   auto ns = coefficients(PartNsArrayName, 1);
+  auto translucency = coefficients(PartTranslucencyArrayName, 1);
+  translucency->Fill(1);
   auto ksScales = coefficients(PartKsTextureScaleArrayName, 3);
   for (vtkIdType part = 0; part < count; ++part)
   {
@@ -90,10 +92,12 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
       kd->SetTuple(part, p.Coefficients.Kd.data());
       ks->SetTuple(part, p.Coefficients.Ks.data());
       ns->SetTuple(part, &p.Coefficients.Ns);
+      translucency->SetTuple(part, &p.Coefficients.Translucency);
     }
   }
   AddArrays(
-    triangles, { names, indices, ka, kd, ks, ns, kdTextures, kaTextures, ksTextures, ksScales });
+    triangles, { names, indices, ka, kd, ks, ns, translucency, kdTextures, kaTextures, ksTextures,
+                 ksScales });
 }
 
 void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles)

@@ -34,6 +34,8 @@ constexpr const char* PartKaArrayName = "PartKa";
 constexpr const char* PartKdArrayName = "PartKd";
 constexpr const char* PartKsArrayName = "PartKs";
 constexpr const char* PartNsArrayName = "PartNs";
+/** Field data, one per part: its opacity a (MTL d or 1 - Tr, glTF alpha), 1 without a material. */
+constexpr const char* PartTranslucencyArrayName = "PartTranslucency";
 /**
  * Field data, one per part (int): the texture that multiplies its kd, and
  * the one that multiplies its ka, as an index into the texture arrays

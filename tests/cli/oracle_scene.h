@@ -24,6 +24,7 @@
 #include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
 #include "shadelabShadingOracle.h"
+#include "shadelabTranslucency.h"
 #include "shadelabTriangleFragment.h"
 #include "shadelabVec3.h"
 
@@ -36,6 +37,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -125,7 +127,18 @@ struct GridSpec
   // unless the scene overrides kd: neighbours differ strongly, so a wrong
   // vertex's colour or a wrong mix shows.
   bool VertexColors = false;
+  // Translucency's layers: copies of the grid one behind the other, sheet k
+  // moved by k*SheetStep (away from the camera and aside, so that the
+  // sheets overlap in part), written in this order (a permutation of 0..n-1;
+  // empty: the grid alone). Sheet k's colours are the grid's shifted by k.
+  std::vector<int> Sheets;
+  // A closed mesh instead of the grid: a cube of side 1.2 turned to show
+  // three faces, each face two triangles with its own flat normals (a
+  // translucent cube shows its far faces, lit as back faces, through them).
+  bool Box = false;
 };
+
+constexpr std::array<double, 3> SheetStep{ 0.25, 0.125, -1 };
 
 // The colour of grid vertex (i, j); vertices added off the grid are grey.
 inline std::array<int, 3> GridColor(int i, int j)
@@ -184,8 +197,91 @@ inline Vec3 GridNormal(const GridSpec& g, double x, double y)
   return normalize(normalize({ -g.SlopeX, -g.SlopeY, 1 }) + g.Bump * Vec3{ x, y, 0 });
 }
 
+// GridSpec::Box: float-exact corners and normals, as the reader keeps them.
+inline Mesh Box(const GridSpec& g)
+{
+  const double ax = 25 * Pi / 180, ay = 35 * Pi / 180;
+  const auto turned = [&](const Vec3& p)
+  {
+    const Vec3 x{ p[0], std::cos(ax) * p[1] - std::sin(ax) * p[2],
+      std::sin(ax) * p[1] + std::cos(ax) * p[2] };
+    Vec3 r{ std::cos(ay) * x[0] + std::sin(ay) * x[2], x[1],
+      -std::sin(ay) * x[0] + std::cos(ay) * x[2] };
+    for (double& c : r)
+    {
+      c = static_cast<float>(c);
+    }
+    return r;
+  };
+  Mesh m;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side : { -1, 1 })
+    {
+      Vec3 n{ 0, 0, 0 };
+      n[axis] = side;
+      // Two directions in the face, (u, v, n) right-handed: counter-clockwise from outside.
+      Vec3 u{ 0, 0, 0 }, v{ 0, 0, 0 };
+      u[(axis + 1) % 3] = 1;
+      v[(axis + 2) % 3] = side;
+      const int first = static_cast<int>(m.Positions.size());
+      for (const auto& [a, b] : { std::pair{ -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } })
+      {
+        const Vec3 p = 0.6 * (n + a * u + b * v);
+        m.Positions.push_back(turned(p));
+        m.Normals.push_back(turned(n));
+        m.TexCoords.push_back(TexCoordAt(m.Positions.back()[0], m.Positions.back()[1]));
+        if (g.VertexColors)
+        {
+          m.Colors.push_back(GridColor(axis + (a + 1) / 2, side + 1 + (b + 1) / 2));
+        }
+      }
+      m.Triangles.push_back({ first, first + 1, first + 2 });
+      m.Triangles.push_back({ first + 2, first + 3, first });
+    }
+  }
+  return m;
+}
+
+// GridSpec::Sheets: the grid copied behind itself.
+inline Mesh Sheets(const GridSpec& g, const Mesh& grid)
+{
+  Mesh m;
+  const auto vertices = static_cast<std::int64_t>(grid.Positions.size());
+  for (std::size_t k = 0; k < g.Sheets.size(); ++k)
+  {
+    for (std::int64_t v = 0; v < vertices; ++v)
+    {
+      m.Positions.push_back(grid.Positions[v] + static_cast<double>(k) * SheetStep);
+      m.Normals.push_back(grid.Normals[v]);
+      m.TexCoords.push_back(grid.TexCoords[v]);
+      if (g.VertexColors)
+      {
+        const int n = g.Cells + 1;
+        m.Colors.push_back(GridColor(static_cast<int>(v % n + k), static_cast<int>(v / n)));
+      }
+    }
+  }
+  for (int sheet : g.Sheets)
+  {
+    for (shadelab::TriangleCorners t : grid.Triangles)
+    {
+      for (auto& v : t)
+      {
+        v += sheet * vertices;
+      }
+      m.Triangles.push_back(t);
+    }
+  }
+  return m;
+}
+
 inline Mesh Grid(const GridSpec& g)
 {
+  if (g.Box)
+  {
+    return Box(g);
+  }
   Mesh m;
   const int n = g.Cells + 1;
   for (int j = 0; j < n; ++j)
@@ -239,6 +335,10 @@ inline Mesh Grid(const GridSpec& g)
         m.Triangles.push_back(t);
       }
     }
+  }
+  if (!g.Sheets.empty())
+  {
+    return Sheets(g, m);
   }
   if (!g.Slivers && !g.Degenerate)
   {
@@ -342,6 +442,9 @@ struct Scene
   // --fog, in local units (a scaled scene's depths and densities scaled to
   // fog alike); its colour, where it has none, the background's (black).
   shadelab::Fog Fog;
+  // --translucency (over every part's a; MTL d gives a part's own) and --peels.
+  std::optional<double> Translucency;
+  int Peels = 0;
   // --representation, and Pixels as --line-width or --point-size.
   shadelab::Representation Drawn = shadelab::Representation::Surface;
   int Pixels = 3;
@@ -444,6 +547,19 @@ inline Material SurfaceOf(const Scene& s, int t)
   return m;
 }
 
+// Triangle t's opacity a: --translucency's, else its material's.
+inline double OpacityOf(const Scene& s, int t)
+{
+  return s.Translucency.value_or(SurfaceOf(s, t).Translucency);
+}
+
+inline bool Translucent(const Scene& s)
+{
+  return s.Translucency ? *s.Translucency < 1
+                        : std::any_of(s.Parts.begin(), s.Parts.end(),
+                            [](const Material& m) { return m.Translucency < 1; });
+}
+
 // Coefficients per local unit as per world unit: d grows by Scale.
 inline Vec3 WorldAttenuation(const Scene& s, const Vec3& c)
 {
@@ -513,6 +629,10 @@ inline std::string MtlText(const Scene& s)
         << Num(m.Ka[2]) << "\nKd " << Num(m.Kd[0]) << " " << Num(m.Kd[1]) << " " << Num(m.Kd[2])
         << "\nKs " << Num(m.Ks[0]) << " " << Num(m.Ks[1]) << " " << Num(m.Ks[2]) << "\nNs "
         << Num(m.Ns) << "\n";
+    if (m.Translucency != 1)
+    {
+      mtl << "d " << Num(m.Translucency) << "\n";
+    }
     if (s.Textured && k % 2 == 0)
     {
       const char* clamp = s.Wrap == shadelab::TextureWrap::Clamp ? "-clamp on " : "";
@@ -664,6 +784,14 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   {
     args.insert(args.end(), { "--fog", FogOption(WorldFog(s)) });
   }
+  if (s.Translucency)
+  {
+    args.insert(args.end(), { "--translucency", Num(*s.Translucency) });
+  }
+  if (s.Peels)
+  {
+    args.insert(args.end(), { "--peels", std::to_string(s.Peels) });
+  }
   if (s.Drawn != shadelab::Representation::Surface)
   {
     args.insert(args.end(),
@@ -767,12 +895,59 @@ public:
       e.What = hit.EdgeDistance > EdgeMargin ? Expected::Background : Expected::Skipped;
       return e;
     }
+    if (Translucent(this->S))
+    {
+      return this->Layered(cx, cy);
+    }
     e.Triangle = static_cast<int>(hit.Triangle);
     if (hit.EdgeDistance <= EdgeMargin || this->NearSwitch(e.Triangle, hit.Front, cx, cy))
     {
       return e;
     }
     this->Shade(e.Triangle, this->M.Triangles[e.Triangle], hit.Weights, hit.Front, e);
+    e.What = Expected::Interior;
+    return e;
+  }
+
+  // Translucency: every layer under the pixel centre shaded, and those in
+  // front of the first opaque one composited over it (or the black
+  // background) in depth order, the nearest --peels of them; compared away
+  // from every triangle's edge and every layer's switches. The terms are
+  // the nearest layer's.
+  Expected Layered(double cx, double cy) const
+  {
+    Expected e;
+    const std::vector<shadelab::PictureTriangles::Hit> layers = this->Triangles.Through(cx, cy);
+    if (layers.front().EdgeDistance <= EdgeMargin)
+    {
+      return e;
+    }
+    std::vector<shadelab::Layer> translucent;
+    shadelab::Covered behind{ { 0, 0, 0 }, 1 };
+    for (const shadelab::PictureTriangles::Hit& hit : layers)
+    {
+      const int t = static_cast<int>(hit.Triangle);
+      if (this->NearSwitch(t, hit.Front, cx, cy))
+      {
+        return e;
+      }
+      Expected layer;
+      this->Shade(t, this->M.Triangles[t], hit.Weights, hit.Front, layer);
+      if (e.Triangle < 0)
+      {
+        e.Triangle = t;
+        e.Terms = layer.Terms;
+        e.TexCoord = layer.TexCoord;
+      }
+      const double a = OpacityOf(this->S, t);
+      if (a == 1)
+      {
+        behind.Color = layer.Value;
+        break;
+      }
+      translucent.push_back({ layer.Value, a });
+    }
+    e.Value = shadelab::Composite(translucent, behind, this->S.Peels).Color;
     e.What = Expected::Interior;
     return e;
   }
@@ -1091,7 +1266,7 @@ inline Deviation Compare(
       }
       // A texture and fog vary per fragment under flat too.
       if (s.Rule == Shading::Flat && !s.EightBit && !s.Textured &&
-        s.Fog.Mode == shadelab::FogMode::None)
+        s.Fog.Mode == shadelab::FogMode::None && !Translucent(s))
       {
         const auto [first, added] = flatColour.emplace(e.Triangle, got);
         if (!added && first->second != got && d.FlatDifferent++ == 0)

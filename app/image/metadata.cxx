@@ -95,7 +95,13 @@ nlohmann::ordered_json DescribeLight(const Light& light)
 
 nlohmann::ordered_json DescribeMaterial(const Material& m)
 {
-  return { { "name", m.Name }, { "ka", m.Ka }, { "kd", m.Kd }, { "ks", m.Ks }, { "ns", m.Ns } };
+  nlohmann::ordered_json j{ { "name", m.Name }, { "ka", m.Ka }, { "kd", m.Kd }, { "ks", m.Ks },
+    { "ns", m.Ns } };
+  if (m.Translucency != 1)
+  {
+    j["a"] = m.Translucency; // only where translucent: opaque pictures describe as before
+  }
+  return j;
 }
 
 std::vector<std::pair<std::string, std::string>> DescribePicture(const std::string& commandLine,
@@ -184,6 +190,12 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   if (o.Fogging.Mode != FogMode::None)
   {
     j["fog"] = settings::FogSpec{}.Text(o.Fogging); // as --fog and the scene key write it
+  }
+  const bool translucent = std::any_of(sceneParts.begin(), sceneParts.end(),
+    [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; });
+  if (translucent && o.Peels > 0)
+  {
+    j["peels"] = o.Peels;
   }
   if (o.Drawn != Representation::Surface)
   {

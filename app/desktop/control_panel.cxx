@@ -4,7 +4,7 @@
 #include "desktop/fog_edit.h"
 #include "desktop/light_list_edit.h"
 #include "desktop/representation_edit.h"
-#include "desktop/shininess_edit.h"
+#include "desktop/slider_edit.h"
 #include "desktop/triple_edit.h"
 #include "shadelabVec3.h"
 #include "vtkShadelabMeshNormals.h"
@@ -52,7 +52,8 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , Model(new QComboBox(this))
   , Drawn(new RepresentationEdit(this))
   , MaterialRow(new QComboBox(this))
-  , Ns(new ShininessEdit(this))
+  , Ns(new SliderEdit(SliderEdit::Shininess(), this))
+  , Opacity(new SliderEdit(SliderEdit::Opacity(), this))
   , AmbientLight(new ColorEdit("Ia", this))
   , Attenuation(new TripleEdit("attenuation", { "c0", "c1", "c2" }, 0, 1e6, this))
   , Fogging(new FogEdit(this))
@@ -66,6 +67,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   this->Model->setObjectName("reflection");
   this->MaterialRow->setObjectName("material");
   this->Ns->setObjectName("ns");
+  this->Opacity->setObjectName("a");
   this->LightChoice->setObjectName("lights");
   this->NormalsChoice->setObjectName("normals");
   this->FeatureAngle->setObjectName("feature angle");
@@ -156,6 +158,10 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   material->addRow("ns", this->Ns);
   this->Ns->Edited = [this](double ns)
   { this->Engine.Edit([ns](ViewState& s) { s.Scene.Ns = ns; }); };
+  // --translucency: every part's a.
+  material->addRow("a", this->Opacity);
+  this->Opacity->Edited = [this](double a)
+  { this->Engine.Edit([a](ViewState& s) { s.Scene.Translucency = a; }); };
 
   QFormLayout* light = group("Light");
   light->addRow("Ia", this->AmbientLight);
@@ -314,7 +320,8 @@ void ControlPanel::Show()
   this->Coefficients[0]->SetColor(m.Ka);
   this->Coefficients[1]->SetColor(m.Kd);
   this->Coefficients[2]->SetColor(m.Ks);
-  this->Ns->SetShininess(m.Ns);
+  this->Ns->SetValue(m.Ns);
+  this->Opacity->SetValue(m.Translucency);
   this->AmbientLight->SetColor(s.Ambient);
   this->Attenuation->SetValue(s.Attenuation);
   this->Fogging->SetFog(s.Fogging);

@@ -23,7 +23,7 @@ class FogEdit;
 class TripleEdit;
 class LightListEdit;
 class RepresentationEdit;
-class ShininessEdit;
+class SliderEdit;
 
 class ControlPanel : public QWidget
 {
@@ -42,7 +42,8 @@ private:
   RepresentationEdit* Drawn;
   QComboBox* MaterialRow;
   std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks
-  ShininessEdit* Ns;
+  SliderEdit* Ns;
+  SliderEdit* Opacity; // a
   ColorEdit* AmbientLight;
   TripleEdit* Attenuation; // the scene's C0, C1, C2
   FogEdit* Fogging;

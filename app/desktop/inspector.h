@@ -42,6 +42,8 @@
 #include <string>
 #include <vector>
 
+class vtkShadelabPeelingPass;
+
 namespace shadelab
 {
 // The `l` key's cycle. Lights other than the given ones follow the camera,
@@ -152,6 +154,7 @@ private:
     {
     }
     vtkSmartPointer<vtkRenderer> Renderer;
+    vtkSmartPointer<vtkShadelabPeelingPass> Peeling; // its translucent step
     vtkSmartPointer<vtkTextActor> Label;
     SceneCache Scenes;
     std::map<vtkPolyData*, vtkSmartPointer<vtkActor>> Glyphs, Edges;

@@ -86,7 +86,12 @@ void Inspector::UpdateHud()
   const SceneOptions& s = this->State.Scene;
   const Material m = s.EffectiveMaterial();
   std::ostringstream material;
-  material << m.Name << " (ns " << Fixed(m.Ns, 1) << ")";
+  material << m.Name << " (ns " << Fixed(m.Ns, 1);
+  if (m.Translucency < 1)
+  {
+    material << ", a " << Fixed(m.Translucency, 2);
+  }
+  material << ")";
   // Parts that keep the file's materials: the default above is not all there is.
   const BuiltScene* shown = this->Slots.empty() ? nullptr : this->Slots.front().Scenes.GetShown();
   if (shown)

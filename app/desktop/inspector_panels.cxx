@@ -6,6 +6,9 @@
 #include "scene/overlays.h"
 #include "scene/scene.h"
 
+#include "vtkShadelabPeelingPass.h"
+
+#include <vtkRenderStepsPass.h>
 #include <vtkTextProperty.h>
 
 namespace shadelab
@@ -42,6 +45,7 @@ void Inspector::Apply()
     const SceneOptions& scene = panels[i].Scene;
     const std::vector<Light> lights = CameraLights(scene);
     const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights);
+    slot.Peeling->SetMaximumNumberOfPeels(scene.Peels);
     if (!shown.Scene)
     {
       this->Problem = shown.Error;
@@ -116,6 +120,11 @@ void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
   {
     Slot& slot = this->Slots[i];
     slot.Renderer = vtkSmartPointer<vtkRenderer>::New();
+    // Translucency composited in exact depth order, as headless.
+    slot.Peeling = vtkSmartPointer<vtkShadelabPeelingPass>::New();
+    auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+    steps->SetTranslucentPass(slot.Peeling);
+    slot.Renderer->SetPass(steps);
     place(slot.Renderer, static_cast<int>(i));
     slot.Renderer->SetActiveCamera(this->Camera);
     slot.Renderer->SetBackground(this->Options.Scene.Background.data());

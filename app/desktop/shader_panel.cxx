@@ -30,9 +30,9 @@ struct Mark
   bool Effect; // compiled in only where a scene uses it: its button shows only then
 };
 
-const std::array<Mark, 6>& Marks()
+const std::array<Mark, ShaderPanel::MarkCount>& Marks()
 {
-  static const std::array<Mark, 6> marks{ {
+  static const std::array<Mark, ShaderPanel::MarkCount> marks{ {
     { "ambient", QColor(0xc8, 0xdc, 0xff), "ka*Ia", false },
     { "diffuse", QColor(0xc8, 0xf0, 0xbe), "kd*Il*N.L", false },
     { "specular", QColor(0xff, 0xdc, 0xb4), "ks*Il*base^ns", false },

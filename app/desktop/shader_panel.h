@@ -41,14 +41,16 @@ public:
   /** 0: every mark's lines; then the marks in the legend's order (the terms', then the effects').
    */
   static constexpr std::size_t AllMarks = 0;
+  /** The terms and effects the generator marks (Marks(), shader_panel.cxx). */
+  static constexpr std::size_t MarkCount = 6;
 
 private:
   void HighlightMark(std::size_t mark);
   void Highlight();
 
   QTabWidget* Tabs;
-  std::array<QPlainTextEdit*, 2> Stages;   // vertex, fragment
-  std::array<QAbstractButton*, 6> Buttons; // all, then Marks() (shader_panel.cxx)
+  std::array<QPlainTextEdit*, 2> Stages;               // vertex, fragment
+  std::array<QAbstractButton*, MarkCount + 1> Buttons; // all, then Marks()
   ShaderSources Sources;
   std::size_t Shown = AllMarks;
 };

@@ -3,12 +3,12 @@
 #include "core/errors.h"
 #include "headless/vtkShadelabCapturePass.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
-#include "headless/vtkShadelabPeelingPass.h"
 #include "vtkShadelabOutputWindow.h"
+#include "vtkShadelabPeelingPass.h"
 
 #include <vtkAutoInit.h>
-#include <vtkRenderStepsPass.h>
 #include <vtkPropCollection.h>
+#include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
 
 // vtkRenderer::New and vtkPolyDataMapper::New return the OpenGL2 classes only

@@ -90,9 +90,9 @@ bool SameLook(const ScenePart& a, const ScenePart& b)
   const Material &m = a.Surface, &n = b.Surface;
   const SurfaceTexture &t = a.Texture, &u = b.Texture;
   return m.Ka == n.Ka && m.Kd == n.Kd && m.Ks == n.Ks && m.Ns == n.Ns &&
-    m.Translucency == n.Translucency && t.Kd == u.Kd &&
-    t.Ka == u.Ka && t.Map.Image == u.Map.Image && t.Map.WrapS == u.Map.WrapS &&
-    t.Map.WrapT == u.Map.WrapT && t.Map.Filter == u.Map.Filter;
+    m.Translucency == n.Translucency && t.Kd == u.Kd && t.Ka == u.Ka &&
+    t.Map.Image == u.Map.Image && t.Map.WrapS == u.Map.WrapS && t.Map.WrapT == u.Map.WrapT &&
+    t.Map.Filter == u.Map.Filter;
 }
 
 // The parts with triangles, grouped by the material and texture they are

@@ -220,8 +220,7 @@ std::vector<PictureTriangles::Hit> PictureTriangles::Through(double x, double y)
   std::stable_sort(met.begin(), met.end(),
     [](const std::pair<double, Hit>& a, const std::pair<double, Hit>& b)
     { return a.first < b.first; });
-  const double edge =
-    this->NearestEdge(x, y, std::numeric_limits<double>::infinity(), -1);
+  const double edge = this->NearestEdge(x, y, std::numeric_limits<double>::infinity(), -1);
   std::vector<Hit> layers;
   for (auto& [t, hit] : met)
   {

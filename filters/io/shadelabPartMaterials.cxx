@@ -95,9 +95,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
       translucency->SetTuple(part, &p.Coefficients.Translucency);
     }
   }
-  AddArrays(
-    triangles, { names, indices, ka, kd, ks, ns, translucency, kdTextures, kaTextures, ksTextures,
-                 ksScales });
+  AddArrays(triangles,
+    { names, indices, ka, kd, ks, ns, translucency, kdTextures, kaTextures, ksTextures, ksScales });
 }
 
 void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles)

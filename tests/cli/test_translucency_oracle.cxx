@@ -25,8 +25,8 @@ std::vector<Case> Cases()
   {
     Scene s = sheets;
     s.Geometry.Sheets = order;
-    add("sheets_" + std::to_string(order[0]) + std::to_string(order[1]) +
-        std::to_string(order[2]) + "_phong",
+    add("sheets_" + std::to_string(order[0]) + std::to_string(order[1]) + std::to_string(order[2]) +
+        "_phong",
       s);
   } while (std::next_permutation(order.begin(), order.end()));
   sheets.Geometry.Sheets = { 2, 0, 1 };

@@ -1,4 +1,4 @@
-#include "headless/vtkShadelabPeelingPass.h"
+#include "vtkShadelabPeelingPass.h"
 
 #include <vtkInformation.h>
 #include <vtkObjectFactory.h>
@@ -91,6 +91,7 @@ vtkShadelabPeelingPass::~vtkShadelabPeelingPass()
   Release(this->Accumulated);
   Release(this->PeelDepths[0]);
   Release(this->PeelDepths[1]);
+  Release(this->CopiedDepth);
   if (this->Framebuffer)
   {
     this->Framebuffer->Delete();
@@ -117,11 +118,12 @@ void vtkShadelabPeelingPass::PrepareTargets(vtkOpenGLRenderWindow* window, int w
     (*colour)->SetFormat(GL_RGBA);
     (*colour)->Allocate2D(width, height, 4, VTK_FLOAT);
   }
-  for (vtkTextureObject*& depth : this->PeelDepths)
+  for (vtkTextureObject** depth :
+    { &this->PeelDepths[0], &this->PeelDepths[1], &this->CopiedDepth })
   {
-    Release(depth);
-    depth = NewTexture(window);
-    depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    Release(*depth);
+    *depth = NewTexture(window);
+    (*depth)->AllocateDepth(width, height, vtkTextureObject::Float32);
   }
   this->Width = width;
   this->Height = height;
@@ -143,17 +145,39 @@ void vtkShadelabPeelingPass::Render(const vtkRenderState* s)
   {
     return;
   }
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+  // The opaque surfaces' depth: the capture target's own texture, or (a
+  // window's renderer, drawn into the framebuffer bound now) a copy of its
+  // viewport.
   auto* target = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer());
-  this->OpaqueDepth = target ? target->GetDepthAttachmentAsTextureObject() : nullptr;
+  int width = 0, height = 0, x = 0, y = 0;
+  if (target)
+  {
+    width = target->GetLastSize()[0];
+    height = target->GetLastSize()[1];
+  }
+  else
+  {
+    renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
+  this->PrepareTargets(window, width, height);
+  this->OpaqueDepth = target ? target->GetDepthAttachmentAsTextureObject() : this->CopiedDepth;
   if (!this->OpaqueDepth)
   {
     vtkErrorMacro("translucency needs a framebuffer with a depth texture to peel against");
     return;
   }
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-  this->PrepareTargets(window, target->GetLastSize()[0], target->GetLastSize()[1]);
+  if (!target)
+  {
+    unsigned int drawn = 0, buffer = 0;
+    state->GetCurrentDrawFramebufferState(drawn, buffer);
+    state->PushReadFramebufferBinding();
+    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawn);
+    this->CopiedDepth->CopyFromFrameBuffer(x, y, 0, 0, width, height);
+    state->PopReadFramebufferBinding();
+  }
 
   // Only the translucent props take the peel's test (the opaque ones keep
   // their programs), and they write depth (vtkOpenGLActor's override).
@@ -172,6 +196,10 @@ void vtkShadelabPeelingPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
   vtkOpenGLState::ScopedglClearColor clearColor(state);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  state->vtkglDisable(GL_SCISSOR_TEST); // the peels fill their own targets from 0, 0
+  state->vtkglViewport(0, 0, width, height);
   state->PushFramebufferBindings();
   this->Framebuffer->Bind();
   this->Framebuffer->AddColorAttachment(0, this->Accumulated);
@@ -189,6 +217,7 @@ void vtkShadelabPeelingPass::Render(const vtkRenderState* s)
     this->AccumulatePeel(window);
   }
   state->PopFramebufferBindings();
+  state->vtkglViewport(x, y, width, height);
   this->CompositeOverOpaque(window);
 
   for (vtkProp* prop : translucent)
@@ -240,8 +269,7 @@ void vtkShadelabPeelingPass::AccumulatePeel(vtkOpenGLRenderWindow* window)
   if (!this->AccumulateQuad)
   {
     this->AccumulateQuad = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr,
-      QuadSource("shadelabPeel", "  gl_FragData[0] = vec4(f.rgb * f.a, f.a);\n").c_str(),
-      nullptr);
+      QuadSource("shadelabPeel", "  gl_FragData[0] = vec4(f.rgb * f.a, f.a);\n").c_str(), nullptr);
   }
   window->GetShaderCache()->ReadyShaderProgram(this->AccumulateQuad->Program);
   this->PeelColor->Activate();
@@ -259,8 +287,8 @@ void vtkShadelabPeelingPass::CompositeOverOpaque(vtkOpenGLRenderWindow* window)
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   if (!this->CompositeQuad)
   {
-    this->CompositeQuad = std::make_unique<vtkOpenGLQuadHelper>(
-      window, nullptr, QuadSource("shadelabComposited", "  gl_FragData[0] = f;\n").c_str(), nullptr);
+    this->CompositeQuad = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr,
+      QuadSource("shadelabComposited", "  gl_FragData[0] = f;\n").c_str(), nullptr);
   }
   window->GetShaderCache()->ReadyShaderProgram(this->CompositeQuad->Program);
   this->Accumulated->Activate();
@@ -308,6 +336,7 @@ void vtkShadelabPeelingPass::ReleaseGraphicsResources(vtkWindow* w)
   Release(this->Accumulated);
   Release(this->PeelDepths[0]);
   Release(this->PeelDepths[1]);
+  Release(this->CopiedDepth);
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);

@@ -27,11 +27,15 @@
  * Fragments at the same depth at a pixel (coincident translucent
  * surfaces): the first drawn is composited, the others are not.
  *
- * It needs the state's framebuffer with a depth texture (the capture pass's);
- * with no translucent prop it does nothing.
+ * The opaque depth is the state's framebuffer's depth texture (the capture
+ * pass's) or, without one (a window's renderer), a copy of the bound
+ * framebuffer's depth in the renderer's viewport, where the result goes.
+ * With no translucent prop it does nothing.
  */
 #ifndef vtkShadelabPeelingPass_h
 #define vtkShadelabPeelingPass_h
+
+#include "shadelab_filtersModule.h" // the export macro
 
 #include <vtkOpenGLRenderPass.h>
 
@@ -44,7 +48,7 @@ class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkTranslucentPass;
 
-class vtkShadelabPeelingPass : public vtkOpenGLRenderPass
+class SHADELAB_FILTERS_EXPORT vtkShadelabPeelingPass : public vtkOpenGLRenderPass
 {
 public:
   static vtkShadelabPeelingPass* New();
@@ -88,7 +92,8 @@ private:
   vtkTextureObject* PeelColor = nullptr;
   vtkTextureObject* Accumulated = nullptr;
   std::array<vtkTextureObject*, 2> PeelDepths{}; // this peel's and the last one's, in turn
-  vtkTextureObject* OpaqueDepth = nullptr;       // the state's framebuffer's, not owned
+  vtkTextureObject* CopiedDepth = nullptr;       // a window's opaque depth
+  vtkTextureObject* OpaqueDepth = nullptr;       // the state's framebuffer's, or CopiedDepth
   std::unique_ptr<vtkOpenGLQuadHelper> AccumulateQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   unsigned int Query = 0;

@@ -62,6 +62,11 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Orthographic = camera->GetParallelProjection();
   this->In = WorldIllumination(options, s.Lights);
   this->Fogging = options.Fogging;
+  this->Translucent = std::any_of(this->Parts.begin(), this->Parts.end(),
+    [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; });
+  this->Behind =
+    options.TransparentBackground ? Covered{ { 0, 0, 0 }, 0 } : Covered{ options.Background, 1 };
+  s.Peels = options.Peels;
   if (options.Drawn != Representation::Surface)
   {
     s.Drawn = options.Drawn;
@@ -118,6 +123,16 @@ PixelProbe PixelProber::Probe(Pixel at) const
   {
     return p;
   }
+  this->Shade(p, corners);
+  if (this->Translucent && !p.Element)
+  {
+    this->Composite(p);
+  }
+  return p;
+}
+
+void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
+{
   for (int k = 0; k < 3; ++k)
   {
     p.Corners[k] = corners[k];
@@ -154,7 +169,29 @@ PixelProbe PixelProber::Probe(Pixel at) const
       this->In.ViewDirection, p.Background);
     p.Shaded.Color = p.Fogged->After;
   }
-  return p;
+}
+
+void PixelProber::Composite(PixelProbe& p) const
+{
+  std::vector<Layer> translucent;
+  Covered behind = this->Behind;
+  for (const PictureTriangles::Hit& hit : this->Triangles.Through(p.At.X + 0.5, p.At.Y + 0.5))
+  {
+    PixelProbe layer = this->Scene;
+    layer.Triangle = hit.Triangle;
+    layer.Fragment.Weights = hit.Weights;
+    layer.Fragment.Front = hit.Front;
+    this->Shade(layer, this->Triangles.GetTriangles()[hit.Triangle]);
+    const double a = layer.Surface.Translucency;
+    p.Layers.push_back({ hit.Triangle, layer.Part, hit.Front, a, layer.Shaded.Color });
+    if (a >= 1)
+    {
+      behind = { layer.Shaded.Color, 1 };
+      break;
+    }
+    translucent.push_back({ layer.Shaded.Color, a });
+  }
+  p.Composited = shadelab::Composite(translucent, behind, p.Peels);
 }
 
 bool PixelProber::Locate(Pixel at, PixelProbe& p, TriangleCorners& corners) const

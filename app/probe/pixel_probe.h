@@ -10,6 +10,7 @@
 #include "scene/scene_parts.h"
 #include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
+#include "shadelabTranslucency.h"
 #include "shadelabTriangleFragment.h"
 
 #include <vtkType.h>
@@ -70,6 +71,23 @@ struct PixelProbe
   // With fog, at the point under the pixel centre (FogOver); Shaded.Color
   // is its After.
   std::optional<FogAt> Fogged;
+
+  // Translucency (a part with a < 1): every surface under the pixel
+  // centre, nearest first, down to the first opaque one; the nearest is the
+  // one explained above. Composited is what they make over that opaque one
+  // (or the background) in depth order, the nearest Peels of them (0: all):
+  // the oracle.
+  struct Layer
+  {
+    vtkIdType Triangle = -1;
+    int Part = 0;
+    bool Front = true;
+    double Opacity = 1; // a
+    Rgb Color{};        // I, shaded (and fogged) as above
+  };
+  std::vector<Layer> Layers;
+  int Peels = 0;
+  std::optional<Covered> Composited;
 };
 
 /** A scene's picture, ready to explain pixel after pixel. */
@@ -96,10 +114,18 @@ private:
   // pixel: the fragment's corners and weights, and p's Hit, Triangle and
   // EdgeDistance.
   bool Locate(Pixel at, PixelProbe& p, TriangleCorners& corners) const;
+  // The fragment of p's triangle at its weights (corners as drawn, or
+  // turned for an element), shaded by its part's material and fogged: p's
+  // fragment, part, material and shading.
+  void Shade(PixelProbe& p, const TriangleCorners& corners) const;
+  // Translucency: p's layers and their composite.
+  void Composite(PixelProbe& p) const;
 
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
   Fog Fogging;
+  bool Translucent = false; // a part drawn has a < 1
+  Covered Behind;           // the background, as Composite takes it
   PictureTriangles Triangles;
   std::unique_ptr<PictureElements> Elements;    // drawn as edges or points
   int ElementPixels = 1;                        // the lines' width or the points' size

@@ -96,7 +96,24 @@ ordered_json ProbeJson(const PixelProbe& p)
     j["background"] = p.Background;
     return j;
   }
-  j["oracle"] = p.Shaded.Color;
+  j["oracle"] = p.Composited ? p.Composited->Color : p.Shaded.Color;
+  if (p.Composited)
+  {
+    // Nearest first, down to the first opaque one; the rest of this
+    // explains the nearest, whose own colour is layers[0].color.
+    auto layers = nlohmann::ordered_json::array();
+    for (const PixelProbe::Layer& l : p.Layers)
+    {
+      layers.push_back({ { "triangle", l.Triangle }, { "part", l.Part },
+        { "front_facing", l.Front }, { "a", l.Opacity }, { "color", l.Color } });
+    }
+    j["layers"] = layers;
+    j["coverage"] = p.Composited->Alpha;
+    if (p.Peels > 0)
+    {
+      j["peels"] = p.Peels;
+    }
+  }
   if (p.Fogged)
   {
     // oracle = factor*before + (1 - factor)*color.

@@ -75,6 +75,29 @@ std::string LightName(const Light& l, std::size_t index)
   return name + ", colour " + ProbeTriple(l.Color);
 }
 
+// Translucency: each surface under the pixel centre with its a and I, and
+// their composite in depth order, the oracle.
+void AddLayers(Lines& out, const PixelProbe& p)
+{
+  out.Add("", "layers under the pixel centre, nearest first:",
+    "each composited as a*I + (1-a)*behind, from the farthest");
+  for (std::size_t k = 0; k < p.Layers.size(); ++k)
+  {
+    const PixelProbe::Layer& l = p.Layers[k];
+    const bool left = p.Peels > 0 && k >= static_cast<std::size_t>(p.Peels) && l.Opacity < 1;
+    out.Add("  ",
+      std::to_string(k + 1) + ": triangle " + std::to_string(l.Triangle) + " (part " +
+        std::to_string(l.Part) + (l.Front ? "" : ", back face") +
+        "), a = " + ProbeNumber(l.Opacity) + ", I = " + ProbeTriple(l.Color),
+      l.Opacity >= 1 ? "opaque: what lies behind"
+        : left       ? "beyond --peels: left out"
+                     : "");
+  }
+  const Covered& c = *p.Composited;
+  out.Add("", "composited = " + ProbeTriple(c.Color) + ", coverage " + ProbeNumber(c.Alpha),
+    "the oracle");
+}
+
 // One light's terms: L, the spot's cone, N.L and the diffuse term, H or R,
 // the base and its power, the specular term.
 void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::size_t index,
@@ -270,11 +293,16 @@ std::string ProbeText(const PixelProbe& p)
     out.Add("", "f = " + ProbeNumber(fog.Factor),
       std::string("the ") + ToString(fog.Mode) + " fog's factor at d");
     out.Add("", "f*I + (1-f)*" + ProbeTriple(fog.Color) + " = " + ProbeTriple(p.Shaded.Color),
-      "the oracle, fogged");
+      p.Composited ? "fogged" : "the oracle, fogged");
   }
   else
   {
-    out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color), "the oracle");
+    out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color),
+      p.Composited ? "the nearest surface's colour" : "the oracle");
+  }
+  if (p.Composited)
+  {
+    AddLayers(out, p);
   }
   out.Add("", rendered, p.RenderedFrom);
   out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");

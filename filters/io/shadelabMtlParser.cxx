@@ -151,7 +151,7 @@ MtlLibrary ParseMtl(std::string_view text)
       {
         scanner.Fail("newmtl without a material name");
       }
-      materials.push_back({ Material{ std::string(name) }, {}, {} });
+      materials.push_back({ Material{ std::string(name) }, {}, {}, false });
       continue;
     }
     const bool map = keyword == "map_Kd" || keyword == "map_Ka";
@@ -193,11 +193,16 @@ MtlLibrary ParseMtl(std::string_view text)
     }
     else if (keyword == "d")
     {
-      m.Translucency = ReadNumber(scanner, "d");
+      m.Translucency = std::clamp(ReadNumber(scanner, "d"), 0.0, 1.0);
+      materials.back().OpacityGiven = true;
     }
     else
     {
-      m.Translucency = 1 - ReadNumber(scanner, "Tr");
+      const double tr = std::clamp(ReadNumber(scanner, "Tr"), 0.0, 1.0);
+      if (!materials.back().OpacityGiven)
+      {
+        m.Translucency = tr < 1 ? 1 - tr : 1;
+      }
     }
   }
   // Right by the lecture's equation, but what a user sees is a white

@@ -37,9 +37,13 @@ struct MtlMap
 
 struct MtlMaterial
 {
-  Material Coefficients; // Translucency is d
-  MtlMap KdMap;          // map_Kd
-  MtlMap KaMap;          // map_Ka
+  // Translucency is d, clamped to [0, 1]; without d, 1 - Tr, except that
+  // Tr 1 is opaque: MeshLab and others write Tr for d, and a part drawn
+  // invisible is never what such a file means.
+  Material Coefficients;
+  MtlMap KdMap;              // map_Kd
+  MtlMap KaMap;              // map_Ka
+  bool OpacityGiven = false; // a d statement: Tr then changes nothing
 };
 
 struct MtlLibrary

@@ -454,7 +454,8 @@ struct Scene
   Vec3 Offset{ 0, 0, 0 };
   double CameraDistance = 10; // local units above the origin
   int Size = 96;
-  bool EightBit = false; // PNG instead of float EXR
+  bool EightBit = false;              // PNG instead of float EXR
+  bool TransparentBackground = false; // its colour black either way
   // The normals shadelab renders with: "file" (the grid's, exactly), or
   // "compute" (vtkShadelabMeshNormals's, with Weighting), which the oracle
   // still expects to be the grid's.
@@ -732,12 +733,13 @@ inline std::string OffText(const Scene& s, const Mesh& m)
 
 // Renders the scene with `shadelab render`; every setting is passed
 // explicitly, lights included (shadelab's default is a light at the camera).
-inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
+// The scene's mesh (and MTL, texture) written into dir, and the arguments
+// that draw it as the scene says: the mesh, then the options.
+inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& dir)
 {
   const bool ply = s.Geometry.VertexColors;
   const bool off = s.Textured && s.Parts.empty(); // --texture's mesh
   const auto mesh = dir / (ply ? "mesh.ply" : off ? "mesh.off" : "mesh.obj");
-  const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
   const Mesh m = Grid(s.Geometry);
   WriteText(mesh, ply ? PlyText(s, m) : off ? OffText(s, m) : ObjText(s, m));
   if (!s.Parts.empty())
@@ -745,12 +747,13 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
     WriteText(dir / "mesh.mtl", MtlText(s));
   }
   const std::string size = std::to_string(s.Size) + "x" + std::to_string(s.Size);
-  std::vector<std::string> args{ "render", mesh.string(), "-o", out.string(), "--size", size,
-    "--orthographic", "--camera-position", Triple(s.World({ 0, 0, s.CameraDistance })),
-    "--camera-focal-point", Triple(s.World({ 0, 0, 0 })), "--camera-view-up", "0,1,0",
-    "--parallel-scale", Num(s.Scale * ParallelScale), "--shading", ToString(s.Rule), "--reflection",
-    ToString(s.Model), "--ambient", Triple(s.Ambient), "--background", "0,0,0", "--normals",
-    s.Normals, "--weighting", s.Weighting };
+  std::vector<std::string> args{ mesh.string(), "--size", size, "--orthographic",
+    "--camera-position", Triple(s.World({ 0, 0, s.CameraDistance })), "--camera-focal-point",
+    Triple(s.World({ 0, 0, 0 })), "--camera-view-up", "0,1,0", "--parallel-scale",
+    Num(s.Scale * ParallelScale), "--shading", ToString(s.Rule), "--reflection", ToString(s.Model),
+    "--ambient", Triple(s.Ambient), "--background",
+    s.TransparentBackground ? "transparent" : "0,0,0", "--normals", s.Normals, "--weighting",
+    s.Weighting };
   if (s.Parts.empty()) // the parts' materials come from the MTL file
   {
     args.insert(args.end(),
@@ -799,6 +802,15 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
         s.Drawn == shadelab::Representation::Points ? "--point-size" : "--line-width",
         std::to_string(s.Pixels) });
   }
+  return args;
+}
+
+inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
+{
+  const auto out = dir / (s.EightBit ? "out.png" : "out.exr");
+  std::vector<std::string> args{ "render", "-o", out.string() };
+  const std::vector<std::string> scene = SceneArguments(s, dir);
+  args.insert(args.end(), scene.begin(), scene.end());
   const RunResult r = RunShadelab(args);
   if (r.ExitCode != 0)
   {

@@ -460,6 +460,45 @@ TEST_F(MeshReaders, GltfPartsCarryTheirMaterials)
   }
 }
 
+// a by alphaMode (shadelabGLTFMaterial.h): OPAQUE (the default) ignores
+// the alpha, BLEND takes it, MASK cuts at alphaCutoff (default 0.5).
+TEST_F(MeshReaders, GltfOpacityFollowsAlphaMode)
+{
+  const std::vector<std::pair<Json, double>> cases{
+    { Json::object(), 1 },
+    { { { "alphaMode", "OPAQUE" } }, 1 },
+    { { { "alphaMode", "BLEND" } }, 0.25 },
+    { { { "alphaMode", "MASK" } }, 0 },
+    { { { "alphaMode", "MASK" }, { "alphaCutoff", 0.2 } }, 1 },
+  };
+  Gltf gltf;
+  const int position = gltf.Vec3(Square);
+  Json materials = Json::array(), primitives = Json::array();
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    Json material = cases[k].first;
+    material["pbrMetallicRoughness"] = { { "baseColorFactor", { 1, 1, 1, 0.25 } } };
+    materials.push_back(material);
+    Json primitive = Primitive(position, gltf.Indices({ 0, 1, 2 }));
+    primitive["material"] = static_cast<int>(k);
+    primitives.push_back(primitive);
+  }
+  gltf.Doc["materials"] = materials;
+  gltf.Scene({ gltf.Node({ { "mesh", gltf.Mesh(primitives) } }) });
+  const ReadResult result = Read(this->Write("alpha.gltf", gltf.DataUri()));
+  ASSERT_TRUE(result.Ok) << result.Error;
+  vtkDataArray* a = result.Mesh->GetFieldData()->GetArray(shadelab::PartTranslucencyArrayName);
+  ASSERT_NE(a, nullptr);
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    EXPECT_EQ(a->GetComponent(static_cast<vtkIdType>(k), 0), cases[k].second) << cases[k].first;
+  }
+  gltf.Doc["materials"][0]["alphaMode"] = "HALF";
+  const ReadResult bad = Read(this->Write("bad-alpha.gltf", gltf.DataUri()));
+  EXPECT_FALSE(bad.Ok);
+  EXPECT_NE(bad.Error.find("alphaMode is \"HALF\""), std::string::npos) << bad.Error;
+}
+
 TEST_F(MeshReaders, GltfSkipsPointsAndLinesAndPartialNormalsWithAWarning)
 {
   Gltf gltf = SquareDocument();

@@ -672,6 +672,22 @@ TEST_F(MeshReaders, MtlCoefficientsDefaultsAndMistakes)
   ExpectMtlErrors(mistakes);
 }
 
+// d is the opacity a; Tr alone its complement, except Tr 1, which MeshLab
+// and others write for an opaque material; d wins over a Tr after it.
+TEST_F(MeshReaders, MtlOpacityFromDOrTr)
+{
+  const auto library = shadelab::ParseMtl(
+    "newmtl meshlab\nTr 1.000000\nnewmtl clear\nTr 0.9\nnewmtl both\nd 0.5\nTr 0.9\n"
+    "newmtl over\nd 1.5\nnewmtl under\nd -0.5\n");
+  ASSERT_EQ(library.Materials.size(), 5u);
+  const double expected[] = { 1, 1 - 0.9, 0.5, 1, 0 };
+  for (std::size_t k = 0; k < 5; ++k)
+  {
+    EXPECT_DOUBLE_EQ(library.Materials[k].Coefficients.Translucency, expected[k])
+      << library.Materials[k].Coefficients.Name;
+  }
+}
+
 TEST_F(MeshReaders, ObjIgnoresWhatItDoesNotRender)
 {
   const ReadResult result = Read(this->Write("noise.obj",

@@ -180,16 +180,6 @@ private:
       this->Fail(shot, "render", error);
       return nullptr;
     }
-    if (s.TransparentBackground && s.Fogging.Mode != FogMode::None && !s.Fogging.Color)
-    {
-      // Towards transparent, each fragment's coverage would fall with its
-      // depth; only ordered compositing (translucency) could keep the far
-      // side of a mesh from showing through its near side exactly.
-      this->Fail(shot, "--fog",
-        "fog towards a transparent background needs a colour of its own (" +
-          std::string(ToString(s.Fogging.Mode)) + ":...:R,G,B)");
-      return nullptr;
-    }
     Context& context =
       this->Contexts.try_emplace({ s.Size.Width, s.Size.Height, s.Supersampling }, this->Meshes)
         .first->second;

@@ -62,8 +62,11 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Orthographic = camera->GetParallelProjection();
   this->In = WorldIllumination(options, s.Lights);
   this->Fogging = options.Fogging;
-  this->Translucent = std::any_of(this->Parts.begin(), this->Parts.end(),
-    [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; });
+  this->Translucent =
+    std::any_of(this->Parts.begin(), this->Parts.end(),
+      [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; }) ||
+    (options.TransparentBackground && options.Fogging.Mode != FogMode::None &&
+      !options.Fogging.Color);
   this->Behind =
     options.TransparentBackground ? Covered{ { 0, 0, 0 }, 0 } : Covered{ options.Background, 1 };
   s.Peels = options.Peels;
@@ -165,8 +168,9 @@ void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
   {
     // Per fragment under every rule: at the point under the pixel centre
     // (flat's too, which is lit at its provoking vertex).
-    p.Fogged = FogOver(this->Fogging, p.Shaded.Color, p.Shaded.Point, this->In.Eye,
-      this->In.ViewDirection, p.Background);
+    p.Fogged =
+      FogOver(this->Fogging, p.Shaded.Color, p.Shaded.Point, this->In.Eye, this->In.ViewDirection,
+        this->Behind.Alpha == 0 ? std::nullopt : std::optional<Rgb>(p.Background));
     p.Shaded.Color = p.Fogged->After;
   }
 }
@@ -182,7 +186,9 @@ void PixelProber::Composite(PixelProbe& p) const
     layer.Fragment.Weights = hit.Weights;
     layer.Fragment.Front = hit.Front;
     this->Shade(layer, this->Triangles.GetTriangles()[hit.Triangle]);
-    const double a = layer.Surface.Translucency;
+    // Fog towards transparent takes the coverage down by its factor.
+    const double a = layer.Surface.Translucency *
+      (layer.Fogged && layer.Fogged->Transparent ? layer.Fogged->Factor : 1);
     p.Layers.push_back({ hit.Triangle, layer.Part, hit.Front, a, layer.Shaded.Color });
     if (a >= 1)
     {

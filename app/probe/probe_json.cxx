@@ -120,6 +120,10 @@ ordered_json ProbeJson(const PixelProbe& p)
     j["fog"] = { { "mode", ToString(p.Fogged->Mode) }, { "depth", p.Fogged->Depth },
       { "factor", p.Fogged->Factor }, { "color", p.Fogged->Color },
       { "before", p.Fogged->Before } };
+    if (p.Fogged->Transparent)
+    {
+      j["fog"]["color"] = "transparent"; // the colour stays, a becomes factor*a (layers)
+    }
   }
   j["triangle"] = p.Triangle;
   if (p.Element)

@@ -292,8 +292,16 @@ std::string ProbeText(const PixelProbe& p)
     out.Add("", "d = " + ProbeNumber(fog.Depth), "the depth along the view direction, for the fog");
     out.Add("", "f = " + ProbeNumber(fog.Factor),
       std::string("the ") + ToString(fog.Mode) + " fog's factor at d");
-    out.Add("", "f*I + (1-f)*" + ProbeTriple(fog.Color) + " = " + ProbeTriple(p.Shaded.Color),
-      p.Composited ? "fogged" : "the oracle, fogged");
+    if (fog.Transparent)
+    {
+      out.Add("", "I = " + ProbeTriple(p.Shaded.Color),
+        "towards the transparent background the colour stays and a becomes f*a");
+    }
+    else
+    {
+      out.Add("", "f*I + (1-f)*" + ProbeTriple(fog.Color) + " = " + ProbeTriple(p.Shaded.Color),
+        p.Composited ? "fogged" : "the oracle, fogged");
+    }
   }
   else
   {

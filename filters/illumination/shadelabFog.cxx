@@ -28,7 +28,7 @@ double FogFactor(const Fog& fog, double depth)
 }
 
 FogAt FogOver(const Fog& fog, const Rgb& C, const Vec3& P, const Vec3& eye,
-  const Vec3& viewDirection, const Rgb& background)
+  const Vec3& viewDirection, const std::optional<Rgb>& background)
 {
   FogAt at;
   at.Mode = fog.Mode;
@@ -37,11 +37,12 @@ FogAt FogOver(const Fog& fog, const Rgb& C, const Vec3& P, const Vec3& eye,
     at.Depth += (P[c] - eye[c]) * viewDirection[c];
   }
   at.Factor = FogFactor(fog, at.Depth);
-  at.Color = fog.Color.value_or(background);
+  at.Transparent = !fog.Color && !background;
+  at.Color = fog.Color.value_or(background.value_or(Rgb{}));
   at.Before = C;
   for (int c = 0; c < 3; ++c)
   {
-    at.After[c] = at.Factor * C[c] + (1 - at.Factor) * at.Color[c];
+    at.After[c] = at.Transparent ? C[c] : at.Factor * C[c] + (1 - at.Factor) * at.Color[c];
   }
   return at;
 }

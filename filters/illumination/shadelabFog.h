@@ -58,14 +58,19 @@ struct FogAt
   Rgb Color{};  // the fog's: its own, or the background's
   Rgb Before{}; // the shaded colour C
   Rgb After{};  // f*C + (1 - f)*Color
+  // Towards a transparent background (no colour of its own): the colour
+  // stays (After = Before) and the coverage goes, the surface's a becoming
+  // f*a, composited in depth order as translucency is.
+  bool Transparent = false;
 };
 
 /**
  * `fog` over colour C at surface point P, seen from `eye` along the unit
- * `viewDirection`, towards its colour or else `background`.
+ * `viewDirection`, towards its colour or else `background` (none: a
+ * transparent one).
  */
 FogAt FogOver(const Fog& fog, const Rgb& C, const Vec3& P, const Vec3& eye,
-  const Vec3& viewDirection, const Rgb& background);
+  const Vec3& viewDirection, const std::optional<Rgb>& background);
 }
 
 #endif

@@ -16,7 +16,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
   return this->Rule == o.Rule && this->Model == o.Model && this->Lights == o.Lights &&
     this->Specular == o.Specular && this->Attenuation == o.Attenuation && this->Fog == o.Fog &&
-    this->Translucent == o.Translucent &&
+    this->Translucent == o.Translucent && this->FogTowardsTransparent == o.FogTowardsTransparent &&
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
@@ -383,7 +383,7 @@ std::string FogFactorSource(FogMode mode)
   return "1.0";
 }
 
-void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
+void AddFog(FogMode mode, bool towardsTransparent, std::vector<ShaderReplacement>& r)
 {
   Prepend(r, false, "//VTK::Light::Dec",
     std::string("uniform vec3 shadelabFogColor;\n") +
@@ -395,10 +395,11 @@ void AddFog(FogMode mode, std::vector<ShaderReplacement>& r)
     {
       each.Code += "  float shadelabFogDepth = -vertexVC.z; // shadelab: fog\n"
                    "  float shadelabFogFactor = " +
-        FogFactorSource(mode) +
-        "; // shadelab: fog\n"
-        "  fragOutput0.rgb = shadelabFogFactor * fragOutput0.rgb + (1.0 - shadelabFogFactor) * "
-        "shadelabFogColor; // shadelab: fog\n";
+        FogFactorSource(mode) + "; // shadelab: fog\n" +
+        (towardsTransparent ? "  fragOutput0.a *= shadelabFogFactor; // shadelab: fog\n"
+                            : "  fragOutput0.rgb = shadelabFogFactor * fragOutput0.rgb + (1.0 - "
+                              "shadelabFogFactor) * "
+                              "shadelabFogColor; // shadelab: fog\n");
     }
   }
 }
@@ -475,7 +476,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
   }
   if (f.Fog != FogMode::None)
   {
-    AddFog(f.Fog, r);
+    AddFog(f.Fog, f.FogTowardsTransparent, r);
   }
   return r;
 }

@@ -34,6 +34,10 @@ struct ShaderFeatures
   // from the fragment's depth -vertexVC.z, and the fog's colour and
   // numbers as uniforms (shadelabFog.h).
   FogMode Fog = FogMode::None;
+  // Towards a transparent background (no fog colour): the factor takes
+  // the fragment's alpha down instead of mixing its colour, and the
+  // translucent step composites it.
+  bool FogTowardsTransparent = false;
   // The surface is translucent (a < 1): the fragment's alpha is VTK's
   // opacity (the actor's property's, the material's a) rather than 1, for
   // the translucent step to composite (vtkShadelabPeelingPass).

@@ -209,11 +209,12 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Modified();
 }
 
-void vtkShadelabShading::SetFog(const Fog& fog, const Rgb& background)
+void vtkShadelabShading::SetFog(const Fog& fog, const std::optional<Rgb>& background)
 {
   this->Features.Fog = fog.Mode;
+  this->Features.FogTowardsTransparent = fog.Mode != FogMode::None && !fog.Color && !background;
   this->FogSetting = fog;
-  this->FogColour = fog.Color.value_or(background);
+  this->FogColour = fog.Color.value_or(background.value_or(Rgb{}));
   this->Modified();
 }
 
@@ -327,6 +328,8 @@ void vtkShadelabShading::Attach(
   property->SetPointSize(static_cast<float>(this->PointSize));
   // The shader's opacity; below 1 the actor is drawn in the translucent step.
   property->SetOpacity(this->Surface.Translucency);
+  // Fog towards transparent makes every fragment translucent.
+  actor->SetForceTranslucent(this->Features.FogTowardsTransparent);
 
   auto dark = vtkSmartPointer<vtkLight>::New();
   dark->SetIntensity(0);

@@ -95,10 +95,12 @@ public:
 
   /**
    * Fog over every fragment (ShaderFeatures::Fog), towards its colour, or
-   * without one towards `background`. Default none, and none the code has
-   * none.
+   * without one towards `background` (none: transparent, the fragment's
+   * coverage taken down, drawn in the translucent step). Default none, and
+   * none the code has none.
    */
-  VTK_WRAPEXCLUDE void SetFog(const shadelab::Fog& fog, const shadelab::Rgb& background);
+  VTK_WRAPEXCLUDE void SetFog(
+    const shadelab::Fog& fog, const std::optional<shadelab::Rgb>& background);
 
   /**
    * Draws the mesh's surface, or its edges as lines `lineWidth` pixels wide,

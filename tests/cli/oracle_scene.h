@@ -554,11 +554,19 @@ inline double OpacityOf(const Scene& s, int t)
   return s.Translucency.value_or(SurfaceOf(s, t).Translucency);
 }
 
+// Fog towards a transparent background takes the fragments' coverage down:
+// composited in depth order as translucency is.
+inline bool FogsTowardsTransparent(const Scene& s)
+{
+  return s.TransparentBackground && s.Fog.Mode != shadelab::FogMode::None && !s.Fog.Color;
+}
+
 inline bool Translucent(const Scene& s)
 {
-  return s.Translucency ? *s.Translucency < 1
-                        : std::any_of(s.Parts.begin(), s.Parts.end(),
-                            [](const Material& m) { return m.Translucency < 1; });
+  return FogsTowardsTransparent(s) ||
+    (s.Translucency ? *s.Translucency < 1
+                    : std::any_of(s.Parts.begin(), s.Parts.end(),
+                        [](const Material& m) { return m.Translucency < 1; }));
 }
 
 // Coefficients per local unit as per world unit: d grows by Scale.
@@ -843,6 +851,9 @@ struct Expected
   // viewer; gouraud: the vertices' mixed), and each light's terms.
   shadelab::IlluminationTerms Terms;
   std::array<double, 2> TexCoord{}; // with a texture: where it was looked up
+  // The fog's factor where it fogs towards transparent (the fragment's a
+  // times it); then, with translucency, the composite's alpha.
+  double Coverage = 1;
 };
 
 // The pixels of a scene as the oracle sees them: the library's rays through
@@ -935,7 +946,8 @@ public:
       return e;
     }
     std::vector<shadelab::Layer> translucent;
-    shadelab::Covered behind{ { 0, 0, 0 }, 1 };
+    // The background: black, opaque or transparent.
+    shadelab::Covered behind{ { 0, 0, 0 }, this->S.TransparentBackground ? 0.0 : 1.0 };
     for (const shadelab::PictureTriangles::Hit& hit : layers)
     {
       const int t = static_cast<int>(hit.Triangle);
@@ -951,15 +963,17 @@ public:
         e.Terms = layer.Terms;
         e.TexCoord = layer.TexCoord;
       }
-      const double a = OpacityOf(this->S, t);
+      const double a = OpacityOf(this->S, t) * layer.Coverage;
       if (a == 1)
       {
-        behind.Color = layer.Value;
+        behind = { layer.Value, 1 };
         break;
       }
       translucent.push_back({ layer.Value, a });
     }
-    e.Value = shadelab::Composite(translucent, behind, this->S.Peels).Color;
+    const shadelab::Covered c = shadelab::Composite(translucent, behind, this->S.Peels);
+    e.Value = c.Color;
+    e.Coverage = c.Alpha;
     e.What = Expected::Interior;
     return e;
   }
@@ -1110,9 +1124,11 @@ private:
     {
       // Per fragment under every rule: at the point under the pixel centre,
       // towards the background (black) unless the fog has a colour.
-      e.Value = shadelab::FogOver(WorldFog(this->S), e.Value, shaded.Point,
-        this->S.World({ 0, 0, this->S.CameraDistance }), { 0, 0, -1 }, { 0, 0, 0 })
-                  .After;
+      const shadelab::FogAt fog = shadelab::FogOver(WorldFog(this->S), e.Value, shaded.Point,
+        this->S.World({ 0, 0, this->S.CameraDistance }), { 0, 0, -1 },
+        this->S.TransparentBackground ? std::nullopt : std::optional<Rgb>(Rgb{ 0, 0, 0 }));
+      e.Value = fog.After;
+      e.Coverage = fog.Transparent ? fog.Factor : 1;
     }
     e.Terms = shaded.Terms;
     e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});
@@ -1202,6 +1218,8 @@ struct Deviation
   std::string FirstBackground;
   size_t FlatDifferent = 0; // flat: pixels that differ from their triangle's first one
   std::string FirstFlat;
+  size_t AlphaWrong = 0; // a transparent background's: off the coverage by more than 1e-6
+  std::string FirstAlpha;
 };
 
 inline std::string PixelName(int x, int y)
@@ -1239,6 +1257,15 @@ inline Deviation Compare(
         continue;
       }
       ++d.Compared;
+      if (s.TransparentBackground && image.Channels == 4 && !s.EightBit)
+      {
+        const float alpha = image.Pixels[(static_cast<size_t>(y) * image.Width + x) * 4 + 3];
+        if (!(std::abs(alpha - e.Coverage) <= 1e-6) && d.AlphaWrong++ == 0)
+        {
+          d.FirstAlpha = PixelName(x, y) + " has alpha " + std::to_string(alpha) + ", coverage " +
+            std::to_string(e.Coverage);
+        }
+      }
       for (int c = 0; c < 3; ++c)
       {
         d.Low = std::min(d.Low, e.Value[c]);
@@ -1350,6 +1377,7 @@ inline void ExpectMatchesOracle(const Case& c)
                             << oracle.Describe(e);
   }
   EXPECT_EQ(d.FlatDifferent, 0u) << "flat: more than one colour in a triangle: " << d.FirstFlat;
+  EXPECT_EQ(d.AlphaWrong, 0u) << "alpha off the coverage: " << d.FirstAlpha;
 }
 }
 

@@ -313,13 +313,6 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "exp2:-1" });
     },
     2, { "--fog", "negative" } },
-  { "FogTowardsTransparentWithoutAColour",
-    [](const TempDir& d)
-    {
-      return WithMesh(
-        d, "t.obj", Tetrahedron, { "--fog", "exp:0.1", "--background", "transparent" });
-    },
-    1, { "--fog", "colour of its own" } },
   { "RepresentationUnknown",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--representation", "lines" });

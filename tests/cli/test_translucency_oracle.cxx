@@ -4,7 +4,9 @@
 // other, written in every order (the picture must not depend on it); a
 // closed cube whose far faces show through its near ones, lit as back
 // faces; translucent parts (MTL d) beside and in front of opaque ones;
-// --peels keeping only the nearest layers; each rule, 8 bits too.
+// --peels keeping only the nearest layers; each rule, 8 bits too; a
+// transparent background's alpha, the coverage; and fog towards it, which
+// takes coverage away and is composited the same way.
 #include "oracle_scene.h"
 
 #include <gtest/gtest.h>
@@ -80,6 +82,30 @@ std::vector<Case> Cases()
     add("parts_beside_opaque_phong", s);
     s.Rule = Shading::Gouraud;
     add("parts_beside_opaque_gouraud", s);
+  }
+  {
+    // A transparent background: the alpha is the coverage, 1 - (1-a)^n.
+    Scene s = sheets;
+    s.TransparentBackground = true;
+    add("sheets_transparent_background", s);
+    // Fog towards it: each fragment's a times the fog's factor (an opaque
+    // cube's far faces then show through its near ones), composited in
+    // depth order.
+    s.Fog.Mode = shadelab::FogMode::Linear;
+    s.Fog.Start = 9;
+    s.Fog.End = 13;
+    s.Rule = Shading::Gouraud;
+    add("sheets_fog_towards_transparent_gouraud", s);
+    Scene box = ColouredLights();
+    box.Geometry.Box = true;
+    box.TransparentBackground = true;
+    box.Fog.Mode = shadelab::FogMode::Exp;
+    box.Fog.Density = 0.08;
+    for (Shading r : LitRules)
+    {
+      box.Rule = r;
+      add(std::string("opaque_box_fog_towards_transparent_") + ToString(r), box);
+    }
   }
   return cases;
 }

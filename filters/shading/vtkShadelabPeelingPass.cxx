@@ -84,14 +84,19 @@ vtkShadelabPeelingPass::vtkShadelabPeelingPass()
 {
 }
 
-vtkShadelabPeelingPass::~vtkShadelabPeelingPass()
+void vtkShadelabPeelingPass::ReleaseTextures()
 {
-  this->TranslucentPass->Delete();
   Release(this->PeelColor);
   Release(this->Accumulated);
   Release(this->PeelDepths[0]);
   Release(this->PeelDepths[1]);
   Release(this->CopiedDepth);
+}
+
+vtkShadelabPeelingPass::~vtkShadelabPeelingPass()
+{
+  this->TranslucentPass->Delete();
+  this->ReleaseTextures();
   if (this->Framebuffer)
   {
     this->Framebuffer->Delete();
@@ -259,43 +264,38 @@ bool vtkShadelabPeelingPass::Peel(const vtkRenderState* s)
 
 void vtkShadelabPeelingPass::AccumulatePeel(vtkOpenGLRenderWindow* window)
 {
-  vtkOpenGLState* state = window->GetState();
   this->Framebuffer->AddColorAttachment(0, this->Accumulated);
   this->Framebuffer->ActivateDrawBuffer(0);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglEnable(GL_BLEND);
   // Under: C += (1-A) * a*I, A += (1-A) * a.
-  state->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-  if (!this->AccumulateQuad)
-  {
-    this->AccumulateQuad = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr,
-      QuadSource("shadelabPeel", "  gl_FragData[0] = vec4(f.rgb * f.a, f.a);\n").c_str(), nullptr);
-  }
-  window->GetShaderCache()->ReadyShaderProgram(this->AccumulateQuad->Program);
-  this->PeelColor->Activate();
-  this->AccumulateQuad->Program->SetUniformi("shadelabPeel", this->PeelColor->GetTextureUnit());
-  this->AccumulateQuad->Render();
-  this->PeelColor->Deactivate();
+  this->BlendTexture(window, this->AccumulateQuad, "  gl_FragData[0] = vec4(f.rgb * f.a, f.a);\n",
+    this->PeelColor, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
 }
 
 void vtkShadelabPeelingPass::CompositeOverOpaque(vtkOpenGLRenderWindow* window)
 {
+  // Over: C + (1-A) * opaque, A + (1-A) * opaque alpha.
+  this->BlendTexture(window, this->CompositeQuad, "  gl_FragData[0] = f;\n", this->Accumulated,
+    GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}
+
+void vtkShadelabPeelingPass::BlendTexture(vtkOpenGLRenderWindow* window,
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* output, vtkTextureObject* texture,
+  unsigned int source, unsigned int destination)
+{
   vtkOpenGLState* state = window->GetState();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglEnable(GL_BLEND);
-  // Over: C + (1-A) * opaque, A + (1-A) * opaque alpha.
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  if (!this->CompositeQuad)
+  state->vtkglBlendFuncSeparate(source, destination, source, destination);
+  if (!quad)
   {
-    this->CompositeQuad = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr,
-      QuadSource("shadelabComposited", "  gl_FragData[0] = f;\n").c_str(), nullptr);
+    quad = std::make_unique<vtkOpenGLQuadHelper>(
+      window, nullptr, QuadSource("shadelabLayer", output).c_str(), nullptr);
   }
-  window->GetShaderCache()->ReadyShaderProgram(this->CompositeQuad->Program);
-  this->Accumulated->Activate();
-  this->CompositeQuad->Program->SetUniformi(
-    "shadelabComposited", this->Accumulated->GetTextureUnit());
-  this->CompositeQuad->Render();
-  this->Accumulated->Deactivate();
+  window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  texture->Activate();
+  quad->Program->SetUniformi("shadelabLayer", texture->GetTextureUnit());
+  quad->Render();
+  texture->Deactivate();
 }
 
 bool vtkShadelabPeelingPass::PreReplaceShaderValues(
@@ -332,11 +332,7 @@ void vtkShadelabPeelingPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->AccumulateQuad.reset();
   this->CompositeQuad.reset();
-  Release(this->PeelColor);
-  Release(this->Accumulated);
-  Release(this->PeelDepths[0]);
-  Release(this->PeelDepths[1]);
-  Release(this->CopiedDepth);
+  this->ReleaseTextures();
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);

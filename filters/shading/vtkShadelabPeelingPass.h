@@ -78,6 +78,7 @@ private:
   vtkShadelabPeelingPass(const vtkShadelabPeelingPass&) = delete;
   void operator=(const vtkShadelabPeelingPass&) = delete;
 
+  void ReleaseTextures();
   // The textures and framebuffer for width x height.
   void PrepareTargets(vtkOpenGLRenderWindow* window, int width, int height);
   // Draws peel number this->NumberOfPeels; whether it drew a fragment.
@@ -86,6 +87,11 @@ private:
   void AccumulatePeel(vtkOpenGLRenderWindow* window);
   // Puts the accumulator over the state's framebuffer.
   void CompositeOverOpaque(vtkOpenGLRenderWindow* window);
+  // Draws `texture` over the bound target in a full-screen quad whose
+  // fragment stage ends with `output` (its texel is f), blended by these
+  // factors, colour and alpha alike.
+  void BlendTexture(vtkOpenGLRenderWindow* window, std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+    const char* output, vtkTextureObject* texture, unsigned int source, unsigned int destination);
 
   vtkTranslucentPass* TranslucentPass;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;

@@ -189,7 +189,17 @@ void PixelProber::Composite(PixelProbe& p) const
     // Fog towards transparent takes the coverage down by its factor.
     const double a = layer.Surface.Translucency *
       (layer.Fogged && layer.Fogged->Transparent ? layer.Fogged->Factor : 1);
-    p.Layers.push_back({ hit.Triangle, layer.Part, hit.Front, a, layer.Shaded.Color });
+    Vec3 point{};
+    double depth = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        point[c] += layer.Fragment.Weights[k] * layer.Fragment.Positions[k][c];
+      }
+      depth += (point[c] - this->In.Eye[c]) * this->In.ViewDirection[c];
+    }
+    p.Layers.push_back({ hit.Triangle, layer.Part, hit.Front, a, layer.Shaded.Color, depth });
     if (a >= 1)
     {
       behind = { layer.Shaded.Color, 1 };
@@ -198,6 +208,21 @@ void PixelProber::Composite(PixelProbe& p) const
     translucent.push_back({ layer.Shaded.Color, a });
   }
   p.Composited = shadelab::Composite(translucent, behind, p.Peels);
+  double through = 1; // the nearer layers' product of (1 - a)
+  for (std::size_t k = 0; k < p.Layers.size(); ++k)
+  {
+    PixelProbe::Layer& l = p.Layers[k];
+    const bool opaque = l.Opacity >= 1;
+    if (!opaque && p.Peels > 0 && k >= static_cast<std::size_t>(p.Peels))
+    {
+      continue; // left out: adds nothing
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      l.Adds[c] = through * (opaque ? 1 : l.Opacity) * l.Color[c];
+    }
+    through *= 1 - l.Opacity;
+  }
 }
 
 bool PixelProber::Locate(Pixel at, PixelProbe& p, TriangleCorners& corners) const

@@ -84,6 +84,11 @@ struct PixelProbe
     bool Front = true;
     double Opacity = 1; // a
     Rgb Color{};        // I, shaded (and fogged) as above
+    double Depth = 0;   // of the point under the pixel centre, along the view direction
+    // What it adds to the composite: a*I times the (1 - a) of every nearer
+    // layer (the opaque one, I times them), 0 beyond --peels; these and the
+    // background times every layer's (1 - a) sum to the oracle.
+    Rgb Adds{};
   };
   std::vector<Layer> Layers;
   int Peels = 0;

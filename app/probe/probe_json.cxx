@@ -104,8 +104,9 @@ ordered_json ProbeJson(const PixelProbe& p)
     auto layers = nlohmann::ordered_json::array();
     for (const PixelProbe::Layer& l : p.Layers)
     {
-      layers.push_back({ { "triangle", l.Triangle }, { "part", l.Part },
-        { "front_facing", l.Front }, { "a", l.Opacity }, { "color", l.Color } });
+      layers.push_back(
+        { { "triangle", l.Triangle }, { "part", l.Part }, { "front_facing", l.Front },
+          { "depth", l.Depth }, { "a", l.Opacity }, { "color", l.Color }, { "adds", l.Adds } });
     }
     j["layers"] = layers;
     j["coverage"] = p.Composited->Alpha;

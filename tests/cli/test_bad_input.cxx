@@ -308,6 +308,16 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "linear:10,2" });
     },
     2, { "--fog", "not beyond" } },
+  { "TranslucencyOutOfRange",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--translucency", "1.5" });
+    },
+    2, { "--translucency", "not in range" } },
+  { "PeelsNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--peels", "-1" });
+    },
+    2, { "--peels", "not in range" } },
   { "FogDensityNegative",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "exp2:-1" });

@@ -3,7 +3,8 @@
 // its a and I, and their composite, the oracle. On the translucency oracle
 // test's three sheets: the probe's oracle equals the test's own
 // (oracle_scene.h) and what render drew, within the oracle tests' bound, at
-// every compared pixel of a coarse grid; its coverage is the picture's
+// every compared pixel of a coarse grid, and what each layer adds sums to
+// it; its coverage is the picture's
 // alpha with a transparent background; the layers beyond --peels are said
 // to be left out.
 #include "probe_support.h"
@@ -58,8 +59,18 @@ std::vector<json> ProbeAgainstTheOracle(const Scene& s, const Image& image)
     SCOPED_TRACE(PixelName(x, y));
     ExpectNear(Vec(a.at("oracle")), oracle.At(x, y).Value, 1e-12, "probe's and test's oracle");
     ExpectWithinTheBound(Got(image, x, y), Vec(a.at("oracle")));
-    // layers[0] is what the rest explains.
+    // layers[0] is what the rest explains; the layers lie ever deeper, and
+    // what each adds sums to the oracle (the background is black).
     EXPECT_EQ(a.at("layers").at(0).at("triangle"), a.at("triangle"));
+    Rgb sum{ 0, 0, 0 };
+    double depth = -1e300;
+    for (const json& layer : a.at("layers"))
+    {
+      sum = sum + Vec(layer.at("adds"));
+      EXPECT_GT(layer.at("depth").get<double>(), depth);
+      depth = layer.at("depth").get<double>();
+    }
+    ExpectNear(sum, Vec(a.at("oracle")), 1e-12, "the layers' adds and the oracle");
   }
   return answers;
 }

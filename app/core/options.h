@@ -201,6 +201,18 @@ struct SceneOptions
   {
     return this->MaterialGiven || this->Kd.has_value() || !this->Texture.empty();
   }
+
+  /** The background's colour, or none where it is transparent. */
+  std::optional<Rgb> OpaqueBackground() const
+  {
+    return this->TransparentBackground ? std::nullopt : std::optional<Rgb>(this->Background);
+  }
+
+  /** Fog with no colour over a transparent background: it takes coverage away (FogAt). */
+  bool FogsTowardsTransparent() const
+  {
+    return this->Fogging.Mode != FogMode::None && !this->Fogging.Color && !this->OpaqueBackground();
+  }
 };
 
 struct RenderOptions

@@ -191,9 +191,7 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   {
     j["fog"] = settings::FogSpec{}.Text(o.Fogging); // as --fog and the scene key write it
   }
-  const bool translucent = std::any_of(sceneParts.begin(), sceneParts.end(),
-    [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; });
-  if (translucent && o.Peels > 0)
+  if (AnyTranslucent(sceneParts) && o.Peels > 0)
   {
     j["peels"] = o.Peels;
   }

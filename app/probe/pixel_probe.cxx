@@ -62,13 +62,8 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Orthographic = camera->GetParallelProjection();
   this->In = WorldIllumination(options, s.Lights);
   this->Fogging = options.Fogging;
-  this->Translucent =
-    std::any_of(this->Parts.begin(), this->Parts.end(),
-      [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; }) ||
-    (options.TransparentBackground && options.Fogging.Mode != FogMode::None &&
-      !options.Fogging.Color);
-  this->Behind =
-    options.TransparentBackground ? Covered{ { 0, 0, 0 }, 0 } : Covered{ options.Background, 1 };
+  this->Translucent = AnyTranslucent(this->Parts) || options.FogsTowardsTransparent();
+  this->Background = options.OpaqueBackground();
   s.Peels = options.Peels;
   if (options.Drawn != Representation::Surface)
   {
@@ -168,9 +163,8 @@ void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
   {
     // Per fragment under every rule: at the point under the pixel centre
     // (flat's too, which is lit at its provoking vertex).
-    p.Fogged =
-      FogOver(this->Fogging, p.Shaded.Color, p.Shaded.Point, this->In.Eye, this->In.ViewDirection,
-        this->Behind.Alpha == 0 ? std::nullopt : std::optional<Rgb>(p.Background));
+    p.Fogged = FogOver(this->Fogging, p.Shaded.Color, p.Shaded.Point, this->In.Eye,
+      this->In.ViewDirection, this->Background);
     p.Shaded.Color = p.Fogged->After;
   }
 }
@@ -178,7 +172,8 @@ void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
 void PixelProber::Composite(PixelProbe& p) const
 {
   std::vector<Layer> translucent;
-  Covered behind = this->Behind;
+  // Transparent: black with no coverage.
+  Covered behind = this->Background ? Covered{ *this->Background, 1 } : Covered{ { 0, 0, 0 }, 0 };
   for (const PictureTriangles::Hit& hit : this->Triangles.Through(p.At.X + 0.5, p.At.Y + 0.5))
   {
     PixelProbe layer = this->Scene;
@@ -213,9 +208,10 @@ void PixelProber::Composite(PixelProbe& p) const
   {
     PixelProbe::Layer& l = p.Layers[k];
     const bool opaque = l.Opacity >= 1;
-    if (!opaque && p.Peels > 0 && k >= static_cast<std::size_t>(p.Peels))
+    l.LeftOut = !opaque && p.Peels > 0 && k >= static_cast<std::size_t>(p.Peels);
+    if (l.LeftOut)
     {
-      continue; // left out: adds nothing
+      continue; // adds nothing
     }
     for (int c = 0; c < 3; ++c)
     {

@@ -89,6 +89,7 @@ struct PixelProbe
     // layer (the opaque one, I times them), 0 beyond --peels; these and the
     // background times every layer's (1 - a) sum to the oracle.
     Rgb Adds{};
+    bool LeftOut = false; // beyond --peels
   };
   std::vector<Layer> Layers;
   int Peels = 0;
@@ -129,8 +130,8 @@ private:
   PixelProbe Scene; // what every pixel shares
   IlluminationInputs In;
   Fog Fogging;
-  bool Translucent = false; // a part drawn has a < 1
-  Covered Behind;           // the background, as Composite takes it
+  bool Translucent = false;      // a part drawn has a < 1, or fog takes coverage away
+  std::optional<Rgb> Background; // none where it is transparent
   PictureTriangles Triangles;
   std::unique_ptr<PictureElements> Elements;    // drawn as edges or points
   int ElementPixels = 1;                        // the lines' width or the points' size

@@ -84,14 +84,13 @@ void AddLayers(Lines& out, const PixelProbe& p)
   for (std::size_t k = 0; k < p.Layers.size(); ++k)
   {
     const PixelProbe::Layer& l = p.Layers[k];
-    const bool left = p.Peels > 0 && k >= static_cast<std::size_t>(p.Peels) && l.Opacity < 1;
     out.Add("  ",
       std::to_string(k + 1) + ": triangle " + std::to_string(l.Triangle) + " (part " +
         std::to_string(l.Part) + (l.Front ? "" : ", back face") + ") at depth " +
         ProbeNumber(l.Depth) + ", a = " + ProbeNumber(l.Opacity) + ", I = " + ProbeTriple(l.Color) +
         ", adds " + ProbeTriple(l.Adds),
       l.Opacity >= 1 ? "opaque: what lies behind"
-        : left       ? "beyond --peels: left out"
+        : l.LeftOut  ? "beyond --peels: left out"
                      : "");
   }
   const Covered& c = *p.Composited;

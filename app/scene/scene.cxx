@@ -152,8 +152,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
-    drawn.Shading->SetFog(options.Fogging,
-      options.TransparentBackground ? std::nullopt : std::optional<Rgb>(options.Background));
+    drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)

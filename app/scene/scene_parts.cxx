@@ -175,6 +175,12 @@ std::vector<ScenePart> SceneParts(
   return parts;
 }
 
+bool AnyTranslucent(const std::vector<ScenePart>& parts)
+{
+  return std::any_of(parts.begin(), parts.end(),
+    [](const ScenePart& part) { return part.Triangles > 0 && part.Surface.Translucency < 1; });
+}
+
 vtkSmartPointer<vtkPolyData> TrianglesOfParts(vtkPolyData* mesh, const std::vector<int>& parts)
 {
   const std::vector<int> cells = PartOfCells(mesh);

@@ -75,6 +75,9 @@ struct SceneImages
 std::vector<ScenePart> SceneParts(
   const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images = {});
 
+/** A part with triangles has a < 1: the picture is composited in depth order. */
+bool AnyTranslucent(const std::vector<ScenePart>& parts);
+
 /** The part of each of mesh's cells, by cell index: all 0 for a mesh without parts. */
 std::vector<int> PartOfCells(vtkPolyData* mesh);
 

@@ -18,6 +18,7 @@
 #include <QGroupBox>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -54,6 +55,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , MaterialRow(new QComboBox(this))
   , Ns(new SliderEdit(SliderEdit::Shininess(), this))
   , Opacity(new SliderEdit(SliderEdit::Opacity(), this))
+  , Peels(new QSpinBox(this))
   , AmbientLight(new ColorEdit("Ia", this))
   , Attenuation(new TripleEdit("attenuation", { "c0", "c1", "c2" }, 0, 1e6, this))
   , Fogging(new FogEdit(this))
@@ -68,6 +70,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   this->MaterialRow->setObjectName("material");
   this->Ns->setObjectName("ns");
   this->Opacity->setObjectName("a");
+  this->Peels->setObjectName("peels");
   this->LightChoice->setObjectName("lights");
   this->NormalsChoice->setObjectName("normals");
   this->FeatureAngle->setObjectName("feature angle");
@@ -162,6 +165,14 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   material->addRow("a", this->Opacity);
   this->Opacity->Edited = [this](double a)
   { this->Engine.Edit([a](ViewState& s) { s.Scene.Translucency = a; }); };
+  // --peels: the nearest layers kept, to see what a limit loses and saves.
+  this->Peels->setRange(0, MaxPeels);
+  this->Peels->setSpecialValueText("every layer");
+  this->Peels->setKeyboardTracking(false);
+  this->Peels->setToolTip("the nearest translucent layers drawn at each pixel");
+  material->addRow("peels", this->Peels);
+  QObject::connect(this->Peels, QOverload<int>::of(&QSpinBox::valueChanged), this,
+    [this](int peels) { this->Engine.Edit([peels](ViewState& s) { s.Scene.Peels = peels; }); });
 
   QFormLayout* light = group("Light");
   light->addRow("Ia", this->AmbientLight);
@@ -307,7 +318,8 @@ void ControlPanel::Show()
   const Material m = s.EffectiveMaterial();
   const QSignalBlocker quiet[] = { QSignalBlocker(this->Rule), QSignalBlocker(this->Model),
     QSignalBlocker(this->MaterialRow), QSignalBlocker(this->LightChoice),
-    QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle) };
+    QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle),
+    QSignalBlocker(this->Peels) };
   this->Rule->setCurrentIndex(static_cast<int>(s.ShadingRule));
   this->Model->setCurrentIndex(static_cast<int>(s.ReflectionModel));
   this->Drawn->Set(s.Drawn, s.LineWidth, s.PointSize);
@@ -322,6 +334,7 @@ void ControlPanel::Show()
   this->Coefficients[2]->SetColor(m.Ks);
   this->Ns->SetValue(m.Ns);
   this->Opacity->SetValue(m.Translucency);
+  this->Peels->setValue(s.Peels);
   this->AmbientLight->SetColor(s.Ambient);
   this->Attenuation->SetValue(s.Attenuation);
   this->Fogging->SetFog(s.Fogging);

@@ -15,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QSpinBox;
 
 namespace shadelab
 {
@@ -44,6 +45,7 @@ private:
   std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks
   SliderEdit* Ns;
   SliderEdit* Opacity; // a
+  QSpinBox* Peels;     // --peels: 0, every layer
   ColorEdit* AmbientLight;
   TripleEdit* Attenuation; // the scene's C0, C1, C2
   FogEdit* Fogging;

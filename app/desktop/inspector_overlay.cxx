@@ -90,6 +90,10 @@ void Inspector::UpdateHud()
   if (m.Translucency < 1)
   {
     material << ", a " << Fixed(m.Translucency, 2);
+    if (s.Peels > 0)
+    {
+      material << ", " << s.Peels << (s.Peels == 1 ? " peel" : " peels");
+    }
   }
   material << ")";
   // Parts that keep the file's materials: the default above is not all there is.

@@ -1,10 +1,10 @@
 #include "probe/pixel_probe.h"
 
 #include "scene/scene.h"
+#include "shadelabMeshTriangles.h"
 #include "shadelabTriangleMesh.h"
 
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -13,36 +13,6 @@
 
 namespace shadelab
 {
-namespace
-{
-std::vector<Vec3> PointsOf(vtkPolyData* mesh)
-{
-  std::vector<Vec3> points(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, points[i].data());
-  }
-  return points;
-}
-
-// The mesh's triangles in cell order. shadelab's readers give triangles
-// only; any other cell stands as point 0, which no ray meets, so that the
-// indices stay the cells'.
-std::vector<TriangleCorners> TrianglesOf(vtkPolyData* mesh)
-{
-  std::vector<TriangleCorners> triangles;
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    triangles.push_back(
-      n == 3 ? TriangleCorners{ ids[0], ids[1], ids[2] } : TriangleCorners{ 0, 0, 0 });
-  }
-  return triangles;
-}
-}
-
 PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
   ImageSize size, const SceneImages& images)
   : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))

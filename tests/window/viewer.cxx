@@ -130,18 +130,35 @@ Viewer::Viewer(const std::vector<std::string>& args, const std::string& size, rl
     execv(argv[0], argv.data());
     _exit(127);
   }
-  // The window exists once xdotool finds it by its title.
+  // The window exists once xdotool finds it by its title. xdotool gives up
+  // at once when a window goes while it walks the tree (BadWindow: the last
+  // test's viewer closing), so it searches again until the program exits
+  // or a minute has passed.
   const std::string search =
     "timeout 60 xdotool search --sync --name '^" + this->Title + "$' 2>/dev/null | head -1";
-  FILE* found = popen(search.c_str(), "r");
-  char line[64] = {};
-  if (found && fgets(line, sizeof line, found))
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  const auto running = [this]
   {
-    this->Window = std::string(line, std::strcspn(line, "\n"));
-  }
-  if (found)
+    siginfo_t info{}; // WNOWAIT: Wait() still collects its status
+    return waitid(P_PID, static_cast<id_t>(this->Pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+      info.si_pid == 0;
+  };
+  while (this->Window.empty() && std::chrono::steady_clock::now() < deadline && running())
   {
-    pclose(found);
+    FILE* found = popen(search.c_str(), "r");
+    char line[64] = {};
+    if (found && fgets(line, sizeof line, found))
+    {
+      this->Window = std::string(line, std::strcspn(line, "\n"));
+    }
+    if (found)
+    {
+      pclose(found);
+    }
+    if (this->Window.empty())
+    {
+      std::this_thread::sleep_for(100ms);
+    }
   }
 }
 

@@ -45,9 +45,7 @@ struct ShadowRay
 
 bool Meets(const RayScene& scene, std::int64_t t, const ShadowRay& r)
 {
-  const TriangleCorners& c = scene.GetTriangles()[t];
-  const std::vector<Vec3>& p = scene.GetPoints();
-  const TriangleHit h = IntersectTriangle(r.Cast, p[c[0]], p[c[1]], p[c[2]]);
+  const TriangleHit h = scene.Intersect(r.Cast, t);
   return h.Inside && h.T <= r.Distance;
 }
 

@@ -205,15 +205,19 @@ void RayScene::Cast(const Ray& ray, double tMin, double tMax,
   }
 }
 
+TriangleHit RayScene::Intersect(const Ray& ray, std::int64_t t) const
+{
+  const TriangleCorners& c = this->Triangles[t];
+  return IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
+}
+
 RayScene::Hit RayScene::First(const Ray& ray, double tMin, double tMax) const
 {
   Hit first;
   first.T = tMax;
   const std::function<double(std::int64_t)> test = [&](std::int64_t t)
   {
-    const TriangleCorners& c = this->Triangles[t];
-    const TriangleHit h =
-      IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
+    const TriangleHit h = this->Intersect(ray, t);
     // Nearer, or as near and earlier in the mesh: the order does not depend
     // on the order Embree visits the candidates in.
     if (h.Inside && h.T > tMin &&
@@ -236,9 +240,7 @@ bool RayScene::Blocked(const Ray& ray, double tMin, double tMax) const
   bool blocked = false;
   const std::function<double(std::int64_t)> test = [&](std::int64_t t)
   {
-    const TriangleCorners& c = this->Triangles[t];
-    const TriangleHit h =
-      IntersectTriangle(ray, this->Points[c[0]], this->Points[c[1]], this->Points[c[2]]);
+    const TriangleHit h = this->Intersect(ray, t);
     blocked = blocked || (h.Inside && h.T > tMin && h.T <= tMax);
     return blocked ? -HUGE_VAL : tMax;
   };

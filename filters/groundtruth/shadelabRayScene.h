@@ -50,6 +50,9 @@ public:
    */
   Hit First(const Ray& ray, double tMin = 0, double tMax = HUGE_VAL) const;
 
+  /** IntersectTriangle of ray with the mesh's triangle t: the double test behind every answer. */
+  TriangleHit Intersect(const Ray& ray, std::int64_t t) const;
+
   /** Whether ray meets any triangle with T in (tMin, tMax]. */
   bool Blocked(const Ray& ray, double tMin = 0, double tMax = HUGE_VAL) const;
 

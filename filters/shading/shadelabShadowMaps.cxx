@@ -13,12 +13,11 @@ const CubeFace CubeFaces[6] = { { { 1, 0, 0 }, { 0, -1, 0 } }, { { -1, 0, 0 }, {
   { { 0, 1, 0 }, { 0, 0, 1 } }, { { 0, -1, 0 }, { 0, 0, -1 } }, { { 0, 0, 1 }, { 0, -1, 0 } },
   { { 0, 0, -1 }, { 0, -1, 0 } } };
 
-Vec3 CubeTexelDirection(int face, int i, int j, int size)
+Vec3 CubeDirection(int face, double x, double y, int size)
 {
   const CubeFace& f = CubeFaces[face];
   const Vec3 right = cross(f.Forward, f.Up);
-  const double x = (i + 0.5) / size * 2 - 1, y = (j + 0.5) / size * 2 - 1;
-  return normalize(f.Forward + x * right + y * f.Up);
+  return normalize(f.Forward + (x / size * 2 - 1) * right + (y / size * 2 - 1) * f.Up);
 }
 
 namespace

@@ -26,10 +26,11 @@ struct CubeFace
 extern const CubeFace CubeFaces[6];
 
 /**
- * The unit direction through texel (i, j) of face f's centre, i from the
- * face's left, j from its bottom, as OpenGL's cube map lookup selects it.
+ * The unit direction through point (x, y) of face f, in texels from the
+ * face's left and bottom (texel (i, j)'s centre is i + 0.5, j + 0.5), as
+ * OpenGL's cube map lookup selects it.
  */
-Vec3 CubeTexelDirection(int face, int i, int j, int size);
+Vec3 CubeDirection(int face, double x, double y, int size);
 
 class PointShadowMap
 {

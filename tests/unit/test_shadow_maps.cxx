@@ -138,14 +138,12 @@ TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
     {
       for (int i = 0; i < size; ++i)
       {
-        const RayScene::Hit hit = rays.First({ light, CubeTexelDirection(f, i, j, size) });
+        const RayScene::Hit hit = rays.First({ light, CubeDirection(f, i + 0.5, j + 0.5, size) });
         bool stable = true;
         for (const auto& [di, dj] :
           { std::pair{ 1e-4, 0.0 }, { -1e-4, 0.0 }, { 0.0, 1e-4 }, { 0.0, -1e-4 } })
         {
-          const CubeFace& face = CubeFaces[f];
-          const double x = (i + 0.5 + di) / size * 2 - 1, y = (j + 0.5 + dj) / size * 2 - 1;
-          const Vec3 d = normalize(face.Forward + x * cross(face.Forward, face.Up) + y * face.Up);
+          const Vec3 d = CubeDirection(f, i + 0.5 + di, j + 0.5 + dj, size);
           stable = stable && rays.First({ light, d }).Triangle == hit.Triangle;
         }
         if (!stable)
@@ -177,7 +175,7 @@ TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
     {
       for (int i = 0; i < size; ++i)
       {
-        directions.push_back(CubeTexelDirection(f, i, j, size));
+        directions.push_back(CubeDirection(f, i + 0.5, j + 0.5, size));
       }
     }
     EXPECT_EQ(LookUp(map, directions), map.ReadFace(f)) << "face " << f;

@@ -50,6 +50,45 @@ float shadelabAttenuation(vec3 c, float d)
 }
 )glsl";
 
+// Light $'s shadow test at P lit with N.L: whether nothing lies nearer to
+// the light than P in its map, within the bias (shadelabShadowMaps.h):
+// x*(d + |P|) for float's roundings, and the slope term y*tan(angle of
+// incidence), the tangent at most z, for a receiver that slopes across the
+// texel; w, an orthographic map's size in texels. Point and spot lights:
+// the distance from the light, in the cube map along P - light.
+const char* const CubeShadowSource = R"glsl(uniform samplerCube shadelabShadowMap$;
+uniform mat4 shadelabShadowFrame$; // view coordinates to the light's, axes the world's
+uniform vec4 shadelabShadowBias$;
+bool shadelabShadowLit$(vec3 P, float NdotL)
+{
+  vec3 q = (shadelabShadowFrame$ * vec4(P, 1.0)).xyz;
+  float d = length(q);
+  vec4 b = shadelabShadowBias$;
+  float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
+  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * slope; // shadelab: shadow
+}
+)glsl";
+
+// Directional lights: the map covers the mesh across the light's
+// direction, q.xy in [0, 1] over it, q.z the depth along the direction;
+// beyond it nothing casts.
+const char* const OrthographicShadowSource = R"glsl(uniform sampler2D shadelabShadowMap$;
+uniform mat4 shadelabShadowFrame$; // view coordinates to the map's
+uniform vec4 shadelabShadowBias$;
+bool shadelabShadowLit$(vec3 P, float NdotL)
+{
+  vec3 q = (shadelabShadowFrame$ * vec4(P, 1.0)).xyz;
+  vec4 b = shadelabShadowBias$;
+  ivec2 texel = ivec2(floor(q.xy * b.w));
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(int(b.w)))))
+  {
+    return true;
+  }
+  float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
+  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * slope; // shadelab: shadow
+}
+)glsl";
+
 // Shared by the per-scene and the all-features code: the constants of the
 // oracle's guards, its SpecularFalloff, and the view direction.
 const char* const GuardSource = R"glsl(const float shadelabTinyLength = 1e-20;
@@ -211,6 +250,14 @@ std::string DeclarationsSource(const ShaderFeatures& f)
   {
     s += FillGlsl(AttenuationSource, std::to_string(f.Lights.size()));
   }
+  for (std::size_t i = 0; i < f.Shadows.size(); ++i)
+  {
+    if (f.Shadows[i])
+    {
+      s += FillGlsl(GeometryOf(f.Lights[i]).Position ? CubeShadowSource : OrthographicShadowSource,
+        std::to_string(i));
+    }
+  }
   return s + GuardSource;
 }
 
@@ -241,7 +288,8 @@ const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N -
 // Light i's term, unrolled: its kind's direction, distance attenuation
 // (with `attenuation`), spot fall-off and guard;
 // apart, its diffuse and specular parts added to D and S.
-std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenuation, bool apart)
+std::string LightTermSource(
+  size_t i, LightKind kind, bool specular, bool attenuation, bool shadows, bool apart)
 {
   const std::string index = std::to_string(i);
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
@@ -277,10 +325,13 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenu
       index);
     guard += FillGlsl("cosAngle$ >= shadelabLightCosCutoff[$] && ", index);
   }
+  // Whether the light reaches P: read where it would add a term.
+  guard += "NdotL > shadelabGrazingLimit" +
+    (shadows ? FillGlsl(" && shadelabShadowLit$(P, NdotL)", index) : std::string());
   if (apart)
   {
     s += FillGlsl(R"glsl(  NdotL = dot(N, L);
-  if ($NdotL > shadelabGrazingLimit)
+  if ($)
   {
     D += Il * (NdotL * shadelabKd); // shadelab: diffuse
 )glsl",
@@ -297,7 +348,7 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenu
     return s + "  }\n";
   }
   s += FillGlsl(R"glsl(  NdotL = dot(N, L);
-  if ($NdotL > shadelabGrazingLimit)
+  if ($)
   {
     vec3 term = NdotL * shadelabKd; // shadelab: diffuse
 )glsl",
@@ -355,7 +406,8 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   }
   for (size_t i = 0; i < f.Lights.size(); ++i)
   {
-    s += LightTermSource(i, f.Lights[i], f.Specular, f.Attenuation, apart);
+    s += LightTermSource(
+      i, f.Lights[i], f.Specular, f.Attenuation, i < f.Shadows.size() && f.Shadows[i], apart);
   }
   return s + (apart ? "}\n" : R"glsl(  return I;
 }

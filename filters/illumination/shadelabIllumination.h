@@ -110,7 +110,16 @@ struct Light
   // the light in world units. Its own coefficients; none: the scene's
   // (EffectiveLights), for this library NoAttenuation.
   std::optional<Vec3> Attenuation;
+  // Whether it casts shadows: its own choice; none: the scene's
+  // (EffectiveLights), for this library none.
+  std::optional<bool> Shadows;
 };
+
+/** Whether the light casts shadows (its own Shadows, resolved). */
+inline bool CastsShadows(const Light& light)
+{
+  return light.Shadows.value_or(false);
+}
 
 /** C0, C1, C2 = 1, 0, 0: no attenuation, and no code for it. */
 constexpr Vec3 NoAttenuation{ 1, 0, 0 };

@@ -11,6 +11,9 @@ const char* const VertexKdAttributeName = "shadelabVertexKd";
 const char* const TextureCoordinateAttributeName = "shadelabTCoord";
 const char* const TextureSamplerName = "shadelabTexture";
 const char* const TermMarker = "// shadelab: ";
+const char* const ShadowMapSamplerName = "shadelabShadowMap";
+const char* const ShadowFrameName = "shadelabShadowFrame";
+const char* const ShadowBiasName = "shadelabShadowBias";
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
@@ -19,7 +22,8 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     this->Translucent == o.Translucent && this->FogTowardsTransparent == o.FogTowardsTransparent &&
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
-    this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines;
+    this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines &&
+    this->Shadows == o.Shadows;
 }
 
 namespace

@@ -73,6 +73,12 @@ struct ShaderFeatures
   // it wins the depth test (VTK's own offset needs its global coincident
   // mode, which would change every scene's code).
   bool BehindLines = false;
+  // Per light (empty: none), whether it casts shadows: the light adds its
+  // terms only where its shadow map says nothing lies nearer to it
+  // (shadelabShadowLit, vtkShadelabShadowMaps), tested at the point the
+  // rule lights (per fragment, per vertex, at the provoking vertex). Point
+  // and spot lights read a cube map, directional ones an orthographic map.
+  std::vector<bool> Shadows;
 
   bool Textured() const
   {
@@ -111,6 +117,13 @@ extern const char* const VertexKdAttributeName;
 /** The vertex attribute (s, t) and the sampler that KdTexture and KaTexture read. */
 extern const char* const TextureCoordinateAttributeName;
 extern const char* const TextureSamplerName;
+/**
+ * Light i's shadow: its map's sampler, the matrix from view coordinates to
+ * the map's, and its bias (shadelabShadowMaps.h), each name followed by i.
+ */
+extern const char* const ShadowMapSamplerName;
+extern const char* const ShadowFrameName;
+extern const char* const ShadowBiasName;
 /**
  * The comment that ends each generated line computing a term of the
  * equation, followed by the terms' names, comma-separated ("ambient",

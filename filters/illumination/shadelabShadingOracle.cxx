@@ -86,9 +86,10 @@ double SpecularD(const IlluminationInputs& in, const Vec3& N, const Vec3& V, Lig
 }
 
 // One light's terms at P, lit with unit normal N seen along V.
-LightTerms LightTermsAt(const IlluminationInputs& in, const FrameLight& light, const Vec3& P,
-  const Vec3& N, const Vec3& V)
+LightTerms LightTermsAt(
+  const IlluminationInputs& in, std::size_t l, const Vec3& P, const Vec3& N, const Vec3& V)
 {
+  const FrameLight& light = in.Lights[l];
   const Material& m = in.Surface;
   LightTerms t;
   LightAt(light, P, t);
@@ -96,6 +97,10 @@ LightTerms LightTermsAt(const IlluminationInputs& in, const FrameLight& light, c
   const double d = SpecularD(in, N, V, t);
   // "N.L <= 0": no diffuse and, by the lecture's cases, no specular.
   t.Lit = t.Reaches && t.NdotL > GrazingLimit;
+  // The shadow ray only where the light would add a term, as the shaders
+  // read their maps.
+  t.Shadowed = t.Lit && light.Shadows && in.Reaches && !in.Reaches(l, P, N);
+  t.Lit = t.Lit && !t.Shadowed;
   t.Specular = t.Lit && d >= 0;
   if (t.Lit)
   {
@@ -127,6 +132,7 @@ FrameLight ToFrame(const Light& light, const double r[3][3], const Vec3& t)
   f.Color = light.Color;
   f.CosCutoff = std::cos(light.HalfAngleDeg * 3.14159265358979323846 / 180);
   f.Exponent = light.Exponent;
+  f.Shadows = CastsShadows(light);
   if (Attenuated(light))
   {
     f.Attenuation = *light.Attenuation;
@@ -175,9 +181,9 @@ IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, c
     const double len = length(toEye);
     terms.V = len > TinyLength ? (1 / len) * toEye : Vec3{ 0, 0, 0 };
   }
-  for (const FrameLight& light : in.Lights)
+  for (std::size_t l = 0; l < in.Lights.size(); ++l)
   {
-    terms.Lights.push_back(LightTermsAt(in, light, P, N, terms.V));
+    terms.Lights.push_back(LightTermsAt(in, l, P, N, terms.V));
   }
   return terms;
 }

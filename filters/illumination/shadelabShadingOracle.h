@@ -12,6 +12,8 @@
 #include "shadelabIllumination.h"
 #include "shadelabTexture.h"
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace shadelab
@@ -26,6 +28,7 @@ struct FrameLight
   double CosCutoff = 0;             // spot: cos(half-angle)
   double Exponent = 0;              // spot
   Vec3 Attenuation = NoAttenuation; // point, spot: C0, C1, C2
+  bool Shadows = false;             // it casts shadows: IlluminationInputs::Reaches decides
 };
 
 /** Everything the equation needs besides the surface point. */
@@ -41,6 +44,11 @@ struct IlluminationInputs
   bool Orthographic = false;
   Vec3 Eye{};                     // perspective: the camera position
   Vec3 ViewDirection{ 0, 0, -1 }; // orthographic: unit, the way the camera looks
+  // Shadows: whether light l (of Lights, casting shadows) reaches point P
+  // lit with normal N, nothing in between (the shadow ray,
+  // shadelabRayScene.h's LightReaches, in the caller's frame); asked only
+  // where the light would add a term. None: every light reaches.
+  std::function<bool(std::size_t l, const Vec3& P, const Vec3& N)> Reaches;
 };
 
 /** Moves lights into the computation's frame (p' = R p + t, d' = R d). */
@@ -70,7 +78,11 @@ struct LightTerms
   double Attenuation = 1; // point, spot: 1 / (C0 + C1*d + C2*d^2), d the Distance
   Rgb Il{};               // its colour as it reaches P: the colour times SpotFactor and Attenuation
   double NdotL = 0;
-  bool Lit = false; // N.L > 0 (taken as N.L > 1e-5, see Illuminate): it adds a diffuse term
+  // It casts shadows, would light P (Reaches, N.L > 0), and something lies
+  // between: it adds neither diffuse nor specular.
+  bool Shadowed = false;
+  bool Lit =
+    false; // N.L > 0 (taken as N.L > 1e-5, see Illuminate), not Shadowed: it adds a diffuse term
   // Blinn-Phong: H = normalize(L + V), or 0 where L = -V leaves it undefined;
   // Phong: R = 2(N.L)N - L.
   Vec3 HR{};

@@ -50,6 +50,7 @@ IlluminationTerms MixTerms(
     LightTerms m;
     m.Reaches = light(0).Reaches || light(1).Reaches || light(2).Reaches;
     m.Lit = light(0).Lit || light(1).Lit || light(2).Lit;
+    m.Shadowed = light(0).Shadowed || light(1).Shadowed || light(2).Shadowed;
     m.Specular = light(0).Specular || light(1).Specular || light(2).Specular;
     m.L = Mix<Vec3>(w, [&](int k) { return light(k).L; });
     m.HR = Mix<Vec3>(w, [&](int k) { return light(k).HR; });

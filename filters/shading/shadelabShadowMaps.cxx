@@ -4,7 +4,9 @@
 
 #include <vtk_glew.h>
 
+#include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <string>
 
 namespace shadelab
@@ -22,22 +24,33 @@ Vec3 CubeDirection(int face, double x, double y, int size)
 
 namespace
 {
-// The casters' program: each vertex relative to the light, the fragment's
-// distance from it.
+// The casters' program: each vertex relative to the map's origin; the
+// fragment's distance from the light (radial, a cube) or its depth along
+// the axis (an orthographic map).
 const char* const CasterVertex = "#version 150\n"
                                  "in vec3 relative;\n"
                                  "uniform mat4 faceProjection;\n"
-                                 "out vec3 fromLight;\n"
+                                 "out vec3 fromOrigin;\n"
                                  "void main()\n"
                                  "{\n"
-                                 "  fromLight = relative;\n"
+                                 "  fromOrigin = relative;\n"
                                  "  gl_Position = faceProjection * vec4(relative, 1.0);\n"
                                  "}\n";
-const char* const CasterFragment =
-  "#version 150\n"
-  "in vec3 fromLight;\n"
-  "out vec4 distance;\n"
-  "void main() { distance = vec4(length(fromLight), 0.0, 0.0, 1.0); }\n";
+const char* const CasterFragment = "#version 150\n"
+                                   "in vec3 fromOrigin;\n"
+                                   "uniform vec3 axis;\n"
+                                   "uniform int radial;\n"
+                                   "out vec4 distance;\n"
+                                   "void main()\n"
+                                   "{\n"
+                                   "  float d = radial == 1 ? length(fromOrigin) : dot(fromOrigin, "
+                                   "axis);\n"
+                                   "  distance = vec4(d, 0.0, 0.0, 1.0);\n"
+                                   "}\n";
+// The bias's parts (the header's comment).
+constexpr double RoundingBias = 1e-5;
+constexpr double SlopeTexels = 2;
+constexpr double SlopeLimit = 50;
 
 std::string Compile(GLuint shader, const char* source)
 {
@@ -72,14 +85,81 @@ void FaceProjection(int face, float m[16])
     m[12 + r] = 0;
   }
 }
+
+// A unit vector across `axis` (unit): the world axis least along it, made
+// perpendicular.
+Vec3 Across(const Vec3& axis)
+{
+  int least = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (std::abs(axis[k]) < std::abs(axis[least]))
+    {
+      least = k;
+    }
+  }
+  Vec3 e{ 0, 0, 0 };
+  e[least] = 1;
+  return normalize(cross(axis, e));
 }
 
-PointShadowMap::~PointShadowMap() = default;
+// The orthographic fit: a square across the light's direction that covers
+// every point with a texel to spare at each side, its depth from a plane
+// before the nearest point (1% of the extent in front); rows of the
+// world-to-map matrix (q.x, q.y across in [0, 1], q.z the depth) and the
+// square's side.
+struct OrthographicFit
+{
+  Vec3 Right, Up, Axis, Origin;
+  double Side = 1;
+};
 
-std::string PointShadowMap::Bake(const std::vector<Vec3>& points,
-  const std::vector<TriangleCorners>& triangles, const Vec3& light, int size)
+OrthographicFit FitAcross(const std::vector<Vec3>& points, const Vec3& direction, int size)
+{
+  OrthographicFit fit;
+  fit.Axis = normalize(direction);
+  fit.Right = Across(fit.Axis);
+  fit.Up = cross(fit.Axis, fit.Right);
+  Vec3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const Vec3& p : points)
+  {
+    const Vec3 q{ dot(p, fit.Right), dot(p, fit.Up), dot(p, fit.Axis) };
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], q[k]);
+      hi[k] = std::max(hi[k], q[k]);
+    }
+  }
+  if (points.empty())
+  {
+    lo = hi = Vec3{ 0, 0, 0 };
+  }
+  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  const double across = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  fit.Side = across > 0 ? across * size / (size - 2.0) : std::max(extent, 1.0);
+  const double pad0 = (fit.Side - (hi[0] - lo[0])) / 2, pad1 = (fit.Side - (hi[1] - lo[1])) / 2;
+  fit.Origin = (lo[0] - pad0) * fit.Right + (lo[1] - pad1) * fit.Up +
+    (lo[2] - 0.01 * std::max(extent, 1e-300)) * fit.Axis;
+  return fit;
+}
+}
+
+ShadowMap::~ShadowMap() = default;
+
+std::array<float, 4> ShadowMap::GetBias() const
+{
+  // Twice the texel's half diagonal: an angle (a cube face's widest
+  // texels, at its centre, span 2/size) or a length.
+  const double halfDiagonal = std::sqrt(2.0) / this->Size * (this->Cube ? 1 : this->Side / 2);
+  return { static_cast<float>(RoundingBias), static_cast<float>(SlopeTexels * halfDiagonal),
+    static_cast<float>(SlopeLimit), static_cast<float>(this->Size) };
+}
+
+std::string ShadowMap::Bake(const std::vector<Vec3>& points,
+  const std::vector<TriangleCorners>& triangles, const Light& light, int size)
 {
   this->Size = size;
+  this->Cube = GeometryOf(light.Kind).Position;
   if (!this->Program)
   {
     const GLuint vertex = glCreateShader(GL_VERTEX_SHADER);
@@ -100,19 +180,80 @@ std::string PointShadowMap::Bake(const std::vector<Vec3>& points,
     glGenVertexArrays(1, &this->VertexArray);
     glGenBuffers(1, &this->Buffer);
     glGenFramebuffers(1, &this->Framebuffer);
-    glGenTextures(1, &this->Texture);
   }
+  // A new texture for each bake: a cube and a 2D map cannot share a name.
+  if (this->Texture)
+  {
+    glDeleteTextures(1, &this->Texture);
+  }
+  glGenTextures(1, &this->Texture);
+
+  // The map's origin and matrices, in double.
+  Vec3 origin = light.Position, axis{ 0, 0, 0 };
+  std::array<double, 16>& m = this->WorldToMap;
+  float orthographic[16] = {};
+  if (this->Cube)
+  {
+    m = { 1, 0, 0, -origin[0], 0, 1, 0, -origin[1], 0, 0, 1, -origin[2], 0, 0, 0, 1 };
+  }
+  else
+  {
+    const OrthographicFit fit = FitAcross(points, light.Direction, size);
+    origin = fit.Origin;
+    axis = fit.Axis;
+    this->Side = fit.Side;
+    const Vec3 rows[3] = { (1 / fit.Side) * fit.Right, (1 / fit.Side) * fit.Up, fit.Axis };
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        m[r * 4 + c] = rows[r][c];
+        // Clip x, y = 2q - 1 of the vertex relative to the origin.
+        if (r < 2)
+        {
+          orthographic[c * 4 + r] = static_cast<float>(2 * rows[r][c]);
+        }
+      }
+      m[r * 4 + 3] = -dot(rows[r], origin);
+    }
+    m[12] = m[13] = m[14] = 0;
+    m[15] = 1;
+    orthographic[12] = orthographic[13] = -1;
+    orthographic[15] = 1;
+  }
+
   std::vector<float> relative;
   relative.reserve(triangles.size() * 9);
   for (const TriangleCorners& t : triangles)
   {
     for (const std::int64_t p : t)
     {
-      const Vec3 d = points[p] - light; // in double, then rounded once
+      const Vec3 d = points[p] - origin; // in double, then rounded once
       relative.insert(relative.end(),
         { static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2]) });
     }
   }
+  GLint program = 0, vertexArray = 0, drawFramebuffer = 0, readFramebuffer = 0, viewport[4],
+        arrayBuffer = 0, blendSource = 0, blendDestination = 0, blendSourceAlpha = 0,
+        blendDestinationAlpha = 0, blendEquation = 0, blendEquationAlpha = 0;
+  GLfloat clearColour[4];
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
+  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &arrayBuffer);
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_BLEND_SRC_RGB, &blendSource);
+  glGetIntegerv(GL_BLEND_DST_RGB, &blendDestination);
+  glGetIntegerv(GL_BLEND_SRC_ALPHA, &blendSourceAlpha);
+  glGetIntegerv(GL_BLEND_DST_ALPHA, &blendDestinationAlpha);
+  glGetIntegerv(GL_BLEND_EQUATION_RGB, &blendEquation);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &blendEquationAlpha);
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColour);
+  const GLboolean blend = glIsEnabled(GL_BLEND), depth = glIsEnabled(GL_DEPTH_TEST),
+                  scissor = glIsEnabled(GL_SCISSOR_TEST), cull = glIsEnabled(GL_CULL_FACE),
+                  clamp = glIsEnabled(GL_DEPTH_CLAMP);
+
   glBindVertexArray(this->VertexArray);
   glBindBuffer(GL_ARRAY_BUFFER, this->Buffer);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(relative.size() * sizeof(float)),
@@ -121,23 +262,26 @@ std::string PointShadowMap::Bake(const std::vector<Vec3>& points,
   glEnableVertexAttribArray(attribute);
   glVertexAttribPointer(attribute, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
 
-  glBindTexture(GL_TEXTURE_CUBE_MAP, this->Texture);
-  for (int f = 0; f < 6; ++f)
+  const GLenum target = this->Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+  GLint bound = 0;
+  glGetIntegerv(this->Cube ? GL_TEXTURE_BINDING_CUBE_MAP : GL_TEXTURE_BINDING_2D, &bound);
+  glBindTexture(target, this->Texture);
+  for (int f = 0; f < (this->Cube ? 6 : 1); ++f)
   {
-    glTexImage2D(
-      GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_R32F, size, size, 0, GL_RED, GL_FLOAT, nullptr);
+    glTexImage2D(this->Cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + f : GL_TEXTURE_2D, 0, GL_R32F, size,
+      size, 0, GL_RED, GL_FLOAT, nullptr);
   }
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(target, static_cast<GLuint>(bound));
 
-  GLint framebuffer = 0, viewport[4];
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  const GLboolean blend = glIsEnabled(GL_BLEND), depth = glIsEnabled(GL_DEPTH_TEST),
-                  scissor = glIsEnabled(GL_SCISSOR_TEST), cull = glIsEnabled(GL_CULL_FACE);
   glBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
   glUseProgram(this->Program);
+  glUniform1i(glGetUniformLocation(this->Program, "radial"), this->Cube ? 1 : 0);
+  const float axisF[3] = { static_cast<float>(axis[0]), static_cast<float>(axis[1]),
+    static_cast<float>(axis[2]) };
+  glUniform3fv(glGetUniformLocation(this->Program, "axis"), 1, axisF);
   glViewport(0, 0, size, size);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
@@ -149,44 +293,61 @@ std::string PointShadowMap::Bake(const std::vector<Vec3>& points,
   glBlendFunc(GL_ONE, GL_ONE);
   glClearColor(FLT_MAX, 0, 0, 0);
   std::string error;
-  for (int f = 0; f < 6; ++f)
+  for (int f = 0; f < (this->Cube ? 6 : 1); ++f)
   {
-    glFramebufferTexture2D(
-      GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, this->Texture, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+      this->Cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + f : GL_TEXTURE_2D, this->Texture, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     {
       error = "shadow map: the framebuffer is incomplete";
       break;
     }
     glClear(GL_COLOR_BUFFER_BIT);
-    float m[16];
-    FaceProjection(f, m);
-    glUniformMatrix4fv(glGetUniformLocation(this->Program, "faceProjection"), 1, GL_FALSE, m);
+    float projection[16];
+    if (this->Cube)
+    {
+      FaceProjection(f, projection);
+    }
+    else
+    {
+      std::copy(orthographic, orthographic + 16, projection);
+    }
+    glUniformMatrix4fv(
+      glGetUniformLocation(this->Program, "faceProjection"), 1, GL_FALSE, projection);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(relative.size() / 3));
   }
-  glBlendEquation(GL_FUNC_ADD);
-  glDisable(GL_DEPTH_CLAMP);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+  // Everything as it was: VTK keeps its own record of OpenGL's state.
+  glBlendEquationSeparate(
+    static_cast<GLenum>(blendEquation), static_cast<GLenum>(blendEquationAlpha));
+  glBlendFuncSeparate(static_cast<GLenum>(blendSource), static_cast<GLenum>(blendDestination),
+    static_cast<GLenum>(blendSourceAlpha), static_cast<GLenum>(blendDestinationAlpha));
+  glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
+  (clamp ? glEnable : glDisable)(GL_DEPTH_CLAMP);
   (blend ? glEnable : glDisable)(GL_BLEND);
   (depth ? glEnable : glDisable)(GL_DEPTH_TEST);
   (scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
   (cull ? glEnable : glDisable)(GL_CULL_FACE);
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-  glUseProgram(0);
-  glBindVertexArray(0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer));
+  glUseProgram(static_cast<GLuint>(program));
+  glBindVertexArray(static_cast<GLuint>(vertexArray));
+  glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(arrayBuffer));
   return error;
 }
 
-std::vector<float> PointShadowMap::ReadFace(int face) const
+std::vector<float> ShadowMap::ReadFace(int face) const
 {
   std::vector<float> texels(static_cast<std::size_t>(this->Size) * this->Size);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, this->Texture);
+  glBindTexture(this->Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, this->Texture);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RED, GL_FLOAT, texels.data());
+  glGetTexImage(this->Cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + face : GL_TEXTURE_2D, 0, GL_RED,
+    GL_FLOAT, texels.data());
   return texels;
 }
 
-void PointShadowMap::Release()
+void ShadowMap::Release()
 {
   if (this->Program)
   {

@@ -1,18 +1,17 @@
-// Shadow maps for hard shadows: a point light's distance to the nearest
-// surface in every direction, baked into an R32F cube map (one texel per
-// direction, nearest filtering, read with textureLod) in the current OpenGL
-// context. The triangles go to the GPU relative to the light, subtracted in
+// Shadow maps for hard shadows (--shadows): each light's distance to the
+// nearest surface, baked into R32F textures (one texel per direction,
+// nearest filtering, no interpolation) in the current OpenGL context. The
+// triangles go to the GPU relative to the map's origin, subtracted in
 // double, so a stored distance is within a few float roundings of the
 // oracle's ray (test_shadow_maps: 5.3e-7 relative). Drawn with MIN blending
 // and no depth buffer, without near or far planes (depth clamp).
-//
-// The first piece of shadows: spot and directional lights' maps, and the
-// generated shaders' test against them (--shadows), build on it.
 #ifndef shadelabShadowMaps_h
 #define shadelabShadowMaps_h
 
 #include "shadelabPixelRays.h"
 
+#include <array>
+#include <string>
 #include <vector>
 
 namespace shadelab
@@ -32,23 +31,53 @@ extern const CubeFace CubeFaces[6];
  */
 Vec3 CubeDirection(int face, double x, double y, int size);
 
-class PointShadowMap
+/**
+ * A light's shadow map: for a point or spot light, the distance from it to
+ * the nearest triangle in every direction, a cube map around it; for a
+ * directional light, the depth along its direction of the nearest triangle
+ * across a square that covers the mesh, an orthographic map. In the GLSL
+ * that reads it, shadelabShadowLit (shadelabIlluminateSource.cxx), a point
+ * P lit with N.L is lit when its own distance d is at most the texel's plus
+ * the bias, whose parts GetBias gives:
+ *   x*(d + |P|): float's roundings of the distances and of P in view
+ *     coordinates, relative to both (x = 1e-5);
+ *   y*(1 + min(tan(angle of incidence), z)), times d for a cube: a surface
+ *     that slopes across a texel is nearer at the texel's centre than at P
+ *     by up to tan times the texel's half diagonal (y is twice that, the
+ *     texel's angle for a cube, its side for an orthographic map); the 1
+ *     covers a normal that leans off the surface (gouraud's vertex
+ *     normals), z = 50 the grazing angles.
+ */
+class ShadowMap
 {
 public:
-  PointShadowMap() = default;
-  ~PointShadowMap();
-  PointShadowMap(const PointShadowMap&) = delete;
-  PointShadowMap& operator=(const PointShadowMap&) = delete;
+  ShadowMap() = default;
+  ~ShadowMap();
+  ShadowMap(const ShadowMap&) = delete;
+  ShadowMap& operator=(const ShadowMap&) = delete;
 
   /**
-   * Bakes the distances from light to the mesh's triangles into a size x
-   * size cube map, in the current context (which the caller makes current);
-   * an error text or "". Directions that meet no triangle hold FLT_MAX.
+   * Bakes light's map of the triangles (world coordinates), size x size
+   * texels a face, in the current OpenGL context (which the caller makes
+   * current); an error text or "". Texels that meet no triangle hold FLT_MAX.
    */
   std::string Bake(const std::vector<Vec3>& points, const std::vector<TriangleCorners>& triangles,
-    const Vec3& light, int size);
+    const Light& light, int size);
 
-  /** Face f's texels, rows bottom first (the current context). */
+  /** A cube map (point and spot lights), else a 2D one. */
+  bool IsCube() const { return this->Cube; }
+
+  /**
+   * World coordinates to the map's, row-major: a cube's are relative to the
+   * light (its axes the world's); an orthographic map's q.xy are in [0, 1]
+   * across it, q.z the depth along the direction.
+   */
+  const std::array<double, 16>& GetWorldToMap() const { return this->WorldToMap; }
+
+  /** The bias's x, y, z as the class comment says, and w the size. */
+  std::array<float, 4> GetBias() const;
+
+  /** Face f's texels (an orthographic map: its only one), rows bottom first. */
   std::vector<float> ReadFace(int face) const;
 
   unsigned int GetTexture() const { return this->Texture; }
@@ -60,6 +89,9 @@ public:
 private:
   unsigned int Texture = 0, Framebuffer = 0, Program = 0, Buffer = 0, VertexArray = 0;
   int Size = 0;
+  bool Cube = true;
+  std::array<double, 16> WorldToMap{};
+  double Side = 0; // an orthographic map's, in world units
 };
 }
 

@@ -1,4 +1,4 @@
-// A point light's shadow map against the oracle's rays: the distance each
+// Shadow maps against the oracle's rays: the distance each
 // texel stores is the distance the double ray through its centre travels to
 // the first triangle, to float precision, wherever the ray's answer is
 // stable (its neighbours a ten-thousandth of a texel away meet the same
@@ -25,7 +25,7 @@ namespace
 {
 // What OpenGL's cube-map lookup (textureLod, nearest) reads from map in
 // each direction, one float per direction: as the shaders will read it.
-std::vector<float> LookUp(const PointShadowMap& map, const std::vector<Vec3>& directions)
+std::vector<float> LookUp(const ShadowMap& map, const std::vector<Vec3>& directions)
 {
   const int n = static_cast<int>(directions.size());
   std::vector<float> packed;
@@ -125,10 +125,13 @@ TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
   std::vector<TriangleCorners> triangles;
   Scene(points, triangles);
   const RayScene rays(points, triangles);
-  const Vec3 light{ 0.5, -0.25, 4 };
+  Light point;
+  point.Position = { 0.5, -0.25, 4 };
+  const Vec3& light = point.Position;
   const int size = 64;
-  PointShadowMap map;
-  ASSERT_EQ(map.Bake(points, triangles, light, size), "");
+  ShadowMap map;
+  ASSERT_EQ(map.Bake(points, triangles, point, size), "");
+  ASSERT_TRUE(map.IsCube());
   int compared = 0, empty = 0, unstable = 0;
   double worst = 0;
   for (int f = 0; f < 6; ++f)
@@ -184,5 +187,93 @@ TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
     unstable, worst);
   EXPECT_GT(compared, 6 * size * size / 3);
   EXPECT_LT(unstable, 6 * size * size / 20);
+  map.Release();
+}
+
+// A directional light's orthographic map: texel (i, j) holds the depth
+// along the light's direction at which the double ray through its centre,
+// from the map's plane, meets the first triangle; the map covers the whole
+// mesh, so that no texel at its border meets one.
+TEST(ShadowMaps, AnOrthographicTexelHoldsTheDepthOfTheOraclesRay)
+{
+  HeadlessRenderer renderer;
+  ASSERT_EQ(renderer.Start(1, 1), "");
+  renderer.GetRenderer()->GetRenderWindow()->MakeCurrent();
+  std::vector<Vec3> points;
+  std::vector<TriangleCorners> triangles;
+  Scene(points, triangles);
+  const RayScene rays(points, triangles);
+  Light sun;
+  sun.Kind = LightKind::Directional;
+  sun.Direction = { 0.3, -0.2, -1 };
+  const int size = 64;
+  ShadowMap map;
+  ASSERT_EQ(map.Bake(points, triangles, sun, size), "");
+  ASSERT_FALSE(map.IsCube());
+  // Map coordinates back to the world: the matrix's rows are orthogonal.
+  const std::array<double, 16>& m = map.GetWorldToMap();
+  const auto world = [&m](const Vec3& q)
+  {
+    Vec3 p{ 0, 0, 0 };
+    for (int r = 0; r < 3; ++r)
+    {
+      const Vec3 row{ m[r * 4], m[r * 4 + 1], m[r * 4 + 2] };
+      p = p + ((q[r] - m[r * 4 + 3]) / dot(row, row)) * row;
+    }
+    return p;
+  };
+  const Vec3 axis = normalize(sun.Direction);
+  const std::vector<float> texels = map.ReadFace(0);
+  constexpr double Snap = 1.0 / 512;
+  int compared = 0, empty = 0, unstable = 0;
+  double worst = 0;
+  for (int j = 0; j < size; ++j)
+  {
+    for (int i = 0; i < size; ++i)
+    {
+      const auto ray = [&](double x, double y) {
+        return rays.First({ world({ x / size, y / size, 0 }), axis });
+      };
+      const RayScene::Hit hit = ray(i + 0.5, j + 0.5);
+      const bool border = i == 0 || j == 0 || i == size - 1 || j == size - 1;
+      // The rasteriser's sample lies within float's rounding of the centre:
+      // on a steep triangle the depth changes fast across it, so the
+      // neighbours' depths widen the bound.
+      bool stable = true;
+      double spread = 0;
+      for (const auto& [di, dj] :
+        { std::pair{ Snap, 0.0 }, { -Snap, 0.0 }, { 0.0, Snap }, { 0.0, -Snap } })
+      {
+        const RayScene::Hit near = ray(i + 0.5 + di, j + 0.5 + dj);
+        stable = stable && near.Triangle == hit.Triangle;
+        spread = std::max(spread, std::abs(near.T - hit.T));
+      }
+      if (border)
+      {
+        EXPECT_LT(hit.Triangle, 0) << "texel " << i << ", " << j << " at the border";
+      }
+      if (!stable)
+      {
+        ++unstable;
+        continue;
+      }
+      const float got = texels[static_cast<std::size_t>(j) * size + i];
+      if (hit.Triangle < 0)
+      {
+        ++empty;
+        EXPECT_EQ(got, FLT_MAX) << "texel " << i << ", " << j;
+        continue;
+      }
+      ++compared;
+      const double error = std::abs(got - hit.T) / hit.T;
+      worst = std::max(worst, error);
+      EXPECT_LE(error, 1e-6 + spread / hit.T)
+        << "texel " << i << ", " << j << ": " << got << " against " << hit.T;
+    }
+  }
+  std::printf("compared %d, empty %d, unstable %d, worst relative error %.3g\n", compared, empty,
+    unstable, worst);
+  EXPECT_GT(compared, size * size / 2);
+  EXPECT_LT(unstable, size * size / 10);
   map.Release();
 }

@@ -235,8 +235,21 @@ std::string RenderedSize(const SceneOptions& o, ImageSize& rendered)
   return {};
 }
 
-Light ParseLight(const std::string& spec)
+Light ParseLight(const std::string& whole)
 {
+  // SPEC[@C0,C1,C2][+shadows|+no-shadows]: its own choice of shadows last.
+  std::optional<bool> shadows;
+  std::string spec = whole;
+  for (const auto& [suffix, casts] : { std::pair{ "+shadows", true }, { "+no-shadows", false } })
+  {
+    const std::string_view s = suffix;
+    if (spec.size() > s.size() && spec.compare(spec.size() - s.size(), s.size(), s) == 0)
+    {
+      shadows = casts;
+      spec.resize(spec.size() - s.size());
+      break;
+    }
+  }
   // SPEC[@C0,C1,C2]: the light's own attenuation after the '@'.
   const auto at = spec.find('@');
   const std::string text = spec.substr(0, at);
@@ -284,6 +297,7 @@ Light ParseLight(const std::string& spec)
     }
     light.Attenuation = ParseAttenuation(spec.substr(at + 1));
   }
+  light.Shadows = shadows;
   return light;
 }
 

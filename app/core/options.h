@@ -128,6 +128,9 @@ struct NormalsSettings
   bool Orient = false;                // make the faces' orientation consistent first
 };
 
+/** --shadow-map-size's default: 2048 texels a side. */
+constexpr int DefaultShadowMapSize = 2048;
+
 /** Everything that decides what a picture shows. */
 struct SceneOptions
 {
@@ -154,6 +157,10 @@ struct SceneOptions
   // Point and spot lights' Il / (C0 + C1*d + C2*d^2) where a light has no
   // attenuation of its own (EffectiveLights); 1,0,0 is none.
   Vec3 Attenuation = NoAttenuation;
+  // --shadows: each light without a choice of its own (Light::Shadows)
+  // casts hard shadows, through maps of ShadowMapSize texels a side.
+  bool Shadows = false;
+  int ShadowMapSize = DefaultShadowMapSize;
   Fog Fogging; // --fog: none by default
   // --representation: the surface, or its edges or points lit by the same
   // rule (DrawnElements), as lines and squares this many pixels wide.
@@ -253,6 +260,7 @@ Vec3 ParseAttenuation(const std::string& text); // C0,C1,C2: none negative, not 
 Fog ParseFog(const std::string& text);
 ImageSize ParseSize(const std::string& text);
 Pixel ParsePixel(const std::string& text); // "X,Y", each a whole number >= 0
+// KIND:...[@C0,C1,C2][+shadows|+no-shadows]
 Light ParseLight(const std::string& text);
 double ParseNumber(const std::string& text);
 
@@ -271,6 +279,8 @@ constexpr int MaxLineWidth = 16;
 constexpr int MaxPointSize = 64;
 /** The most --peels a limit may give (more would be no limit for any mesh drawn). */
 constexpr int MaxPeels = 10000;
+/** The most --shadow-map-size takes: OpenGL's limit may be lower (checked as the maps are made). */
+constexpr int MaxShadowMapSize = 32768;
 
 /** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
 constexpr int MaxOrbitFrames = 3600;

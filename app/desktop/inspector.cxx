@@ -300,7 +300,7 @@ void Inspector::FollowCamera()
     return;
   }
   const std::vector<Light> lights =
-    WithAttenuation(CameraLights(this->State.Scene), this->State.Scene.Attenuation);
+    ResolvedLights(CameraLights(this->State.Scene), this->State.Scene);
   for (Slot& slot : this->Slots)
   {
     if (const BuiltScene* shown = slot.Scenes.GetShown())

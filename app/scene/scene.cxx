@@ -1,6 +1,8 @@
 #include "scene/scene.h"
 
 #include "scene/camera.h"
+#include "shadelabMeshTriangles.h"
+#include "shadelabShadowCasters.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabPolyDataMapper.h"
 #include "vtkShadelabShading.h"
@@ -23,14 +25,15 @@ bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh)
   return !options.OverridesKd() && mesh->GetPointData()->GetArray(ColorsArrayName);
 }
 
-std::vector<Light> WithAttenuation(std::vector<Light> lights, const Vec3& attenuation)
+std::vector<Light> ResolvedLights(std::vector<Light> lights, const SceneOptions& options)
 {
   for (Light& light : lights)
   {
     if (GeometryOf(light.Kind).Position)
     {
-      light.Attenuation = light.Attenuation.value_or(attenuation);
+      light.Attenuation = light.Attenuation.value_or(options.Attenuation);
     }
+    light.Shadows = light.Shadows.value_or(options.Shadows);
   }
   return lights;
 }
@@ -39,13 +42,12 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
 {
   if (!options.Lights.empty())
   {
-    return WithAttenuation(options.Lights, options.Attenuation);
+    return ResolvedLights(options.Lights, options);
   }
   Light atCamera; // the lecture: one white point light, usually at the viewpoint
   atCamera.Kind = LightKind::Point;
   atCamera.Position = cameraPosition;
-  atCamera.Attenuation = options.Attenuation;
-  return { atCamera };
+  return ResolvedLights({ atCamera }, options);
 }
 
 IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights)
@@ -133,7 +135,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
 {
   BuiltScene scene;
   scene.Mesh = mesh;
-  const std::vector<Light> resolved = WithAttenuation(lights, options.Attenuation);
+  const std::vector<Light> resolved = ResolvedLights(lights, options);
   const std::vector<ScenePart> parts = SceneParts(options, mesh, images);
   const std::vector<std::vector<int>> groups = PartsByLook(parts);
   // The same mesh, rule and grouping: every actor keeps its buffers and program.
@@ -142,6 +144,14 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     std::equal(groups.begin(), groups.end(), reuse->Drawn.begin(), reuse->Drawn.end(),
       [](const std::vector<int>& group, const DrawnParts& drawn) { return group == drawn.Parts; });
   scene.Images = images;
+  // Every triangle casts, whichever actor draws it (the actors draw the
+  // mesh where it is: world coordinates).
+  std::shared_ptr<ShadowCasters> casters;
+  if (std::any_of(resolved.begin(), resolved.end(), CastsShadows))
+  {
+    casters =
+      std::make_shared<ShadowCasters>(PointsOf(mesh), TrianglesOf(mesh), options.ShadowMapSize);
+  }
   for (std::size_t g = 0; g < groups.size(); ++g)
   {
     DrawnParts drawn;
@@ -154,6 +164,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
     drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);
+    drawn.Shading->SetShadows(casters);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {

@@ -70,12 +70,13 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
 bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh);
 
 /**
- * `lights` with each point and spot light's attenuation resolved: its own,
- * else `attenuation` (the scene's). Resolved lights stay as they are.
+ * `lights` with each point and spot light's attenuation and each light's
+ * shadows resolved: its own, else the scene's (options' Attenuation,
+ * Shadows). Resolved lights stay as they are.
  */
-std::vector<Light> WithAttenuation(std::vector<Light> lights, const Vec3& attenuation);
+std::vector<Light> ResolvedLights(std::vector<Light> lights, const SceneOptions& options);
 
-/** The lights the scene uses, resolved (WithAttenuation): the given ones, or the lecture's default.
+/** The lights the scene uses, resolved (ResolvedLights): the given ones, or the lecture's default.
  */
 std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& cameraPosition);
 

@@ -13,7 +13,7 @@ namespace
 using namespace scene_file;
 
 const std::vector<std::string> LightKeys{ "kind", "position", "direction", "color", "half_angle",
-  "exponent", "attenuation" };
+  "exponent", "attenuation", "shadows" };
 
 // A light's triples as --light writes them: the Triple kind's text.
 std::string Triple(const Vec3& v)
@@ -74,6 +74,15 @@ std::string LightText(const json& light, const std::string& path)
   {
     text += "@" + scene_file::Triple(light["attenuation"], path + ".attenuation");
   }
+  if (light.contains("shadows"))
+  {
+    if (!light["shadows"].is_boolean())
+    {
+      throw SceneError{ path + ".shadows",
+        "expected true or false, not " + Quoted(light["shadows"]) };
+    }
+    text += light["shadows"].get<bool>() ? "+shadows" : "+no-shadows";
+  }
   return text;
 }
 
@@ -110,7 +119,10 @@ nlohmann::ordered_json LightSchema()
             { "exponent", { { "type", "number" }, { "minimum", 0 } } },
             { "attenuation",
               { { "$ref", "#/$defs/attenuation" },
-                { "description", "Its own C0, C1, C2, instead of the scene's" } } } } },
+                { "description", "Its own C0, C1, C2, instead of the scene's" } } },
+            { "shadows",
+              { { "type", "boolean" },
+                { "description", "Whether it casts shadows, instead of the scene's" } } } } },
         { "required", { "kind" } }, { "additionalProperties", false } } } };
 }
 }
@@ -136,6 +148,10 @@ std::string LightArgument(const Light& light)
   if (light.Attenuation)
   {
     text += "@" + Triple(*light.Attenuation);
+  }
+  if (light.Shadows)
+  {
+    text += *light.Shadows ? "+shadows" : "+no-shadows";
   }
   return text;
 }
@@ -163,6 +179,10 @@ nlohmann::ordered_json LightJson(const Light& light, const char* halfAngleKey)
   {
     j["attenuation"] = *light.Attenuation;
   }
+  if (light.Shadows)
+  {
+    j["shadows"] = *light.Shadows;
+  }
   return j;
 }
 
@@ -176,7 +196,8 @@ Setting LightsSetting()
   s.ValueName = "SPEC";
   s.Help = "A light, repeatable: point:X,Y,Z[:R,G,B] | directional:DX,DY,DZ[:R,G,B] | "
            "spot:X,Y,Z:DX,DY,DZ:HALF_ANGLE_DEG[:EXPONENT[:R,G,B]], a point or spot light "
-           "followed by @C0,C1,C2 for its own attenuation (--attenuation). "
+           "followed by @C0,C1,C2 for its own attenuation (--attenuation); any light followed by "
+           "+shadows or +no-shadows for its own choice (--shadows). "
            "None given: one white point light at the camera";
   s.Default = "one white point light at the camera";
   s.Commands = PictureCommands;
@@ -236,6 +257,7 @@ Setting LightsSetting()
     spot.Exponent = 2.0 / 3;
     spot.Color = { 0.9, 0.8, 0.7 };
     spot.Attenuation = Vec3{ 1, 0.25, 1.0 / 16 };
+    spot.Shadows = true;
     Light sun;
     sun.Kind = LightKind::Directional;
     sun.Direction = { 1, 2, 3 };

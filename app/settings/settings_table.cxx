@@ -81,6 +81,17 @@ std::vector<Setting> MakeSettings()
             "@C0,C1,C2, a scene file light's \"attenuation\")",
             PictureCommands, "1,0,0: none" },
       Triple{ Triple::Attenuation }, SHADELAB_FIELD(Attenuation)),
+    Plain({ "--shadows", "shadows", "",
+            "Every light casts hard shadows, unless it says otherwise (--light's +no-shadows, "
+            "a scene file light's \"shadows\"): where the mesh lies between a light and a point, "
+            "the light adds neither diffuse nor specular there; tested where the rule lights "
+            "(per fragment, per vertex, per triangle) against shadow maps" },
+      Flag{}, SHADELAB_FIELD(Shadows)),
+    Plain({ "--shadow-map-size", "shadow_map_size", "N",
+            "Shadows: each shadow map's side in texels (a point or spot light's cube map has six "
+            "such faces, a directional light's map one); larger is sharper and slower",
+            PictureCommands, "2048" },
+      Integer{ 1, MaxShadowMapSize }, SHADELAB_FIELD(ShadowMapSize)),
     Plain({ "--fog", "fog", "MODE",
             "Fog over the surface, per fragment under every rule, d the depth along the view "
             "direction from the camera: linear:START,END (f = (END-d)/(END-START) clamped to [0, "

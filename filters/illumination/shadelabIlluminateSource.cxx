@@ -65,7 +65,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
   float d = length(q);
   vec4 b = shadelabShadowBias$;
   float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
-  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * slope; // shadelab: shadow
+  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * (1.0 + slope); // shadelab: shadow
 }
 )glsl";
 
@@ -85,7 +85,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
     return true;
   }
   float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
-  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * slope; // shadelab: shadow
+  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * (1.0 + slope); // shadelab: shadow
 }
 )glsl";
 

@@ -1,5 +1,6 @@
 #include "vtkShadelabShading.h"
 
+#include "shadelabShadowCasters.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabPolyDataMapper.h"
 
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabShading);
@@ -110,7 +112,25 @@ void vtkShadelabShading::SetIllumination(Shading rule, Reflection model, const M
   this->Surface = material;
   this->Ambient = ambient;
   this->Lights = lights;
+  this->UpdateShadowFeatures();
   this->Modified();
+}
+
+void vtkShadelabShading::SetShadows(std::shared_ptr<ShadowCasters> casters)
+{
+  this->Casters = std::move(casters);
+  this->UpdateShadowFeatures();
+  this->Modified();
+}
+
+void vtkShadelabShading::UpdateShadowFeatures()
+{
+  this->Features.Shadows.clear();
+  if (this->Casters && std::any_of(this->Lights.begin(), this->Lights.end(), CastsShadows))
+  {
+    std::transform(this->Lights.begin(), this->Lights.end(),
+      std::back_inserter(this->Features.Shadows), CastsShadows);
+  }
 }
 
 bool vtkShadelabShading::SetShadingRuleByName(const char* name)
@@ -184,11 +204,13 @@ void vtkShadelabShading::SetLightPlacement(const std::vector<Light>& lights)
 {
   const bool sameKinds = lights.size() == this->Lights.size() &&
     std::equal(lights.begin(), lights.end(), this->Lights.begin(),
-      [](const Light& a, const Light& b) { return a.Kind == b.Kind; }) &&
+      [](const Light& a, const Light& b)
+      { return a.Kind == b.Kind && CastsShadows(a) == CastsShadows(b); }) &&
     std::any_of(lights.begin(), lights.end(), Attenuated) == this->Features.Attenuation;
   if (!sameKinds)
   {
-    vtkErrorMacro("SetLightPlacement: other kinds of lights or attenuation need SetIllumination");
+    vtkErrorMacro(
+      "SetLightPlacement: other kinds of lights, attenuation or shadows need SetIllumination");
     return;
   }
   this->Lights = lights;
@@ -405,6 +427,10 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
         "shadelabLightAttenuation", n, reinterpret_cast<Triple>(attenuations.data()));
     }
   }
+  if (!this->Features.Shadows.empty())
+  {
+    this->BindShadowMaps(program, view);
+  }
   if (this->Features.Fog != FogMode::None)
   {
     program->SetUniform3f("shadelabFogColor", toFloat(this->FogColour).data());
@@ -444,6 +470,41 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
     normalMatrix->Invert();
     program->SetUniformMatrix("shadelabNormalMatrix", normalMatrix);
     this->BindFaceNormals(program);
+  }
+}
+
+void vtkShadelabShading::BindShadowMaps(vtkShaderProgram* program, vtkMatrix4x4* view)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
+  // View coordinates back to the world's, in double.
+  auto toWorld = vtkSmartPointer<vtkMatrix4x4>::New();
+  vtkMatrix4x4::Invert(view, toWorld);
+  for (std::size_t l = 0; l < this->Features.Shadows.size(); ++l)
+  {
+    if (!this->Features.Shadows[l])
+    {
+      continue;
+    }
+    std::string problem;
+    const ShadowMap* map = this->Casters->MapOf(l, this->Lights[l], window, problem);
+    if (!map)
+    {
+      vtkErrorMacro(<< problem);
+      return;
+    }
+    vtkTextureObject* texture = this->Casters->TextureOf(l);
+    // Kept active (its unit reserved) while the shading draws.
+    texture->Activate();
+    const std::string index = std::to_string(l);
+    program->SetUniformi((ShadowMapSamplerName + index).c_str(), texture->GetTextureUnit());
+    auto worldToMap = vtkSmartPointer<vtkMatrix4x4>::New();
+    worldToMap->DeepCopy(map->GetWorldToMap().data());
+    auto frame = vtkSmartPointer<vtkMatrix4x4>::New();
+    vtkMatrix4x4::Multiply4x4(worldToMap, toWorld, frame);
+    // GLSL receives the transpose of what SetUniformMatrix is given.
+    frame->Transpose();
+    program->SetUniformMatrix((ShadowFrameName + index).c_str(), frame);
+    program->SetUniform4f((ShadowBiasName + index).c_str(), map->GetBias().data());
   }
 }
 

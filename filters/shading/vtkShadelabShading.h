@@ -21,6 +21,8 @@
 #include "shadelabShaderSource.h"
 #include "shadelabShadingOracle.h"
 
+#include <memory>
+
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
@@ -28,10 +30,16 @@
 
 class vtkActor;
 class vtkCallbackCommand;
+class vtkMatrix4x4;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
+
+namespace shadelab
+{
+class ShadowCasters;
+}
 
 class SHADELAB_FILTERS_EXPORT vtkShadelabShading : public vtkObject
 {
@@ -112,6 +120,14 @@ public:
   VTK_WRAPEXCLUDE void SetRepresentation(
     shadelab::Representation drawn, double lineWidth = 1, double pointSize = 1);
 
+  /**
+   * Shadows: what casts them (the scene's actors share it), for the lights
+   * whose Shadows is on (ShaderFeatures::Shadows); their maps are baked at
+   * the first draw that needs them. None (the default): no light casts
+   * any, and the code has none of it.
+   */
+  VTK_WRAPEXCLUDE void SetShadows(std::shared_ptr<shadelab::ShadowCasters> casters);
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 
@@ -149,12 +165,16 @@ private:
   void BindTexture(vtkShaderProgram* program);
   void BindFaceNormals(vtkShaderProgram* program);
   void AddLight(const shadelab::Light& light);
+  void BindShadowMaps(vtkShaderProgram* program, vtkMatrix4x4* view);
+  // Features.Shadows from the lights and the casters.
+  void UpdateShadowFeatures();
 
   shadelab::ShaderFeatures Features;
   shadelab::Material Surface;
   shadelab::Rgb Ambient{};
   std::vector<shadelab::Light> Lights;
   shadelab::SurfaceTexture Texture;
+  std::shared_ptr<shadelab::ShadowCasters> Casters;
   shadelab::Fog FogSetting;
   double LineWidth = 1, PointSize = 1;
   shadelab::Rgb FogColour{};

@@ -23,6 +23,7 @@
 #include "shadelabFog.h"
 #include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
+#include "shadelabRayScene.h"
 #include "shadelabShadingOracle.h"
 #include "shadelabTranslucency.h"
 #include "shadelabTriangleFragment.h"
@@ -136,6 +137,10 @@ struct GridSpec
   // three faces, each face two triangles with its own flat normals (a
   // translucent cube shows its far faces, lit as back faces, through them).
   bool Box = false;
+  // Shadows: a square of half-size 0.35 over the grid (its corners at
+  // z = 0.6, above every grid point), facing the camera with its own flat
+  // normals, written after the grid.
+  bool Occluder = false;
 };
 
 constexpr std::array<double, 3> SheetStep{ 0.25, 0.125, -1 };
@@ -336,6 +341,23 @@ inline Mesh Grid(const GridSpec& g)
       }
     }
   }
+  if (g.Occluder)
+  {
+    const int first = static_cast<int>(m.Positions.size());
+    for (const auto& [x, y] :
+      { std::pair{ -0.45, -0.2 }, { 0.25, -0.2 }, { 0.25, 0.5 }, { -0.45, 0.5 } })
+    {
+      m.Positions.push_back({ x, y, 0.6 });
+      m.Normals.push_back({ 0, 0, 1 });
+      m.TexCoords.push_back(TexCoordAt(x, y));
+      if (g.VertexColors)
+      {
+        m.Colors.push_back({ 128, 128, 128 });
+      }
+    }
+    m.Triangles.push_back({ first, first + 1, first + 2 });
+    m.Triangles.push_back({ first, first + 2, first + 3 });
+  }
   if (!g.Sheets.empty())
   {
     return Sheets(g, m);
@@ -479,6 +501,9 @@ struct Scene
   bool Textured = false;
   shadelab::TextureWrap Wrap = shadelab::TextureWrap::Repeat;
   shadelab::TextureFilter Filter = shadelab::TextureFilter::Bilinear;
+  // --shadows, --shadow-map-size: the oracle casts shadow rays.
+  bool Shadows = false;
+  int ShadowMapSize = 2048;
 
   /** kd comes from the mesh's vertex colours. */
   bool VertexKd() const { return this->Geometry.VertexColors && !this->OverrideKd; }
@@ -803,6 +828,10 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
   {
     args.insert(args.end(), { "--peels", std::to_string(s.Peels) });
   }
+  if (s.Shadows)
+  {
+    args.insert(args.end(), { "--shadows", "--shadow-map-size", std::to_string(s.ShadowMapSize) });
+  }
   if (s.Drawn != shadelab::Representation::Surface)
   {
     args.insert(args.end(),
@@ -854,6 +883,9 @@ struct Expected
   // The fog's factor where it fogs towards transparent (the fragment's a
   // times it); then, with translucency, the composite's alpha.
   double Coverage = 1;
+  // Skipped: a point it was lit at lies in the band around a shadow's edge
+  // where a shadow map may decide otherwise (Oracle::ShadowBand).
+  bool ShadowBand = false;
 };
 
 // The pixels of a scene as the oracle sees them: the library's rays through
@@ -877,7 +909,16 @@ public:
       {
         l.Attenuation = WorldAttenuation(s, s.Attenuation); // the scene's
       }
+      l.Shadows = s.Shadows;
       this->In.Lights.push_back(shadelab::ToFrame(l));
+      this->Lights.push_back(l);
+    }
+    if (s.Shadows)
+    {
+      this->Rays =
+        std::make_unique<shadelab::RayScene>(this->Triangles.GetPoints(), this->M.Triangles);
+      this->In.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
+      { return this->Reaches(l, P, N); };
     }
     if (s.Drawn != shadelab::Representation::Surface)
     {
@@ -927,8 +968,10 @@ public:
     {
       return e;
     }
+    this->InShadowBand = false;
     this->Shade(e.Triangle, this->M.Triangles[e.Triangle], hit.Weights, hit.Front, e);
-    e.What = Expected::Interior;
+    e.ShadowBand = this->InShadowBand;
+    e.What = e.ShadowBand ? Expected::Skipped : Expected::Interior;
     return e;
   }
 
@@ -1035,6 +1078,7 @@ private:
     std::vector<long long> on;
     for (const shadelab::LightTerms& t : at.Terms.Lights)
     {
+      on.push_back(t.Shadowed);
       on.push_back(t.Reaches);
       on.push_back(t.NdotL > Rounding);
       on.push_back(t.Base > Rounding);
@@ -1134,8 +1178,44 @@ private:
     e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});
   }
 
+  // Shadows: the oracle's shadow ray from P (world coordinates) to light
+  // l. Where the answer changes within ShadowBand of P across the surface
+  // (two directions in its tangent plane, both ways), a map's texels may
+  // decide otherwise: the pixel is not compared (InShadowBand). The band,
+  // 0.01 of the scene's unit at 2048 texels and wider for smaller maps, is
+  // about seven texels' footprint on the grid for the lights of the tests.
+  bool Reaches(std::size_t l, const Vec3& P, const Vec3& N) const
+  {
+    const bool reaches = this->Rays->LightReaches(P, N, this->Lights[l]);
+    const double band = 0.01 * this->S.Scale * 2048 / this->S.ShadowMapSize;
+    // Across the surface: the plane of the triangle that P lies on (the
+    // normal N may lean off it), found by a ray back along N.
+    const shadelab::RayScene::Hit under =
+      this->Rays->First({ P + 1e-6 * this->S.Scale * N, -1.0 * N });
+    Vec3 g = N;
+    if (under.Triangle >= 0)
+    {
+      const auto& c = this->M.Triangles[under.Triangle];
+      const auto& p = this->Triangles.GetPoints();
+      g = normalize(cross(p[c[1]] - p[c[0]], p[c[2]] - p[c[0]]));
+    }
+    const Vec3 u = normalize(cross(g, std::abs(g[0]) < 0.9 ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 }));
+    const Vec3 v = cross(g, u);
+    for (const Vec3& step : { u, -1.0 * u, v, -1.0 * v })
+    {
+      if (this->Rays->LightReaches(P + band * step, N, this->Lights[l]) != reaches)
+      {
+        this->InShadowBand = true;
+      }
+    }
+    return reaches;
+  }
+
   const Scene& S;
   Mesh M;
+  std::vector<Light> Lights;                // world coordinates
+  std::unique_ptr<shadelab::RayScene> Rays; // shadows
+  mutable bool InShadowBand = false;
   shadelab::PictureTriangles Triangles;                // in world coordinates
   std::unique_ptr<shadelab::PictureElements> Elements; // drawn as edges or points
   IlluminationInputs In;
@@ -1220,6 +1300,8 @@ struct Deviation
   std::string FirstFlat;
   size_t AlphaWrong = 0; // a transparent background's: off the coverage by more than 1e-6
   std::string FirstAlpha;
+  size_t Shadowed = 0;   // compared pixels where a light is shadowed
+  size_t ShadowBand = 0; // pixels not compared for a shadow's edge
 };
 
 inline std::string PixelName(int x, int y)
@@ -1252,11 +1334,14 @@ inline Deviation Compare(
         }
         continue;
       }
+      d.ShadowBand += e.ShadowBand;
       if (e.What != Expected::Interior)
       {
         continue;
       }
       ++d.Compared;
+      d.Shadowed += std::any_of(e.Terms.Lights.begin(), e.Terms.Lights.end(),
+        [](const shadelab::LightTerms& t) { return t.Shadowed; });
       if (s.TransparentBackground && image.Channels == 4 && !s.EightBit)
       {
         const float alpha = image.Pixels[(static_cast<size_t>(y) * image.Width + x) * 4 + 3];
@@ -1378,6 +1463,12 @@ inline void ExpectMatchesOracle(const Case& c)
   }
   EXPECT_EQ(d.FlatDifferent, 0u) << "flat: more than one colour in a triangle: " << d.FirstFlat;
   EXPECT_EQ(d.AlphaWrong, 0u) << "alpha off the coverage: " << d.FirstAlpha;
+  if (c.S.Shadows)
+  {
+    std::cout << "[oracle] " << c.Name << ": " << d.Shadowed << " compared pixels in a shadow, "
+              << d.ShadowBand << " left out at a shadow's edge" << std::endl;
+    EXPECT_GE(d.Shadowed, 100u) << "too few shadowed pixels to say anything";
+  }
 }
 }
 

@@ -318,6 +318,26 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--peels", "-1" });
     },
     2, { "--peels", "not in range" } },
+  { "ShadowMapSizeZero",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shadows", "--shadow-map-size", "0" });
+    },
+    2, { "--shadow-map-size", "not in range" } },
+  // Within the option's range, over llvmpipe's 16384: found as the maps are made.
+  { "ShadowMapSizeOverOpenGLsLimit",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shadows", "--shadow-map-size", "20000" });
+    },
+    1, { "--shadow-map-size 20000", "limit of 16384" } },
+  { "LightsShadowsNotABoolean",
+    [](const TempDir& d)
+    {
+      WriteText(d / "t.obj", Tetrahedron);
+      WriteText(d / "s.json",
+        R"({"mesh": "t.obj", "output": "out.png", "lights": [{"kind": "point", "position": [0, 0, 5], "shadows": 1}]})");
+      return std::vector<std::string>{ "--scene", (d / "s.json").string() };
+    },
+    1, { "lights[0].shadows", "true or false" } },
   { "FogDensityNegative",
     [](const TempDir& d) {
       return WithMesh(d, "t.obj", Tetrahedron, { "--fog", "exp2:-1" });

@@ -6,7 +6,8 @@
 // vertex (gouraud), the provoking vertex (flat). Pixels lit at a point in
 // the band around a shadow's edge, where a map's texel may decide
 // otherwise, are left out and counted; each case must show a shadow.
-// Every light in the coloured scene at once; scenes far from the origin,
+// A wall's shadow starting at its foot (peter-panning); a closed box lit
+// from behind. Three lights at once; scenes far from the origin,
 // tiny and huge; a small map, whose wider band is left out.
 #include "oracle_scene.h"
 
@@ -60,6 +61,23 @@ std::vector<Case> Cases()
     s.Scale = scale;
     s.Offset = offset;
     add(std::string(name) + "_phong", s);
+  }
+  for (Shading r : LitRules)
+  {
+    // Peter-panning: the shadow of a wall starts at its foot.
+    Scene s = Shadowed(Point({ -0.1, 1.0, 0.9 }), r);
+    s.Geometry.Occluder = false;
+    s.Geometry.Wall = true;
+    add(std::string("wall_") + ToString(r), s);
+  }
+  {
+    // A closed mesh lit from behind: the faces the camera sees face away
+    // from the light, and nothing of it comes through.
+    Scene s = Shadowed(Point({ 0.3, 0.2, -2.5 }), Shading::Phong);
+    s.Geometry.Occluder = false;
+    s.Geometry.Box = true;
+    s.ShadowedAtLeast = 0; // N.L < 0 already: no light, and no shadow
+    add("box_lit_from_behind_phong", s);
   }
   {
     Scene s = Shadowed(Directional({ -0.9, -0.7, -1 }), Shading::Phong);

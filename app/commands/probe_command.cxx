@@ -99,8 +99,9 @@ int RunProbe(const ProbeOptions& o)
   {
     return ReportError(picture.Input, picture.Error);
   }
+  // The render's context is current: the prober reads its shadow maps.
   const PixelProber prober(s, picture.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(),
-    s.Size, picture.Scene->Images);
+    s.Size, picture.Scene->Images, picture.Scene->Casters.get());
   for (std::size_t i = 0; i < o.Pixels.size(); ++i)
   {
     PixelProbe probe = prober.Probe(o.Pixels[i]);

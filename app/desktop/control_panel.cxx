@@ -58,6 +58,8 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , Peels(new QSpinBox(this))
   , AmbientLight(new ColorEdit("Ia", this))
   , Attenuation(new TripleEdit("attenuation", { "c0", "c1", "c2" }, 0, 1e6, this))
+  , Shadows(new QCheckBox("every light casts", this))
+  , ShadowMapSize(new QSpinBox(this))
   , Fogging(new FogEdit(this))
   , LightChoice(new QComboBox(this))
   , NormalsChoice(new QComboBox(this))
@@ -71,6 +73,8 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   this->Ns->setObjectName("ns");
   this->Opacity->setObjectName("a");
   this->Peels->setObjectName("peels");
+  this->Shadows->setObjectName("shadows");
+  this->ShadowMapSize->setObjectName("shadow map size");
   this->LightChoice->setObjectName("lights");
   this->NormalsChoice->setObjectName("normals");
   this->FeatureAngle->setObjectName("feature angle");
@@ -201,6 +205,20 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     }
     this->Engine.Edit([&c](ViewState& s) { s.Scene.Attenuation = c; });
   };
+  // --shadows and --shadow-map-size: a light's own choice (a scene file's)
+  // stays as it is.
+  light->addRow("Shadows", this->Shadows);
+  this->Shadows->setToolTip("Hard shadows from shadow maps, tested where the rule lights");
+  QObject::connect(this->Shadows, &QCheckBox::toggled, this,
+    [this](bool on) { this->Engine.Edit([on](ViewState& s) { s.Scene.Shadows = on; }); });
+  this->ShadowMapSize->setRange(1, MaxShadowMapSize);
+  this->ShadowMapSize->setKeyboardTracking(false);
+  this->ShadowMapSize->setSuffix(" texels");
+  this->ShadowMapSize->setToolTip("Each shadow map's side (a cube map's face)");
+  light->addRow("Shadow map", this->ShadowMapSize);
+  QObject::connect(this->ShadowMapSize, QOverload<int>::of(&QSpinBox::valueChanged), this,
+    [this](int size)
+    { this->Engine.Edit([size](ViewState& s) { s.Scene.ShadowMapSize = size; }); });
 
   group("Atmosphere")->addRow(this->Fogging);
   this->Fogging->Edited = [this](Fog fog)
@@ -319,7 +337,8 @@ void ControlPanel::Show()
   const QSignalBlocker quiet[] = { QSignalBlocker(this->Rule), QSignalBlocker(this->Model),
     QSignalBlocker(this->MaterialRow), QSignalBlocker(this->LightChoice),
     QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle),
-    QSignalBlocker(this->Peels) };
+    QSignalBlocker(this->Peels), QSignalBlocker(this->Shadows),
+    QSignalBlocker(this->ShadowMapSize) };
   this->Rule->setCurrentIndex(static_cast<int>(s.ShadingRule));
   this->Model->setCurrentIndex(static_cast<int>(s.ReflectionModel));
   this->Drawn->Set(s.Drawn, s.LineWidth, s.PointSize);
@@ -337,6 +356,8 @@ void ControlPanel::Show()
   this->Peels->setValue(s.Peels);
   this->AmbientLight->SetColor(s.Ambient);
   this->Attenuation->SetValue(s.Attenuation);
+  this->Shadows->setChecked(s.Shadows);
+  this->ShadowMapSize->setValue(s.ShadowMapSize);
   this->Fogging->SetFog(s.Fogging);
   this->LightChoice->setCurrentIndex(static_cast<int>(state.Lights));
   const bool fromFile = s.Normals != NormalsMode::Compute && this->Engine.HasFileNormals();

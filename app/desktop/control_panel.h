@@ -48,6 +48,8 @@ private:
   QSpinBox* Peels;     // --peels: 0, every layer
   ColorEdit* AmbientLight;
   TripleEdit* Attenuation; // the scene's C0, C1, C2
+  QCheckBox* Shadows;      // --shadows
+  QSpinBox* ShadowMapSize;
   FogEdit* Fogging;
   QComboBox* LightChoice;
   QComboBox* NormalsChoice;

@@ -39,6 +39,7 @@ const std::array<Mark, ShaderPanel::MarkCount>& Marks()
     { "attenuation", QColor(0xf0, 0xd2, 0xf0), "Il/(c0+c1*d+c2*d^2)", true },
     { "fog", QColor(0xdc, 0xdc, 0xdc), "f*C+(1-f)*fog", true },
     { "translucency", QColor(0xff, 0xf5, 0xb4), "a*I+(1-a)*behind", true },
+    { "shadow", QColor(0xd2, 0xe6, 0xe6), "d <= map + bias", true },
   } };
   return marks;
 }

@@ -42,7 +42,7 @@ public:
    */
   static constexpr std::size_t AllMarks = 0;
   /** The terms and effects the generator marks (Marks(), shader_panel.cxx). */
-  static constexpr std::size_t MarkCount = 6;
+  static constexpr std::size_t MarkCount = 7;
 
 private:
   void HighlightMark(std::size_t mark);

@@ -90,6 +90,10 @@ nlohmann::ordered_json DescribeLight(const Light& light)
   {
     j.erase("attenuation"); // resolved to 1,0,0: the light does not fall off
   }
+  if (!CastsShadows(light))
+  {
+    j.erase("shadows"); // only where it casts them: pictures without describe as before
+  }
   return j;
 }
 
@@ -169,6 +173,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
     lights.push_back(DescribeLight(light));
   }
   j["lights"] = lights;
+  if (std::any_of(o.Lights.begin(), o.Lights.end(), CastsShadows) || o.Shadows)
+  {
+    j["shadow_map_size"] = o.ShadowMapSize;
+  }
   nlohmann::ordered_json cam;
   cam["projection"] = o.Orthographic ? "orthographic" : "perspective";
   cam["position"] = position;

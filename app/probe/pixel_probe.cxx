@@ -2,7 +2,10 @@
 
 #include "scene/scene.h"
 #include "shadelabMeshTriangles.h"
+#include "shadelabRayScene.h"
+#include "shadelabShadowCasters.h"
 #include "shadelabTriangleMesh.h"
+#include "shadelabVec3.h"
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
@@ -13,9 +16,12 @@
 
 namespace shadelab
 {
+PixelProber::~PixelProber() = default;
+
 PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
-  ImageSize size, const SceneImages& images)
+  ImageSize size, const SceneImages& images, const ShadowCasters* casters)
   : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))
+  , Casters(casters)
 {
   Vec3 eye;
   camera->GetPosition(eye.data());
@@ -45,6 +51,28 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   }
   this->In.Orthographic = camera->GetParallelProjection();
   this->In.Eye = eye;
+  if (std::any_of(s.Lights.begin(), s.Lights.end(), CastsShadows))
+  {
+    this->Rays =
+      std::make_unique<RayScene>(this->Triangles.GetPoints(), this->Triangles.GetTriangles());
+    // The prober stays where it is made (no copy, no move): `this` holds.
+    this->In.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
+    {
+      using namespace vec3;
+      const Light& light = this->Scene.Lights[l];
+      const bool reaches = this->Rays->LightReaches(P, N, light);
+      PixelProbe::ShadowCheck& check = this->Checks[l];
+      ++check.Rays;
+      if (const ShadowMap* map = this->Casters ? this->Casters->Baked(l) : nullptr)
+      {
+        const Vec3 L = GeometryOf(light.Kind).Position ? normalize(light.Position - P)
+                                                       : normalize(-1.0 * light.Direction);
+        check.MapRead = true;
+        check.MapDisagrees += map->Lit(P, dot(N, L), length(P - this->In.Eye)) != reaches;
+      }
+      return reaches;
+    };
+  }
   camera->GetDirectionOfProjection(this->In.ViewDirection.data());
   if (UsesVertexKd(options, mesh))
   {
@@ -127,8 +155,10 @@ void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
   IlluminationInputs in = this->In;
   in.Surface = part.Surface;
   in.Texture = part.Texture;
+  this->Checks.assign(p.Lights.size(), {});
   p.Shaded = p.Element ? ShadeElementFragment(in, p.Rule, p.Fragment)
                        : ShadeTriangleFragment(in, p.Rule, p.Fragment);
+  p.Shadows = this->Checks;
   if (this->Fogging.Mode != FogMode::None)
   {
     // Per fragment under every rule: at the point under the pixel centre

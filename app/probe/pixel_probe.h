@@ -25,6 +25,9 @@ class vtkPolyData;
 
 namespace shadelab
 {
+class RayScene;
+class ShadowCasters;
+
 /** One pixel explained. */
 struct PixelProbe
 {
@@ -35,6 +38,17 @@ struct PixelProbe
   Material Surface; // the hit triangle's part's, after the overrides
   Rgb Ia{};
   std::vector<Light> Lights; // as lit, in world coordinates
+  // Shadows, per light: the oracle's shadow rays cast for the pixel (at
+  // each point its rule lit, where the light would add a term) and, where
+  // the picture's shadow maps could be read, at how many of them the map
+  // decided otherwise.
+  struct ShadowCheck
+  {
+    int Rays = 0;
+    bool MapRead = false;
+    int MapDisagrees = 0;
+  };
+  std::vector<ShadowCheck> Shadows;
   Rgb Background{};
   bool Orthographic = false;
   Representation Drawn = Representation::Surface;
@@ -104,10 +118,13 @@ public:
    * `mesh` is the mesh as read (BuiltScene::Mesh: triangles, with the
    * vertex normals the rule uses), `camera` the renderer's after the scene
    * was built, `size` the picture's, `images` its textures' images
-   * (BuiltScene::Images): what `render` draws for options.
+   * (BuiltScene::Images): what `render` draws for options; `casters` its
+   * shadow maps (BuiltScene::Casters), whose decisions each pixel's
+   * ShadowCheck holds against the oracle's rays, read in the current context.
    */
   PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, ImageSize size,
-    const SceneImages& images = {});
+    const SceneImages& images = {}, const ShadowCasters* casters = nullptr);
+  ~PixelProber();
 
   /** The pixel explained; its Rendered value left at 0. */
   PixelProbe Probe(Pixel at) const;
@@ -140,6 +157,9 @@ private:
   std::vector<Vec3> Normals;                    // per point, when the mesh has them
   std::vector<Rgb> Kd;                          // per point, when its colours are kd
   std::vector<std::array<double, 2>> TexCoords; // per point, when a texture is looked up
+  std::unique_ptr<RayScene> Rays;               // shadows: the oracle's shadow rays
+  const ShadowCasters* Casters = nullptr;
+  mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's
 };
 }
 

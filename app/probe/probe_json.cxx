@@ -10,8 +10,10 @@ namespace
 using nlohmann::ordered_json;
 
 // A light as the scene gives it and its terms at the point.
-ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model)
+ordered_json LightJson(const PixelProbe& p, std::size_t l, const LightTerms& t)
 {
+  const Light& light = p.Lights[l];
+  const Reflection model = p.Model;
   ordered_json j = DescribeLight(light);
   j["L"] = t.L;
   if (Attenuated(light))
@@ -31,6 +33,14 @@ ordered_json LightJson(const Light& light, const LightTerms& t, Reflection model
   }
   j["Il"] = t.Il;
   j["n_dot_l"] = t.NdotL;
+  if (CastsShadows(light))
+  {
+    j["shadowed"] = t.Shadowed;
+    if (l < p.Shadows.size() && p.Shadows[l].MapRead && p.Shadows[l].Rays > 0)
+    {
+      j["shadow_map_agrees"] = p.Shadows[l].MapDisagrees == 0;
+    }
+  }
   j["lit"] = t.Lit;
   j["diffuse"] = t.DiffuseTerm;
   j[UsesHalfVector(model) ? "H" : "R"] = t.HR;
@@ -49,7 +59,7 @@ void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
   ordered_json lights = ordered_json::array();
   for (std::size_t l = 0; l < t.Lights.size(); ++l)
   {
-    lights.push_back(LightJson(p.Lights[l], t.Lights[l], p.Model));
+    lights.push_back(LightJson(p, l, t.Lights[l]));
   }
   j["lights"] = lights;
 }

@@ -132,8 +132,26 @@ void AddLight(Lines& out, const std::string& indent, const PixelProbe& p, std::s
   out.Add(in, "N.L = " + ProbeNumber(t.NdotL),
     !t.Reaches      ? "the light does not reach P: no diffuse, no specular"
       : t.Lit       ? "> 0: lit"
+      : t.Shadowed  ? "> 0, but in shadow: no diffuse, no specular"
       : t.NdotL > 0 ? "not above 1e-5, taken as 0: no diffuse, no specular"
                     : "<= 0: no diffuse, no specular");
+  if (CastsShadows(light))
+  {
+    const PixelProbe::ShadowCheck check =
+      index < p.Shadows.size() ? p.Shadows[index] : PixelProbe::ShadowCheck{};
+    out.Add(in, std::string("shadowed = ") + (t.Shadowed ? "yes" : "no"),
+      check.Rays == 0 ? "no shadow ray: the light adds nothing here anyway"
+        : t.Shadowed  ? "the shadow ray towards the light meets the mesh"
+                      : "the shadow ray reaches the light");
+    if (check.MapRead && check.Rays > 0)
+    {
+      out.Add(in, std::string("shadow map ") + (check.MapDisagrees == 0 ? "agrees" : "disagrees"),
+        check.MapDisagrees == 0
+          ? "the picture's shadow map decides as the ray does"
+          : "the picture's shadow map decides otherwise at " + std::to_string(check.MapDisagrees) +
+            " of the " + std::to_string(check.Rays) + " points lit: the picture differs here");
+    }
+  }
   out.Add(in, "kd*Il*(N.L) = " + ProbeTriple(t.DiffuseTerm), ToString(Terms::Diffuse));
   const std::string base = blinn ? "N.H" : "V.R";
   out.Add(

@@ -146,11 +146,13 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   scene.Images = images;
   // Every triangle casts, whichever actor draws it (the actors draw the
   // mesh where it is: world coordinates).
-  std::shared_ptr<ShadowCasters> casters;
+  std::shared_ptr<ShadowCasters>& casters = scene.Casters;
   if (std::any_of(resolved.begin(), resolved.end(), CastsShadows))
   {
-    casters =
-      std::make_shared<ShadowCasters>(PointsOf(mesh), TrianglesOf(mesh), options.ShadowMapSize);
+    casters = reuse && reuse->Casters && reuse->Mesh == mesh &&
+        reuse->Casters->GetSize() == options.ShadowMapSize
+      ? reuse->Casters
+      : std::make_shared<ShadowCasters>(PointsOf(mesh), TrianglesOf(mesh), options.ShadowMapSize);
   }
   for (std::size_t g = 0; g < groups.size(); ++g)
   {

@@ -9,6 +9,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,11 @@ class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShadelabShading;
+
+namespace shadelab
+{
+class ShadowCasters;
+}
 
 namespace shadelab
 {
@@ -41,6 +47,9 @@ struct BuiltScene
   std::string Error;           // an impossible scene (camera), else empty
   vtkPolyData* Mesh = nullptr; // what the actors draw, before the rule prepared it
   SceneImages Images;          // its textures' images, decoded
+  // What casts its shadows, shared by its actors (none without shadows):
+  // a scene built again on the same mesh keeps the maps that still hold.
+  std::shared_ptr<ShadowCasters> Casters;
 };
 
 /**

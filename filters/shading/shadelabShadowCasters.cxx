@@ -29,7 +29,7 @@ ShadowCasters::~ShadowCasters()
   if (this->Window)
   {
     this->Window->MakeCurrent();
-    for (Baked& b : this->Maps)
+    for (LightMap& b : this->Maps)
     {
       if (b.Map)
       {
@@ -51,7 +51,7 @@ const ShadowMap* ShadowCasters::MapOf(
   {
     this->Maps.resize(l + 1);
   }
-  Baked& b = this->Maps[l];
+  LightMap& b = this->Maps[l];
   if (b.Map && SamePlace(b.For, light))
   {
     return b.Map.get();
@@ -87,6 +87,11 @@ const ShadowMap* ShadowCasters::MapOf(
   b.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
   b.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
   return b.Map.get();
+}
+
+const ShadowMap* ShadowCasters::Baked(std::size_t l) const
+{
+  return l < this->Maps.size() ? this->Maps[l].Map.get() : nullptr;
 }
 
 vtkTextureObject* ShadowCasters::TextureOf(std::size_t l) const

@@ -37,13 +37,16 @@ public:
   const ShadowMap* MapOf(
     std::size_t l, const Light& light, vtkOpenGLRenderWindow* window, std::string& error);
 
+  /** Map l as the last draw baked it, or nullptr. */
+  const ShadowMap* Baked(std::size_t l) const;
+
   /** Map l's texture for binding, made by MapOf. */
   vtkTextureObject* TextureOf(std::size_t l) const;
 
   int GetSize() const { return this->Size; }
 
 private:
-  struct Baked
+  struct LightMap
   {
     std::unique_ptr<ShadowMap> Map;
     Light For;
@@ -52,7 +55,7 @@ private:
   std::vector<Vec3> Points;
   std::vector<TriangleCorners> Triangles;
   int Size;
-  std::vector<Baked> Maps;
+  std::vector<LightMap> Maps;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
 };
 }

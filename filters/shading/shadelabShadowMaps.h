@@ -77,6 +77,13 @@ public:
   /** The bias's x, y, z as the class comment says, and w the size. */
   std::array<float, 4> GetBias() const;
 
+  /**
+   * What the shaders decide (shadelabShadowLit) at world point P lit with
+   * N.L, `fromEye` from the camera, computed in double from the map's
+   * texels (read once, in the current context): whether the light reaches P.
+   */
+  bool Lit(const Vec3& P, double NdotL, double fromEye) const;
+
   /** Face f's texels (an orthographic map: its only one), rows bottom first. */
   std::vector<float> ReadFace(int face) const;
 
@@ -91,7 +98,8 @@ private:
   int Size = 0;
   bool Cube = true;
   std::array<double, 16> WorldToMap{};
-  double Side = 0; // an orthographic map's, in world units
+  double Side = 0;                                // an orthographic map's, in world units
+  mutable std::vector<std::vector<float>> Texels; // each face's, once Lit has read them
 };
 }
 

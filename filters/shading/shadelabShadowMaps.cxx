@@ -222,6 +222,34 @@ std::string ShadowMap::Bake(const std::vector<Vec3>& points,
     orthographic[15] = 1;
   }
 
+  const GLenum target = this->Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+  GLint bound = 0;
+  glGetIntegerv(this->Cube ? GL_TEXTURE_BINDING_CUBE_MAP : GL_TEXTURE_BINDING_2D, &bound);
+  glBindTexture(target, this->Texture);
+  // Earlier calls' errors are not the map's (a bounded drain: a lost
+  // context reports its loss again and again).
+  for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k)
+  {
+  }
+  for (int f = 0; f < (this->Cube ? 6 : 1); ++f)
+  {
+    glTexImage2D(this->Cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + f : GL_TEXTURE_2D, 0, GL_R32F, size,
+      size, 0, GL_RED, GL_FLOAT, nullptr);
+  }
+  if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    glBindTexture(target, static_cast<GLuint>(bound));
+    glDeleteTextures(1, &this->Texture);
+    this->Texture = 0;
+    const double mib = 4.0 * size * size * (this->Cube ? 6 : 1) / (1 << 20);
+    return "--shadow-map-size " + std::to_string(size) + ": OpenGL has no memory for a " +
+      std::to_string(static_cast<long long>(mib)) + " MiB shadow map";
+  }
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(target, static_cast<GLuint>(bound));
+
   std::vector<float> relative;
   relative.reserve(triangles.size() * 9);
   for (const TriangleCorners& t : triangles)
@@ -261,20 +289,6 @@ std::string ShadowMap::Bake(const std::vector<Vec3>& points,
   const GLint attribute = glGetAttribLocation(this->Program, "relative");
   glEnableVertexAttribArray(attribute);
   glVertexAttribPointer(attribute, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-
-  const GLenum target = this->Cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-  GLint bound = 0;
-  glGetIntegerv(this->Cube ? GL_TEXTURE_BINDING_CUBE_MAP : GL_TEXTURE_BINDING_2D, &bound);
-  glBindTexture(target, this->Texture);
-  for (int f = 0; f < (this->Cube ? 6 : 1); ++f)
-  {
-    glTexImage2D(this->Cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + f : GL_TEXTURE_2D, 0, GL_R32F, size,
-      size, 0, GL_RED, GL_FLOAT, nullptr);
-  }
-  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
-  glBindTexture(target, static_cast<GLuint>(bound));
 
   glBindFramebuffer(GL_FRAMEBUFFER, this->Framebuffer);
   glUseProgram(this->Program);

@@ -329,6 +329,13 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--shadows", "--shadow-map-size", "20000" });
     },
     1, { "--shadow-map-size 20000", "limit of 16384" } },
+  // Within OpenGL's limit, over llvmpipe's 1 GiB a texture (a 9000 cube
+  // map is 1.8 GiB): OpenGL is out of memory for it.
+  { "ShadowMapOutOfMemory",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shadows", "--shadow-map-size", "9000" });
+    },
+    1, { "--shadow-map-size 9000", "no memory" } },
   { "LightsShadowsNotABoolean",
     [](const TempDir& d)
     {

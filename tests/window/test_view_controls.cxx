@@ -262,6 +262,9 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
         Type(window.findChild<QDoubleSpinBox*>("attenuation c1"), "0.5");
       },
       { "--attenuation" } },
+    { "shadows", [&] { window.findChild<QCheckBox*>("shadows")->click(); }, { "--shadows" } },
+    { "shadow map size", [&] { Type(window.findChild<QSpinBox*>("shadow map size"), "512"); },
+      { "--shadow-map-size" } },
     { "fog", [&] { QTest::keyClick(find("fog"), Qt::Key_Down); }, { "--fog" } },
     { "fog end", [&] { Type(window.findChild<QDoubleSpinBox*>("fog end"), "1e6"); }, { "--fog" } },
     { "fog end not beyond start",

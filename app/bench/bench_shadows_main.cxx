@@ -1,7 +1,8 @@
 // shadelab-bench-shadows: what --shadows costs and how far its shadow maps
 // stray from the oracle's shadow rays, in one run. The mesh stands on a
-// square floor four times its width (added under its bounding box, along
-// -Y), lit by one light at a time: a point light above and to the side, a
+// square floor twice its width (added under its bounding box, along -Y),
+// seen from the iso view (front, right and above), lit by one light at a
+// time: a point light above and to the side, a
 // spot light there aimed at the mesh's centre (30 degrees), a directional
 // light from the same side; phong, the gold material.
 //
@@ -68,14 +69,14 @@ double Median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-// mesh on a floor: a square under its bounding box, four times its larger
+// mesh on a floor: a square under its bounding box, twice its larger
 // width, facing +Y, with the mesh's point arrays where it has normals.
 vtkSmartPointer<vtkPolyData> OnAFloor(vtkPolyData* mesh)
 {
   double b[6];
   mesh->GetBounds(b);
   const double cx = (b[0] + b[1]) / 2, cz = (b[4] + b[5]) / 2;
-  const double half = 2 * std::max(b[1] - b[0], b[5] - b[4]);
+  const double half = std::max(b[1] - b[0], b[5] - b[4]);
   auto floor = vtkSmartPointer<vtkPolyData>::New();
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->InsertNextPoint(cx - half, b[2], cz + half);
@@ -139,6 +140,7 @@ int main(int argc, char** argv)
   SceneOptions o;
   o.MaterialName = "gold";
   o.MaterialGiven = true;
+  o.View = ViewPreset::Iso;
   std::string size = "1920x1080", csv;
   int frames = 5, rounds = 3, step = 4;
   app.add_option("MESH", o.Mesh)->required();

@@ -17,6 +17,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <memory>
 
 using namespace shadelab;
 using namespace shadelab::vec3;
@@ -116,15 +117,29 @@ void Scene(std::vector<Vec3>& points, std::vector<TriangleCorners>& triangles)
 }
 }
 
-TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
+// The scene's triangles, its rays, and a current OpenGL context to bake in.
+class ShadowMaps : public testing::Test
 {
-  HeadlessRenderer renderer;
-  ASSERT_EQ(renderer.Start(1, 1), "");
-  renderer.GetRenderer()->GetRenderWindow()->MakeCurrent();
-  std::vector<Vec3> points;
-  std::vector<TriangleCorners> triangles;
-  Scene(points, triangles);
-  const RayScene rays(points, triangles);
+protected:
+  void SetUp() override
+  {
+    ASSERT_EQ(this->Renderer.Start(1, 1), "");
+    this->Renderer.GetRenderer()->GetRenderWindow()->MakeCurrent();
+    Scene(this->Points, this->Triangles);
+    this->Rays = std::make_unique<RayScene>(this->Points, this->Triangles);
+  }
+
+  HeadlessRenderer Renderer;
+  std::vector<Vec3> Points;
+  std::vector<TriangleCorners> Triangles;
+  std::unique_ptr<RayScene> Rays;
+};
+
+TEST_F(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
+{
+  const RayScene& rays = *this->Rays;
+  const std::vector<Vec3>& points = this->Points;
+  const std::vector<TriangleCorners>& triangles = this->Triangles;
   Light point;
   point.Position = { 0.5, -0.25, 4 };
   const Vec3& light = point.Position;
@@ -194,15 +209,11 @@ TEST(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
 // along the light's direction at which the double ray through its centre,
 // from the map's plane, meets the first triangle; the map covers the whole
 // mesh, so that no texel at its border meets one.
-TEST(ShadowMaps, AnOrthographicTexelHoldsTheDepthOfTheOraclesRay)
+TEST_F(ShadowMaps, AnOrthographicTexelHoldsTheDepthOfTheOraclesRay)
 {
-  HeadlessRenderer renderer;
-  ASSERT_EQ(renderer.Start(1, 1), "");
-  renderer.GetRenderer()->GetRenderWindow()->MakeCurrent();
-  std::vector<Vec3> points;
-  std::vector<TriangleCorners> triangles;
-  Scene(points, triangles);
-  const RayScene rays(points, triangles);
+  const RayScene& rays = *this->Rays;
+  const std::vector<Vec3>& points = this->Points;
+  const std::vector<TriangleCorners>& triangles = this->Triangles;
   Light sun;
   sun.Kind = LightKind::Directional;
   sun.Direction = { 0.3, -0.2, -1 };

@@ -46,7 +46,7 @@ expect() {
 
 expect "--help --version advise bench compare normals probe render view" shadelab ""
 expect "render" shadelab re
-expect "--shading --shard" shadelab render --sh
+expect "--shading --shadow-map-size --shadows --shard" shadelab render --sh
 expect "--modes" shadelab compare --mo
 expect "auto compute file" shadelab render --normals ""
 expect "flat gouraud none phong" shadelab render --shading ""

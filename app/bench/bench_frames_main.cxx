@@ -43,9 +43,9 @@
 #include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkLogger.h>
+#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkOpenGLPolyDataMapper.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -92,6 +92,7 @@ void UseVtkLighting(const SceneOptions& o, Shading rule, vtkRenderer* renderer, 
     case Shading::Gouraud:
       p->SetInterpolation(VTK_GOURAUD);
       break;
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
       p->SetInterpolation(VTK_PHONG);
       break;
@@ -262,8 +263,7 @@ int main(int argc, char** argv)
       Representation::Wireframe },
     { "phong-wireframe", Shading::Phong, false, false, false, false, false,
       Representation::Wireframe },
-    { "phong-points", Shading::Phong, false, false, false, false, false,
-      Representation::Points } };
+    { "phong-points", Shading::Phong, false, false, false, false, false, Representation::Points } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iostream>
+#include <map>
 
 namespace shadelab
 {
@@ -42,11 +43,18 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
   view->get_option("--size")->description(
     "The 3D view's size in pixels (default 1024x768, made smaller in the same shape where the "
     "window with its controls would not fit the screen; a given size is kept)");
+  std::map<std::string, Shading> raster = NamedValues<Shading>(); // the rules the window draws
+  raster.erase(ToString(Shading::Raytrace));
+  std::string rules;
+  for (const auto& [name, rule] : raster)
+  {
+    rules += (rules.empty() ? "" : "|") + name;
+  }
   view
     ->add_option("--interactive-shading", o.InteractiveShading,
       "A cheaper rule while the mouse drags; the full rule returns on release")
-    ->transform(CLI::CheckedTransformer(NamedValues<Shading>()))
-    ->option_text(JoinedNames<Shading>("|"));
+    ->transform(CLI::CheckedTransformer(raster))
+    ->option_text(rules);
   view->add_flag("--compare", o.Compare, "Start in the comparison layout (key c)");
   view->add_flag("-q,--quiet", o.Quiet, "No warnings");
   AddComparisonOptions(*view, o.Panels);

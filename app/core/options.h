@@ -161,6 +161,8 @@ struct SceneOptions
   // casts hard shadows, through maps of ShadowMapSize texels a side.
   bool Shadows = false;
   int ShadowMapSize = DefaultShadowMapSize;
+  // --shading raytrace: the mirror reflections a ray follows, one after another.
+  int Reflections = 2;
   Fog Fogging; // --fog: none by default
   // --representation: the surface, or its edges or points lit by the same
   // rule (DrawnElements), as lines and squares this many pixels wide.
@@ -281,6 +283,12 @@ constexpr int MaxPointSize = 64;
 constexpr int MaxPeels = 10000;
 /** The most --shadow-map-size takes: OpenGL's limit may be lower (checked as the maps are made). */
 constexpr int MaxShadowMapSize = 32768;
+/**
+ * The most --reflections takes: each bounce weighs by ks, and after 64 of
+ * ks <= 0.9 (every material of the lecture's table) what is left is below
+ * an 8-bit step (0.9^64 < 1/255).
+ */
+constexpr int MaxReflections = 64;
 
 /** The most frames of an --orbit (a tenth of a degree apart) and frames a second. */
 constexpr int MaxOrbitFrames = 3600;

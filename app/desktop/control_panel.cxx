@@ -29,13 +29,16 @@ namespace
 {
 const std::vector<std::string> Weightings = Names<vtkShadelabMeshNormals::Weightings>();
 
+// The choices' names in their enum's order (an item's index is its value),
+// the first `count` of them.
 template <typename Enum>
-QComboBox* NamesBox(QWidget* parent)
+QComboBox* NamesBox(QWidget* parent, std::size_t count = NameTable<Enum>::Entries.size())
 {
   auto* box = new QComboBox(parent);
-  for (const std::string& name : Names<Enum>())
+  const std::vector<std::string> names = Names<Enum>();
+  for (std::size_t i = 0; i < count; ++i)
   {
-    box->addItem(QString::fromStdString(name));
+    box->addItem(QString::fromStdString(names[i]));
   }
   return box;
 }
@@ -49,7 +52,7 @@ bool CustomMaterial(const SceneOptions& s)
 ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   : QWidget(parent)
   , Engine(inspector)
-  , Rule(NamesBox<Shading>(this))
+  , Rule(NamesBox<Shading>(this, static_cast<std::size_t>(Shading::Raytrace))) // the raster's
   , Model(new QComboBox(this))
   , Drawn(new RepresentationEdit(this))
   , MaterialRow(new QComboBox(this))

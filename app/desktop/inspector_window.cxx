@@ -6,6 +6,7 @@
 #include "desktop/probe_panel.h"
 #include "desktop/shader_panel.h"
 #include "desktop/x_display.h"
+#include "scene/comparison_panels.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -26,6 +27,31 @@
 
 namespace shadelab
 {
+namespace
+{
+// Whether options ask the window for raytrace (the rule, the drag's, a
+// comparison's mode): it draws the raster rules live, and raytrace's
+// pictures take seconds, not a frame; render and compare draw them.
+bool AsksForRaytrace(const ViewOptions& options)
+{
+  if (options.Scene.ShadingRule == Shading::Raytrace ||
+    options.InteractiveShading == Shading::Raytrace)
+  {
+    return true;
+  }
+  try
+  {
+    const std::vector<Panel> modes = PlanComparison(options.Panels, options.Scene).Modes;
+    return std::any_of(modes.begin(), modes.end(),
+      [](const Panel& p) { return p.Scene.ShadingRule == Shading::Raytrace; });
+  }
+  catch (const std::invalid_argument&)
+  {
+    return false; // Inspector::Load reports it
+  }
+}
+}
+
 InspectorWindow::InspectorWindow(Inspector& inspector)
   : Engine(inspector)
   , View(new QVTKOpenGLNativeWidget(this))
@@ -167,6 +193,13 @@ bool InspectorWindow::eventFilter(QObject* watched, QEvent* event)
 
 int RunView(const ViewOptions& options, const std::string& commandLine)
 {
+  if (AsksForRaytrace(options))
+  {
+    std::cerr << "shadelab: error: view: raytrace is not drawn in the window: shadelab render "
+                 "and compare draw it (see shadelab view --help)"
+              << std::endl;
+    return ExitUsage;
+  }
   // Checked first: Qt aborts the process when it finds no display.
   std::string error;
   void* display = OpenXDisplay(error);

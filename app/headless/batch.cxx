@@ -7,6 +7,7 @@
 #include "core/phase_timer.h"
 #include "core/progress_bar.h"
 #include "headless/headless_renderer.h"
+#include "headless/scene_frame.h"
 #include "headless/shader_dump.h"
 #include "image/image_writer_process.h"
 #include "image/metadata.h"
@@ -212,25 +213,34 @@ private:
         this->Options.DumpShaders,
         std::string(ToString(options.ShadingRule)) + "-" + ToString(options.ReflectionModel));
     }
+    if (auto [input, error] = RayTraceProblem(options); !error.empty())
+    {
+      this->FailFrame(shot, frame, input, error);
+      return false;
+    }
     const SceneOverlays overlays(options, scene.Mesh, this->Meshes, renderer.GetRenderer());
     renderer.SetMaximumNumberOfPeels(options.Peels);
-    // An 8-bit file's picture is rendered in 8 bits, the same bytes for less.
-    const bool eightBit = ResolvePixelType(shot.Output, shot.Scene.Pixels) == PixelType::UInt8;
+    // An 8-bit file's picture is rendered in 8 bits, the same bytes for less;
+    // a ray-traced one is quantised by the writer, as a float one is.
+    const bool eightBit = ResolvePixelType(shot.Output, shot.Scene.Pixels) == PixelType::UInt8 &&
+      options.ShadingRule != Shading::Raytrace;
     FloatImage image;
     Image8 image8;
+    std::string error;
     if (eightBit)
     {
       image8 = renderer.RenderEightBit(options.TransparentBackground);
+      error = renderer.GetError();
     }
     else
     {
-      image = renderer.Render();
+      error = SceneFrame(options, scene, renderer, image);
       image.Alpha = options.TransparentBackground;
     }
     this->Timer.Lap("frame");
-    if (!renderer.GetError().empty())
+    if (!error.empty())
     {
-      this->FailFrame(shot, frame, "render", renderer.GetError());
+      this->FailFrame(shot, frame, "render", error);
       return false;
     }
     if (dump && !dump->GetError().empty())

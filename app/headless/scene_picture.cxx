@@ -1,6 +1,7 @@
 #include "headless/scene_picture.h"
 
 #include "headless/headless_renderer.h"
+#include "headless/scene_frame.h"
 #include "scene/overlays.h"
 
 #include <vtkRenderer.h>
@@ -19,13 +20,19 @@ ScenePicture RenderScenePicture(
     return picture;
   }
   picture.Scene = shown.Scene;
+  if (auto [input, error] = RayTraceProblem(options); !error.empty())
+  {
+    picture.Input = input;
+    picture.Error = error;
+    return picture;
+  }
   const SceneOverlays overlays(options, shown.Scene->Mesh, meshes, renderer.GetRenderer());
   renderer.SetMaximumNumberOfPeels(options.Peels);
-  picture.Picture = renderer.Render();
-  if (!renderer.GetError().empty())
+  if (const std::string error = SceneFrame(options, *shown.Scene, renderer, picture.Picture);
+      !error.empty())
   {
     picture.Input = "render";
-    picture.Error = renderer.GetError();
+    picture.Error = error;
   }
   return picture;
 }

@@ -177,6 +177,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   {
     j["shadow_map_size"] = o.ShadowMapSize;
   }
+  if (o.ShadingRule == Shading::Raytrace)
+  {
+    j["reflections"] = o.Reflections;
+  }
   nlohmann::ordered_json cam;
   cam["projection"] = o.Orthographic ? "orthographic" : "perspective";
   cam["position"] = position;

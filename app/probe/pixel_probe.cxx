@@ -21,6 +21,7 @@ PixelProber::~PixelProber() = default;
 PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
   ImageSize size, const SceneImages& images, const ShadowCasters* casters)
   : Triangles(PinholeCameraOf(camera), size.Width, size.Height, PointsOf(mesh), TrianglesOf(mesh))
+  , Surface(options, mesh, images)
   , Casters(casters)
 {
   Vec3 eye;
@@ -30,15 +31,13 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Rule = options.ShadingRule;
   s.Model = options.ReflectionModel;
   s.Surface = options.EffectiveMaterial();
-  this->Parts = SceneParts(options, mesh, images);
-  this->CellParts = PartOfCells(mesh);
   s.Ia = options.Ambient;
   s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
   s.Background = options.Background;
   s.Orthographic = camera->GetParallelProjection();
-  this->In = WorldIllumination(options, s.Lights);
+  this->In = CameraIllumination(options, s.Lights, camera);
   this->Fogging = options.Fogging;
-  this->Translucent = AnyTranslucent(this->Parts) || options.FogsTowardsTransparent();
+  this->Translucent = AnyTranslucent(this->Surface.GetParts()) || options.FogsTowardsTransparent();
   this->Background = options.OpaqueBackground();
   s.Peels = options.Peels;
   if (options.Drawn != Representation::Surface)
@@ -49,8 +48,6 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
     this->Elements =
       std::make_unique<PictureElements>(this->Triangles, s.Drawn, this->ElementPixels);
   }
-  this->In.Orthographic = camera->GetParallelProjection();
-  this->In.Eye = eye;
   if (std::any_of(s.Lights.begin(), s.Lights.end(), CastsShadows))
   {
     this->Rays =
@@ -73,41 +70,9 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
       return reaches;
     };
   }
-  camera->GetDirectionOfProjection(this->In.ViewDirection.data());
-  if (UsesVertexKd(options, mesh))
-  {
-    s.VertexKd = true;
-    vtkDataArray* colors = mesh->GetPointData()->GetArray(ColorsArrayName);
-    this->Kd.resize(colors->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < colors->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        this->Kd[i][c] = colors->GetComponent(i, c);
-      }
-    }
-  }
-  vtkDataArray* coordinates = mesh->GetPointData()->GetArray(TextureCoordinatesArrayName);
-  if (coordinates &&
-    std::any_of(this->Parts.begin(), this->Parts.end(),
-      [](const ScenePart& part) { return part.Texture.Used(); }))
-  {
-    s.Textured = true;
-    this->TexCoords.resize(coordinates->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < coordinates->GetNumberOfTuples(); ++i)
-    {
-      this->TexCoords[i] = { coordinates->GetComponent(i, 0), coordinates->GetComponent(i, 1) };
-    }
-  }
-  if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
-  {
-    s.HasNormals = true;
-    this->Normals.resize(normals->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
-    {
-      normals->GetTuple(i, this->Normals[i].data());
-    }
-  }
+  s.VertexKd = this->Surface.VertexKd();
+  s.Textured = this->Surface.Textured();
+  s.HasNormals = this->Surface.HasNormals();
 }
 
 PixelProbe PixelProber::Probe(Pixel at) const
@@ -129,32 +94,20 @@ PixelProbe PixelProber::Probe(Pixel at) const
 
 void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
 {
+  const bool front = p.Fragment.Front;
+  p.Fragment =
+    this->Surface.Fragment(corners, p.Fragment.Weights, front, this->Triangles.GetPoints());
   for (int k = 0; k < 3; ++k)
   {
     p.Corners[k] = corners[k];
-    p.Fragment.Positions[k] = this->Triangles.GetPoints()[corners[k]];
-    if (p.HasNormals)
-    {
-      p.Fragment.Normals[k] = this->Normals[corners[k]];
-    }
-    if (p.Textured)
-    {
-      p.Fragment.TexCoords[k] = this->TexCoords[corners[k]];
-    }
   }
-  if (p.VertexKd)
-  {
-    p.Fragment.VertexKd = { this->Kd[corners[0]], this->Kd[corners[1]], this->Kd[corners[2]] };
-  }
-  const ScenePart& part = this->Parts[this->CellParts[p.Triangle]];
+  const ScenePart& part = this->Surface.PartOf(p.Triangle);
   p.Part = part.Index;
   p.PartName = part.Name;
   p.Source = part.Source;
   p.Surface = part.Surface;
   p.Textured = p.Textured && part.Texture.Used();
-  IlluminationInputs in = this->In;
-  in.Surface = part.Surface;
-  in.Texture = part.Texture;
+  const IlluminationInputs in = this->Surface.InputsOf(this->In, p.Triangle);
   this->Checks.assign(p.Lights.size(), {});
   p.Shaded = p.Element ? ShadeElementFragment(in, p.Rule, p.Fragment)
                        : ShadeTriangleFragment(in, p.Rule, p.Fragment);

@@ -8,6 +8,7 @@
 
 #include "core/options.h"
 #include "scene/scene_parts.h"
+#include "scene/scene_surface.h"
 #include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
 #include "shadelabTranslucency.h"
@@ -150,14 +151,10 @@ private:
   bool Translucent = false;      // a part drawn has a < 1, or fog takes coverage away
   std::optional<Rgb> Background; // none where it is transparent
   PictureTriangles Triangles;
-  std::unique_ptr<PictureElements> Elements;    // drawn as edges or points
-  int ElementPixels = 1;                        // the lines' width or the points' size
-  std::vector<ScenePart> Parts;                 // as drawn
-  std::vector<int> CellParts;                   // the part of each cell
-  std::vector<Vec3> Normals;                    // per point, when the mesh has them
-  std::vector<Rgb> Kd;                          // per point, when its colours are kd
-  std::vector<std::array<double, 2>> TexCoords; // per point, when a texture is looked up
-  std::unique_ptr<RayScene> Rays;               // shadows: the oracle's shadow rays
+  std::unique_ptr<PictureElements> Elements; // drawn as edges or points
+  int ElementPixels = 1;                     // the lines' width or the points' size
+  SceneSurface Surface;
+  std::unique_ptr<RayScene> Rays; // shadows: the oracle's shadow rays
   const ShadowCasters* Casters = nullptr;
   mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's
 };

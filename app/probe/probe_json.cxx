@@ -170,6 +170,7 @@ ordered_json ProbeJson(const PixelProbe& p)
       break;
     case Shading::Flat:
     case Shading::Gouraud:
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
       j["position"] = p.Shaded.Terms.P;
       AddTerms(j, p, p.Shaded.Terms);

@@ -298,6 +298,7 @@ std::string ProbeText(const PixelProbe& p)
       }
       oracle = "I = w0*C0 + w1*C1 + w2*C2";
       break;
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
       out.Add("", "P = " + ProbeTriple(t.P), "the surface point under the pixel centre");
       AddTerms(out, "", p, t, PhongNormal(p));

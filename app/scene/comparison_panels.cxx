@@ -71,7 +71,7 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
 }
 
 const char* const ModesHelp =
-  "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong, KEY "
+  "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong|raytrace, KEY "
   "shading|reflection|material|weighting|ns|normals; e.g. phong,phong:material=gold,"
   "gouraud:weighting=area (default flat,gouraud,phong)";
 

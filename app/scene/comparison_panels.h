@@ -38,7 +38,7 @@ struct Panel
 
 /**
  * The modes of text, "MODE[,MODE...]" with MODE = "[RULE][:KEY=VALUE]..."
- * (RULE: none|flat|gouraud|phong; KEY: shading, reflection, material,
+ * (RULE: none|flat|gouraud|phong|raytrace; KEY: shading, reflection, material,
  * weighting, ns, normals, as their options), each applied to base.
  * Throws std::invalid_argument naming the mode and the problem.
  */

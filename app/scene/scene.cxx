@@ -63,6 +63,16 @@ IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vec
   return in;
 }
 
+IlluminationInputs CameraIllumination(
+  const SceneOptions& options, const std::vector<Light>& lights, vtkCamera* camera)
+{
+  IlluminationInputs in = WorldIllumination(options, lights);
+  in.Orthographic = camera->GetParallelProjection();
+  camera->GetPosition(in.Eye.data());
+  camera->GetDirectionOfProjection(in.ViewDirection.data());
+  return in;
+}
+
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
   const BuiltScene* reuse, const SceneImages& images)
 {

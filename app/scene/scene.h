@@ -14,6 +14,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkCamera;
 class vtkPolyData;
 class vtkRenderer;
 class vtkShadelabShading;
@@ -95,6 +96,10 @@ std::vector<Light> EffectiveLights(const SceneOptions& options, const Vec3& came
  * own, and its texture, are the caller's to set); the view is the caller's.
  */
 IlluminationInputs WorldIllumination(const SceneOptions& options, const std::vector<Light>& lights);
+
+/** WorldIllumination seen through camera: its position, projection and direction of view. */
+IlluminationInputs CameraIllumination(
+  const SceneOptions& options, const std::vector<Light>& lights, vtkCamera* camera);
 }
 
 #endif

@@ -92,6 +92,11 @@ std::vector<Setting> MakeSettings()
             "such faces, a directional light's map one); larger is sharper and slower",
             PictureCommands, "2048" },
       Integer{ 1, MaxShadowMapSize }, SHADELAB_FIELD(ShadowMapSize)),
+    Plain({ "--reflections", "reflections", "N",
+            "--shading raytrace: how many mirror reflections a ray follows (each weighted by the "
+            "surface's ks); 0 shows none",
+            PictureCommands, "2" },
+      Integer{ 0, MaxReflections }, SHADELAB_FIELD(Reflections)),
     Plain({ "--fog", "fog", "MODE",
             "Fog over the surface, per fragment under every rule, d the depth along the view "
             "direction from the camera: linear:START,END (f = (END-d)/(END-START) clamped to [0, "

@@ -59,9 +59,15 @@ bool UsesVertexNormals(Shading rule)
       return false;
     case Shading::Gouraud:
     case Shading::Phong:
+    case Shading::Raytrace:
       return true;
   }
   throw std::logic_error("UsesVertexNormals: not a shading rule");
+}
+
+Shading RasterRule(Shading rule)
+{
+  return rule == Shading::Raytrace ? Shading::Phong : rule;
 }
 
 bool UsesHalfVector(Reflection model)

@@ -23,15 +23,19 @@ enum class Shading
   None,
   Flat,
   Gouraud,
-  Phong
+  Phong,
+  // The lecture's global illumination: each pixel's ray, its first hit lit
+  // as phong lights a fragment, with shadow rays, mirror reflections and the
+  // light through translucent surfaces (RayTracedPicture). Not a raster rule.
+  Raytrace
 };
 
 template <>
 struct NameTable<Shading>
 {
-  static constexpr std::array<std::pair<Shading, const char*>, 4> Entries{
+  static constexpr std::array<std::pair<Shading, const char*>, 5> Entries{
     { { Shading::None, "none" }, { Shading::Flat, "flat" }, { Shading::Gouraud, "gouraud" },
-      { Shading::Phong, "phong" } }
+      { Shading::Phong, "phong" }, { Shading::Raytrace, "raytrace" } }
   };
 };
 
@@ -91,6 +95,13 @@ struct LightGeometry
 };
 
 LightGeometry GeometryOf(LightKind kind);
+
+/**
+ * The raster rule that draws rule: itself, and phong for raytrace, whose
+ * rays' hits are lit as phong lights a fragment (the shaders draw raytrace's
+ * scene as phong: the window's view while it traces, the camera's fit).
+ */
+Shading RasterRule(Shading rule);
 
 /** Whether the rule lights with vertex normals (gouraud, phong), which a mesh needs then. */
 bool UsesVertexNormals(Shading rule);

@@ -77,6 +77,7 @@ ShadedFragment ShadeElementFragment(
           towardsViewer(f.Normals[k], f.Positions[k]) ? f.Normals[k] : -f.Normals[k];
       }
       break;
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
     {
       const std::array<double, 3>& w = f.Weights;

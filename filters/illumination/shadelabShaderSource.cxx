@@ -462,6 +462,7 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
     case Shading::Gouraud:
       AddVertexLit(f, r);
       break;
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
       AddFragmentLit(f, r);
       break;

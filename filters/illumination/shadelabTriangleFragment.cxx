@@ -139,6 +139,7 @@ ShadedFragment ShadeTriangleFragment(
       }
       s.Color = Mix<Rgb>(w, [&](int k) { return s.Vertices[k].Total(); });
       return s;
+    case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
     {
       const Vec3 interpolated = Mix<Vec3>(w, [&](int k) { return f.Normals[k]; });

@@ -526,6 +526,10 @@ struct Scene
   // --shadows, --shadow-map-size: the oracle casts shadow rays.
   bool Shadows = false;
   int ShadowMapSize = 2048;
+  // --shading raytrace: every light casts shadows, through the oracle's
+  // rays too, and ks weighs what the mirror reflection sees, Reflections
+  // bounces deep (--reflections).
+  int Reflections = 2;
   std::size_t ShadowedAtLeast = 100; // compared pixels in a shadow, for the case to say anything
 
   /** kd comes from the mesh's vertex colours. */
@@ -855,6 +859,10 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
   {
     args.insert(args.end(), { "--shadows", "--shadow-map-size", std::to_string(s.ShadowMapSize) });
   }
+  if (s.Rule == Shading::Raytrace)
+  {
+    args.insert(args.end(), { "--reflections", std::to_string(s.Reflections) });
+  }
   if (s.Drawn != shadelab::Representation::Surface)
   {
     args.insert(args.end(),
@@ -932,11 +940,11 @@ public:
       {
         l.Attenuation = WorldAttenuation(s, s.Attenuation); // the scene's
       }
-      l.Shadows = s.Shadows;
+      l.Shadows = this->CastShadows();
       this->In.Lights.push_back(shadelab::ToFrame(l));
       this->Lights.push_back(l);
     }
-    if (s.Shadows)
+    if (this->CastShadows())
     {
       this->Rays =
         std::make_unique<shadelab::RayScene>(this->Triangles.GetPoints(), this->M.Triangles);
@@ -1122,7 +1130,7 @@ private:
   // the ring).
   bool NearSwitch(int t, bool front, double x, double y) const
   {
-    if (this->S.Rule != Shading::Phong &&
+    if (shadelab::RasterRule(this->S.Rule) != Shading::Phong &&
       !(this->S.Textured && this->S.Filter == shadelab::TextureFilter::Nearest))
     {
       return false;
@@ -1187,6 +1195,11 @@ private:
       ? shadelab::ShadeElementFragment(in, this->S.Rule, f)
       : shadelab::ShadeTriangleFragment(in, this->S.Rule, f);
     e.Value = shaded.Color;
+    if (this->S.Rule == Shading::Raytrace)
+    {
+      e.Value =
+        e.Value + KsOf(in, shaded) * this->Mirror(shaded, { 0, 0, -1 }, this->S.Reflections);
+    }
     if (this->S.Fog.Mode != shadelab::FogMode::None)
     {
       // Per fragment under every rule: at the point under the pixel centre,
@@ -1210,7 +1223,11 @@ private:
   bool Reaches(std::size_t l, const Vec3& P, const Vec3& N) const
   {
     const bool reaches = this->Rays->LightReaches(P, N, this->Lights[l]);
-    const double band = 0.01 * this->S.Scale * 2048 / this->S.ShadowMapSize;
+    // Ray traced, the picture's shadow rays are the oracle's, cast from P as
+    // its own ray found it: the band only covers their roundings.
+    const double band = this->S.Rule == Shading::Raytrace
+      ? 1e-9 * this->S.Scale
+      : 0.01 * this->S.Scale * 2048 / this->S.ShadowMapSize;
     // Across the surface: the plane of the triangle that P lies on (the
     // normal N may lean off it), found by a ray back along N.
     const shadelab::RayScene::Hit under =
@@ -1232,6 +1249,64 @@ private:
       }
     }
     return reaches;
+  }
+
+  bool CastShadows() const { return this->S.Shadows || this->S.Rule == Shading::Raytrace; }
+
+  static Rgb KsOf(const IlluminationInputs& in, const shadelab::ShadedFragment& at)
+  {
+    return at.Ks.value_or(in.Surface.Ks);
+  }
+
+  // Ray traced: what the mirror reflection of a ray along unit D sees at
+  // fragment `at` (lit with its normal turned towards the viewer), bounces
+  // deep: the reflected ray R = D - 2(D.N)N, from P moved ShadowRayOffset
+  // of the diagonal off its face, meets the mesh first at a point that is
+  // lit from P as phong lights it, plus its own reflection weighted by its
+  // ks; R into the face, or meeting nothing, sees black (the background of
+  // these scenes). Opaque scenes only: no light through translucent ones,
+  // and no vertex colours on what a mirror sees.
+  Rgb Mirror(const shadelab::ShadedFragment& at, const Vec3& D, int bounces) const
+  {
+    const Vec3& N = at.Terms.N;
+    if (bounces == 0 || dot(N, N) == 0)
+    {
+      return {};
+    }
+    const Vec3 R = normalize(D - 2 * dot(D, N) * N);
+    const Vec3 face = dot(at.FaceNormal, D) < 0 ? at.FaceNormal : -1.0 * at.FaceNormal;
+    if (!(dot(R, face) > 0))
+    {
+      return {};
+    }
+    const Vec3 origin = at.Point + shadelab::ShadowRayOffset * this->Rays->Diagonal() * face;
+    const shadelab::RayScene::Hit hit = this->Rays->First({ origin, R });
+    if (hit.Triangle < 0)
+    {
+      return {};
+    }
+    const int t = static_cast<int>(hit.Triangle);
+    shadelab::TriangleFragment f;
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto v = this->M.Triangles[t][k];
+      f.Positions[k] = this->Triangles.GetPoints()[v];
+      f.Normals[k] = this->M.Normals[v];
+      f.TexCoords[k] = this->M.TexCoords[v];
+    }
+    f.Weights = hit.Weights;
+    const auto& P = f.Positions;
+    f.Front = dot(cross(P[1] - P[0], P[2] - P[0]), R) < 0;
+    IlluminationInputs in = this->In;
+    in.Surface = SurfaceOf(this->S, t);
+    if (!TexturedPart(this->S, t))
+    {
+      in.Texture = {};
+    }
+    in.Orthographic = false;
+    in.Eye = origin;
+    const shadelab::ShadedFragment there = shadelab::ShadeTriangleFragment(in, Shading::Phong, f);
+    return there.Color + KsOf(in, there) * this->Mirror(there, R, bounces - 1);
   }
 
   const Scene& S;
@@ -1486,7 +1561,7 @@ inline void ExpectMatchesOracle(const Case& c)
   }
   EXPECT_EQ(d.FlatDifferent, 0u) << "flat: more than one colour in a triangle: " << d.FirstFlat;
   EXPECT_EQ(d.AlphaWrong, 0u) << "alpha off the coverage: " << d.FirstAlpha;
-  if (c.S.Shadows)
+  if (c.S.Shadows || c.S.Rule == Shading::Raytrace)
   {
     std::cout << "[oracle] " << c.Name << ": " << d.Shadowed << " compared pixels in a shadow, "
               << d.ShadowBand << " left out at a shadow's edge" << std::endl;

@@ -336,6 +336,23 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--shadows", "--shadow-map-size", "9000" });
     },
     1, { "--shadow-map-size 9000", "no memory" } },
+  { "ReflectionsNegative",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shading", "raytrace", "--reflections", "-1" });
+    },
+    2, { "--reflections", "not in range" } },
+  // The ray tracer traces the surface: edges and points are the raster's.
+  { "RaytraceWireframe",
+    [](const TempDir& d) {
+      return WithMesh(
+        d, "t.obj", Tetrahedron, { "--shading", "raytrace", "--representation", "wireframe" });
+    },
+    1, { "--representation wireframe", "traces the surface alone" } },
+  { "RaytraceEdges",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--shading", "raytrace", "--edges" });
+    },
+    1, { "--edges", "traces the surface alone" } },
   { "LightsShadowsNotABoolean",
     [](const TempDir& d)
     {
@@ -685,6 +702,24 @@ TEST(AwkwardInput, ViewWithoutADisplayIsAOneLineError)
   const RunResult bad =
     RunShadelab({ "view", TestMesh("teapot.obj").string(), "--interactive-shading", "fast" });
   EXPECT_EQ(bad.ExitCode, 2) << bad.Stderr;
+}
+
+// The window draws the raster rules; asked for raytrace (the rule, the
+// drag's, a comparison's mode) it says so in one line, before it looks for
+// a display.
+TEST(AwkwardInput, ViewRefusesRaytraceWithOneLine)
+{
+  for (const std::vector<std::string>& args :
+    { std::vector<std::string>{ "--shading", "raytrace" }, { "--modes", "phong,raytrace" } })
+  {
+    std::vector<std::string> view{ "view", TestMesh("teapot.obj").string() };
+    view.insert(view.end(), args.begin(), args.end());
+    const RunResult run = RunShadelab(view);
+    EXPECT_EQ(run.ExitCode, 2) << args[1] << ": " << run.Stderr;
+    EXPECT_NE(run.Stderr.find("view: raytrace is not drawn in the window"), std::string::npos)
+      << run.Stderr;
+    EXPECT_EQ(std::count(run.Stderr.begin(), run.Stderr.end(), '\n'), 1) << run.Stderr;
+  }
 }
 
 // An MTL library outside the mesh's folder is refused like a missing one (a

@@ -49,7 +49,7 @@ expect "render" shadelab re
 expect "--shading --shadow-map-size --shadows --shard" shadelab render --sh
 expect "--modes" shadelab compare --mo
 expect "auto compute file" shadelab render --normals ""
-expect "flat gouraud none phong" shadelab render --shading ""
+expect "flat gouraud none phong raytrace" shadelab render --shading ""
 expect "gouraud" shadelab render --shading=g
 expect "flat gouraud none phong" shadelab view --interactive-shading ""
 expect "blinn phong" shadelab probe -q --reflection ""

@@ -1,0 +1,47 @@
+#include "headless/scene_frame.h"
+
+#include "headless/headless_renderer.h"
+#include "raytrace/ray_tracer.h"
+
+#include <vtkRenderer.h>
+
+namespace shadelab
+{
+std::pair<std::string, std::string> RayTraceProblem(const SceneOptions& options)
+{
+  if (options.ShadingRule != Shading::Raytrace)
+  {
+    return {};
+  }
+  const auto refused = [](const std::string& option) {
+    return std::pair{ option, "--shading raytrace traces the surface alone, without it" };
+  };
+  if (options.Drawn != Representation::Surface)
+  {
+    return refused(std::string("--representation ") + ToString(options.Drawn));
+  }
+  if (options.Edges)
+  {
+    return refused("--edges");
+  }
+  if (options.NormalGlyphs)
+  {
+    return refused("--normal-glyphs");
+  }
+  return {};
+}
+
+std::string SceneFrame(const SceneOptions& options, const BuiltScene& scene,
+  HeadlessRenderer& renderer, FloatImage& frame)
+{
+  if (options.ShadingRule != Shading::Raytrace)
+  {
+    frame = renderer.Render();
+    return renderer.GetError();
+  }
+  const RayTracer tracer(
+    options, scene.Mesh, renderer.GetRenderer()->GetActiveCamera(), scene.Images);
+  frame = tracer.Picture(options.Supersampling);
+  return {};
+}
+}

@@ -1,0 +1,156 @@
+#include "raytrace/ray_tracer.h"
+
+#include "scene/scene.h"
+#include "shadelabMeshTriangles.h"
+#include "shadelabVec3.h"
+
+#include <vtkCamera.h>
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+namespace shadelab
+{
+RayTracer::~RayTracer() = default;
+
+RayTracer::RayTracer(
+  const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera, const SceneImages& images)
+  : Size(options.Size)
+  , Reflections(options.Reflections)
+  , Camera(PinholeCameraOf(camera))
+  , Surfaces(options, mesh, images)
+  , Rays(std::make_unique<RayScene>(PointsOf(mesh), TrianglesOf(mesh)))
+  , Fogging(options.Fogging)
+  , Background(options.OpaqueBackground())
+{
+  // Shadows are global illumination's own: every light casts them here
+  // unless it says otherwise, whatever --shadows says of the raster rules.
+  SceneOptions traced = options;
+  traced.Shadows = true;
+  this->Lights = EffectiveLights(traced, this->Camera.Position);
+  this->View = CameraIllumination(options, this->Lights, camera);
+  this->View.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
+  { return this->Rays->LightReaches(P, N, this->Lights[l]); };
+}
+
+RayTracer::Surface RayTracer::LightHit(const Ray& ray, const RayScene::Hit& hit,
+  const IlluminationInputs& view, int bounces, bool camera) const
+{
+  using namespace vec3;
+  const TriangleCorners& corners = this->Rays->GetTriangles()[hit.Triangle];
+  const std::vector<Vec3>& points = this->Rays->GetPoints();
+  const Vec3 across = cross(points[corners[1]] - points[corners[0]],
+    points[corners[2]] - points[corners[0]]); // the face's normal, counter-clockwise
+  // Front: counter-clockwise as the ray sees it, as the rasteriser decides
+  // for the camera's rays.
+  const bool front = dot(across, ray.Direction) < 0;
+  const IlluminationInputs in = this->Surfaces.InputsOf(view, hit.Triangle);
+  Surface s;
+  s.Local = ShadeTriangleFragment(
+    in, Shading::Phong, this->Surfaces.Fragment(corners, hit.Weights, front, points));
+  s.Ks = s.Local.Ks.value_or(in.Surface.Ks);
+  s.Color = s.Local.Color;
+  s.Opacity = in.Surface.Translucency;
+  const Vec3& N = s.Local.Terms.N; // as lit: unit, turned towards the viewer; 0 for none
+  if (bounces > 0 && std::max({ s.Ks[0], s.Ks[1], s.Ks[2] }) > 0 && dot(N, N) > 0)
+  {
+    const Vec3 R = ray.Direction - (2 * dot(ray.Direction, N)) * N;
+    // The mirror sees what lies in front of the face: a shading normal that
+    // leans off the face can reflect into it, and there it sees nothing.
+    const Vec3 outward = (front ? 1.0 : -1.0) * normalize(across);
+    if (dot(R, outward) > 0)
+    {
+      s.Mirror =
+        Ray{ s.Local.Point + (ShadowRayOffset * this->Rays->Diagonal()) * outward, normalize(R) };
+      IlluminationInputs from = this->View;
+      from.Orthographic = false;
+      from.Eye = s.Mirror->Origin;
+      s.Reflected = this->Trace(*s.Mirror, 0, from, bounces - 1, this->Beyond(), false).Color;
+      s.Color = s.Color + s.Ks * s.Reflected;
+    }
+  }
+  if (camera && this->Fogging.Mode != FogMode::None)
+  {
+    // Depth cueing: by the eye-space depth of the camera ray's hit, as the
+    // raster rules fog each fragment; a reflection is part of that colour.
+    s.Fogged = FogOver(this->Fogging, s.Color, s.Local.Point, this->View.Eye,
+      this->View.ViewDirection, this->Background);
+    s.Color = s.Fogged->After;
+    s.Opacity *= s.Fogged->Transparent ? s.Fogged->Factor : 1;
+  }
+  return s;
+}
+
+Covered RayTracer::Trace(const Ray& ray, double tMin, const IlluminationInputs& view, int bounces,
+  const Covered& behind, bool camera) const
+{
+  std::vector<Layer> translucent; // nearest first
+  Covered last = behind;
+  // Straight on through translucent surfaces (no refraction): each one's T
+  // is beyond the last, so the walk ends.
+  for (double t = tMin;;)
+  {
+    const RayScene::Hit hit = this->Rays->First(ray, t);
+    if (hit.Triangle < 0)
+    {
+      break;
+    }
+    t = hit.T;
+    const Surface s = this->LightHit(ray, hit, view, bounces, camera);
+    if (s.Opacity >= 1)
+    {
+      last = { s.Color, 1 };
+      break;
+    }
+    translucent.push_back({ s.Color, s.Opacity });
+  }
+  return Composite(translucent, last);
+}
+
+Covered RayTracer::Sample(int width, int height, double x, double y) const
+{
+  return this->Trace(PictureRay(this->Camera, width, height, x, y), 0, this->View,
+    this->Reflections, this->Beyond(), true);
+}
+
+Covered RayTracer::Beyond() const
+{
+  return this->Background ? Covered{ *this->Background, 1 } : Covered{ { 0, 0, 0 }, 0 };
+}
+
+FloatImage RayTracer::Picture(int samples) const
+{
+  FloatImage image;
+  image.Width = this->Size.Width * samples;
+  image.Height = this->Size.Height * samples;
+  image.Rgba.resize(static_cast<std::size_t>(image.Width) * image.Height * 4);
+  std::atomic<int> next{ 0 };
+  const auto rows = [&]
+  {
+    for (int y; (y = next++) < image.Height;)
+    {
+      // Bottom row first, as OpenGL reads them; picture y from the top.
+      float* out =
+        image.Rgba.data() + static_cast<std::size_t>(image.Height - 1 - y) * image.Width * 4;
+      for (int x = 0; x < image.Width; ++x, out += 4)
+      {
+        const Covered c = this->Sample(image.Width, image.Height, x + 0.5, y + 0.5);
+        std::copy(c.Color.begin(), c.Color.end(), out);
+        out[3] = static_cast<float>(c.Alpha);
+      }
+    }
+  };
+  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  for (std::thread& thread : threads)
+  {
+    thread = std::thread(rows);
+  }
+  rows();
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  return samples > 1 ? BoxAverage(image, samples) : image;
+}
+}

@@ -1,0 +1,99 @@
+// The ray-traced rule, --shading raytrace (doc/design.md, "Ray tracing"):
+// the lecture's global illumination in double precision. Each sample's ray
+// meets the mesh (Embree's hierarchy, each candidate tested in double); the
+// hit is lit as phong lights a fragment, every light's shadow ray cast; a
+// surface with ks adds ks times what its mirror reflection sees, up to
+// --reflections bounces; a translucent one lets (1 - a) of what lies
+// straight behind it through. Where nothing global happens its picture is
+// the phong rule's.
+#ifndef shadelab_ray_tracer_h
+#define shadelab_ray_tracer_h
+
+#include "core/options.h"
+#include "image/image_pixels.h"
+#include "scene/scene_surface.h"
+#include "shadelabFog.h"
+#include "shadelabRayScene.h"
+#include "shadelabTranslucency.h"
+
+#include <memory>
+#include <optional>
+
+class vtkCamera;
+class vtkPolyData;
+
+namespace shadelab
+{
+class RayTracer
+{
+public:
+  /**
+   * options' scene as BuildScene made it: `mesh` (BuiltScene::Mesh),
+   * `camera` the renderer's, `images` its textures' (BuiltScene::Images).
+   * Every light casts shadows but one that says otherwise (+no-shadows).
+   */
+  RayTracer(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
+    const SceneImages& images = {});
+  ~RayTracer();
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+
+  /**
+   * The picture at options' size, samples x samples rays a pixel
+   * (--ssaa) box-averaged as the raster's samples are, on every core; its
+   * alpha the coverage (1 over an opaque background).
+   */
+  FloatImage Picture(int samples) const;
+
+  /** What the camera's ray through picture point (x, y) of a width x height picture sees. */
+  Covered Sample(int width, int height, double x, double y) const;
+
+  /**
+   * The light coming back along ray from what it meets beyond tMin: every
+   * surface on it composited in depth order over what lies behind
+   * (`behind`: Beyond()), each surface lit from `view` (its eye the ray's
+   * origin, or the camera) with `bounces` reflections left. `camera`: the
+   * ray is the camera's, whose hits are fogged.
+   */
+  Covered Trace(const Ray& ray, double tMin, const IlluminationInputs& view, int bounces,
+    const Covered& behind, bool camera) const;
+
+  /** A surface point's own light and its reflection's share, and its opacity. */
+  struct Surface
+  {
+    ShadedFragment Local;        // the phong rule's fragment, shadow rays cast
+    std::optional<Ray> Mirror;   // the reflected ray followed, if any
+    Rgb Reflected{};             // what that ray saw
+    Rgb Ks{};                    // what weighs it
+    std::optional<FogAt> Fogged; // a camera ray's hit, with fog
+    Rgb Color{};                 // Local + Ks * Reflected, fogged
+    double Opacity = 1;          // a, fog towards transparent taking its share
+  };
+
+  /** The hit of ray on triangle `hit` lit from `view`, bounces reflections left. */
+  Surface LightHit(const Ray& ray, const RayScene::Hit& hit, const IlluminationInputs& view,
+    int bounces, bool camera) const;
+
+  const RayScene& GetRays() const { return *this->Rays; }
+  const IlluminationInputs& GetCameraView() const { return this->View; }
+
+  /**
+   * What a ray that meets nothing sees: the background, as in Whitted's
+   * ray tracer (a mirror shows it too), or nothing where it is transparent.
+   */
+  Covered Beyond() const;
+
+private:
+  ImageSize Size;
+  int Reflections = 2;
+  PinholeCamera Camera;
+  SceneSurface Surfaces;
+  std::unique_ptr<RayScene> Rays;
+  std::vector<Light> Lights; // as lit, in world coordinates
+  IlluminationInputs View;   // the camera's, every light casting shadows by the rays
+  Fog Fogging;
+  std::optional<Rgb> Background; // none where it is transparent
+};
+}
+
+#endif

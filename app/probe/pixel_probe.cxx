@@ -32,7 +32,14 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Model = options.ReflectionModel;
   s.Surface = options.EffectiveMaterial();
   s.Ia = options.Ambient;
-  s.Lights = EffectiveLights(options, eye); // as BuildScene lights it
+  // As BuildScene lights it, or the ray tracer.
+  s.Lights = options.ShadingRule == Shading::Raytrace ? RayTracedLights(options, eye)
+                                                      : EffectiveLights(options, eye);
+  if (options.ShadingRule == Shading::Raytrace)
+  {
+    this->Tracer = std::make_unique<RayTracer>(options, mesh, camera, images);
+    s.Reflections = options.Reflections;
+  }
   s.Background = options.Background;
   s.Orthographic = camera->GetParallelProjection();
   this->In = CameraIllumination(options, s.Lights, camera);
@@ -85,7 +92,12 @@ PixelProbe PixelProber::Probe(Pixel at) const
     return p;
   }
   this->Shade(p, corners);
-  if (this->Translucent && !p.Element)
+  if (this->Tracer)
+  {
+    p.Traced = this->Tracer->Explain(
+      p.Size.Width, p.Size.Height, at.X + 0.5, at.Y + 0.5, p.Sources);
+  }
+  else if (this->Translucent && !p.Element)
   {
     this->Composite(p);
   }

@@ -7,6 +7,7 @@
 #define shadelab_pixel_probe_h
 
 #include "core/options.h"
+#include "raytrace/ray_tracer.h"
 #include "scene/scene_parts.h"
 #include "scene/scene_surface.h"
 #include "shadelabPictureElements.h"
@@ -109,6 +110,13 @@ struct PixelProbe
   std::vector<Layer> Layers;
   int Peels = 0;
   std::optional<Covered> Composited;
+
+  // Ray traced: the sample at the pixel centre (the oracle) and where its
+  // light comes from, the surfaces its rays met and what each adds; the
+  // rest explains the nearest surface's own light.
+  std::optional<Covered> Traced;
+  std::vector<RayTracer::Source> Sources;
+  int Reflections = 0; // --reflections
 };
 
 /** A scene's picture, ready to explain pixel after pixel. */
@@ -154,7 +162,8 @@ private:
   std::unique_ptr<PictureElements> Elements; // drawn as edges or points
   int ElementPixels = 1;                     // the lines' width or the points' size
   SceneSurface Surface;
-  std::unique_ptr<RayScene> Rays; // shadows: the oracle's shadow rays
+  std::unique_ptr<RayScene> Rays;      // shadows: the oracle's shadow rays
+  std::unique_ptr<RayTracer> Tracer; // raytrace: the picture's rays
   const ShadowCasters* Casters = nullptr;
   mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's
 };

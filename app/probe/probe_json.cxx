@@ -10,6 +10,20 @@ namespace
 using nlohmann::ordered_json;
 
 // A light as the scene gives it and its terms at the point.
+const char* SourceKind(const RayTracer::Source& s)
+{
+  switch (s.What)
+  {
+    case RayTracer::Source::Surface:
+      return s.Bounce > 0 ? "reflected" : s.Through > 0 ? "transmitted" : "surface";
+    case RayTracer::Source::Background:
+      return "background";
+    case RayTracer::Source::Fog:
+      return "fog";
+  }
+  return "";
+}
+
 ordered_json LightJson(const PixelProbe& p, std::size_t l, const LightTerms& t)
 {
   const Light& light = p.Lights[l];
@@ -106,7 +120,40 @@ ordered_json ProbeJson(const PixelProbe& p)
     j["background"] = p.Background;
     return j;
   }
-  j["oracle"] = p.Composited ? p.Composited->Color : p.Shaded.Color;
+  j["oracle"] = p.Traced ? p.Traced->Color : p.Composited ? p.Composited->Color : p.Shaded.Color;
+  if (p.Traced)
+  {
+    // Where the ray-traced sample's light comes from: these adds sum to the
+    // oracle; the rest explains the nearest surface's own light.
+    auto sources = nlohmann::ordered_json::array();
+    for (const RayTracer::Source& s : p.Sources)
+    {
+      ordered_json source = { { "kind", SourceKind(s) }, { "bounce", s.Bounce },
+        { "through", s.Through } };
+      if (s.What != RayTracer::Source::Background)
+      {
+        source["point"] = s.Point;
+        source["distance"] = s.Distance;
+      }
+      if (s.What == RayTracer::Source::Surface)
+      {
+        source["triangle"] = s.Triangle;
+        source["a"] = s.Opacity;
+        auto shadowed = nlohmann::ordered_json::array();
+        for (const LightTerms& l : s.Local.Terms.Lights)
+        {
+          shadowed.push_back(l.Shadowed);
+        }
+        source["shadowed"] = shadowed;
+      }
+      source["color"] = s.Color;
+      source["weight"] = s.Weight;
+      source["adds"] = s.Adds;
+      sources.push_back(source);
+    }
+    j["raytrace"] = { { "reflections", p.Reflections }, { "sources", sources },
+      { "coverage", p.Traced->Alpha } };
+  }
   if (p.Composited)
   {
     // Nearest first, down to the first opaque one; the rest of this

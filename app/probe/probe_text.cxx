@@ -75,6 +75,48 @@ std::string LightName(const Light& l, std::size_t index)
   return name + ", colour " + ProbeTriple(l.Color);
 }
 
+// Ray traced: where the sample's light comes from, each surface its rays
+// met with its own light and what that adds, summing to the oracle.
+void AddSources(Lines& out, const PixelProbe& p)
+{
+  out.Add("", "where the ray-traced light comes from:",
+    "up to " + std::to_string(p.Reflections) +
+      " mirror reflections, each weighted by ks; (1 - a) through a translucent surface");
+  for (const RayTracer::Source& s : p.Sources)
+  {
+    std::string what;
+    switch (s.What)
+    {
+      case RayTracer::Source::Surface:
+      {
+        what = "triangle " + std::to_string(s.Triangle) + " at distance " +
+          ProbeNumber(s.Distance) + ", its own I = " + ProbeTriple(s.Color);
+        for (std::size_t l = 0; l < s.Local.Terms.Lights.size(); ++l)
+        {
+          if (s.Local.Terms.Lights[l].Shadowed)
+          {
+            what += ", light " + std::to_string(l + 1) + " in shadow";
+          }
+        }
+        break;
+      }
+      case RayTracer::Source::Background:
+        what = "the background " + ProbeTriple(s.Color) + ", met by nothing";
+        break;
+      case RayTracer::Source::Fog:
+        what = "the fog's colour " + ProbeTriple(s.Color);
+        break;
+    }
+    const std::string path = s.Bounce == 0 ? "the camera's ray"
+                                           : "reflection " + std::to_string(s.Bounce);
+    out.Add("  ",
+      path + (s.Through > 0 ? ", through " + std::to_string(s.Through) : "") + ": " + what +
+        ", times " + ProbeTriple(s.Weight) + " adds " + ProbeTriple(s.Adds));
+  }
+  out.Add("", "sum = " + ProbeTriple(p.Traced->Color) + ", coverage " + ProbeNumber(p.Traced->Alpha),
+    "the oracle");
+}
+
 // Translucency: each surface under the pixel centre with its a and I, and
 // their composite in depth order, the oracle.
 void AddLayers(Lines& out, const PixelProbe& p)
@@ -325,11 +367,15 @@ std::string ProbeText(const PixelProbe& p)
   else
   {
     out.Add("", oracle + " = " + ProbeTriple(p.Shaded.Color),
-      p.Composited ? "the nearest surface's colour" : "the oracle");
+      p.Composited || p.Traced ? "the nearest surface's colour" : "the oracle");
   }
   if (p.Composited)
   {
     AddLayers(out, p);
+  }
+  if (p.Traced)
+  {
+    AddSources(out, p);
   }
   out.Add("", rendered, p.RenderedFrom);
   out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");

@@ -12,6 +12,14 @@
 
 namespace shadelab
 {
+std::vector<Light> RayTracedLights(const SceneOptions& options, const Vec3& cameraPosition)
+{
+  // Shadows are global illumination's own.
+  SceneOptions traced = options;
+  traced.Shadows = true;
+  return EffectiveLights(traced, cameraPosition);
+}
+
 RayTracer::~RayTracer() = default;
 
 RayTracer::RayTracer(
@@ -24,18 +32,26 @@ RayTracer::RayTracer(
   , Fogging(options.Fogging)
   , Background(options.OpaqueBackground())
 {
-  // Shadows are global illumination's own: every light casts them here
-  // unless it says otherwise, whatever --shadows says of the raster rules.
-  SceneOptions traced = options;
-  traced.Shadows = true;
-  this->Lights = EffectiveLights(traced, this->Camera.Position);
+  this->Lights = RayTracedLights(options, this->Camera.Position);
   this->View = CameraIllumination(options, this->Lights, camera);
   this->View.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
   { return this->Rays->LightReaches(P, N, this->Lights[l]); };
 }
 
+namespace
+{
+// Sources' weights times factor, from the first one on.
+void Weigh(std::vector<RayTracer::Source>& sources, std::size_t first, const Rgb& factor)
+{
+  for (std::size_t k = first; k < sources.size(); ++k)
+  {
+    sources[k].Weight = sources[k].Weight * factor;
+  }
+}
+}
+
 RayTracer::Surface RayTracer::LightHit(const Ray& ray, const RayScene::Hit& hit,
-  const IlluminationInputs& view, int bounces, bool camera) const
+  const IlluminationInputs& view, int bounces, bool camera, std::vector<Source>* sources) const
 {
   using namespace vec3;
   const TriangleCorners& corners = this->Rays->GetTriangles()[hit.Triangle];
@@ -52,6 +68,20 @@ RayTracer::Surface RayTracer::LightHit(const Ray& ray, const RayScene::Hit& hit,
   s.Ks = s.Local.Ks.value_or(in.Surface.Ks);
   s.Color = s.Local.Color;
   s.Opacity = in.Surface.Translucency;
+  const std::size_t first = sources ? sources->size() : 0;
+  if (sources)
+  {
+    Source own;
+    own.Bounce = this->Reflections - bounces;
+    own.Triangle = hit.Triangle;
+    own.Point = s.Local.Point;
+    own.Distance = hit.T;
+    own.Opacity = s.Opacity;
+    own.Local = s.Local;
+    own.Color = s.Local.Color;
+    own.Weight = { 1, 1, 1 };
+    sources->push_back(own);
+  }
   const Vec3& N = s.Local.Terms.N; // as lit: unit, turned towards the viewer; 0 for none
   if (bounces > 0 && std::max({ s.Ks[0], s.Ks[1], s.Ks[2] }) > 0 && dot(N, N) > 0)
   {
@@ -66,8 +96,14 @@ RayTracer::Surface RayTracer::LightHit(const Ray& ray, const RayScene::Hit& hit,
       IlluminationInputs from = this->View;
       from.Orthographic = false;
       from.Eye = s.Mirror->Origin;
-      s.Reflected = this->Trace(*s.Mirror, 0, from, bounces - 1, this->Beyond(), false).Color;
+      const std::size_t mirrored = sources ? sources->size() : 0;
+      s.Reflected =
+        this->Trace(*s.Mirror, 0, from, bounces - 1, this->Beyond(), false, sources).Color;
       s.Color = s.Color + s.Ks * s.Reflected;
+      if (sources)
+      {
+        Weigh(*sources, mirrored, s.Ks);
+      }
     }
   }
   if (camera && this->Fogging.Mode != FogMode::None)
@@ -78,34 +114,84 @@ RayTracer::Surface RayTracer::LightHit(const Ray& ray, const RayScene::Hit& hit,
       this->View.ViewDirection, this->Background);
     s.Color = s.Fogged->After;
     s.Opacity *= s.Fogged->Transparent ? s.Fogged->Factor : 1;
+    if (sources && !s.Fogged->Transparent)
+    {
+      const double f = s.Fogged->Factor;
+      Weigh(*sources, first, { f, f, f });
+      Source fog;
+      fog.What = Source::Fog;
+      fog.Point = s.Local.Point;
+      fog.Distance = hit.T;
+      fog.Color = s.Fogged->Color;
+      fog.Weight = { 1 - f, 1 - f, 1 - f };
+      sources->push_back(fog);
+    }
   }
   return s;
 }
 
 Covered RayTracer::Trace(const Ray& ray, double tMin, const IlluminationInputs& view, int bounces,
-  const Covered& behind, bool camera) const
+  const Covered& behind, bool camera, std::vector<Source>* sources) const
 {
   std::vector<Layer> translucent; // nearest first
   Covered last = behind;
+  double through = 1; // the product of the nearer surfaces' (1 - a)
   // Straight on through translucent surfaces (no refraction): each one's T
   // is beyond the last, so the walk ends.
   for (double t = tMin;;)
   {
     const RayScene::Hit hit = this->Rays->First(ray, t);
+    const std::size_t first = sources ? sources->size() : 0;
     if (hit.Triangle < 0)
     {
+      if (sources)
+      {
+        Source background;
+        background.What = Source::Background;
+        background.Bounce = this->Reflections - bounces;
+        background.Through = static_cast<int>(translucent.size());
+        background.Color = behind.Color;
+        background.Weight = { through, through, through };
+        sources->push_back(background);
+      }
       break;
     }
     t = hit.T;
-    const Surface s = this->LightHit(ray, hit, view, bounces, camera);
+    const Surface s = this->LightHit(ray, hit, view, bounces, camera, sources);
+    // Composite's weights: a * (the nearer (1 - a)), the opaque one's 1 * them.
+    const double share = through * std::min(s.Opacity, 1.0);
+    if (sources)
+    {
+      Weigh(*sources, first, { share, share, share });
+      for (std::size_t k = first; k < sources->size(); ++k)
+      {
+        (*sources)[k].Through += (*sources)[k].Bounce == this->Reflections - bounces
+          ? static_cast<int>(translucent.size())
+          : 0;
+      }
+    }
     if (s.Opacity >= 1)
     {
       last = { s.Color, 1 };
       break;
     }
+    through *= 1 - s.Opacity;
     translucent.push_back({ s.Color, s.Opacity });
   }
   return Composite(translucent, last);
+}
+
+Covered RayTracer::Explain(
+  int width, int height, double x, double y, std::vector<Source>& sources) const
+{
+  sources.clear();
+  const Covered sample = this->Trace(PictureRay(this->Camera, width, height, x, y), 0, this->View,
+    this->Reflections, this->Beyond(), true, &sources);
+  for (Source& source : sources)
+  {
+    source.Adds = source.Weight * source.Color;
+  }
+  return sample;
 }
 
 Covered RayTracer::Sample(int width, int height, double x, double y) const

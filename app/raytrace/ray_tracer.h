@@ -24,13 +24,20 @@ class vtkPolyData;
 
 namespace shadelab
 {
+/**
+ * The lights a ray-traced picture of options is lit by, seen from
+ * cameraPosition (EffectiveLights): every one casting shadows unless it
+ * says otherwise (+no-shadows), whatever --shadows says of the raster rules.
+ */
+std::vector<Light> RayTracedLights(const SceneOptions& options, const Vec3& cameraPosition);
+
 class RayTracer
 {
 public:
   /**
    * options' scene as BuildScene made it: `mesh` (BuiltScene::Mesh),
-   * `camera` the renderer's, `images` its textures' (BuiltScene::Images).
-   * Every light casts shadows but one that says otherwise (+no-shadows).
+   * `camera` the renderer's, `images` its textures' (BuiltScene::Images),
+   * lit by RayTracedLights.
    */
   RayTracer(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
     const SceneImages& images = {});
@@ -49,6 +56,34 @@ public:
   Covered Sample(int width, int height, double x, double y) const;
 
   /**
+   * Where a sample's light comes from: each surface its rays met (the
+   * camera's, the mirrors', through translucent ones), the background and
+   * the fog, with what each adds to the sample.
+   */
+  struct Source
+  {
+    enum Kind
+    {
+      Surface,    // a surface's own light: the phong fragment, shadow rays cast
+      Background, // what a ray that met nothing saw (Beyond)
+      Fog         // the fog's colour, where the camera's ray was fogged
+    } What = Surface;
+    int Bounce = 0;       // mirror reflections before it: 0 on the camera's ray
+    int Through = 0;      // translucent surfaces before it on its ray
+    std::int64_t Triangle = -1;
+    Vec3 Point{};         // where its ray met it
+    double Distance = 0;  // from its ray's origin (the camera's, or the mirror point)
+    double Opacity = 1;   // its a
+    ShadedFragment Local; // its own light, with each light's shadow ray's answer
+    Rgb Color{};          // its own light (Local.Color), the background's or the fog's colour
+    Rgb Weight{};         // what Color is multiplied by in the sample: the a, (1 - a), ks and f on the way
+    Rgb Adds{};           // Weight * Color: these sum to the sample
+  };
+
+  /** Sample(width, height, x, y), and where its light comes from. */
+  Covered Explain(int width, int height, double x, double y, std::vector<Source>& sources) const;
+
+  /**
    * The light coming back along ray from what it meets beyond tMin: every
    * surface on it composited in depth order over what lies behind
    * (`behind`: Beyond()), each surface lit from `view` (its eye the ray's
@@ -56,7 +91,7 @@ public:
    * ray is the camera's, whose hits are fogged.
    */
   Covered Trace(const Ray& ray, double tMin, const IlluminationInputs& view, int bounces,
-    const Covered& behind, bool camera) const;
+    const Covered& behind, bool camera, std::vector<Source>* sources = nullptr) const;
 
   /** A surface point's own light and its reflection's share, and its opacity. */
   struct Surface
@@ -70,9 +105,12 @@ public:
     double Opacity = 1;          // a, fog towards transparent taking its share
   };
 
-  /** The hit of ray on triangle `hit` lit from `view`, bounces reflections left. */
+  /**
+   * The hit of ray on triangle `hit` lit from `view`, bounces reflections
+   * left; with sources, where its Color comes from, weighed within it.
+   */
   Surface LightHit(const Ray& ray, const RayScene::Hit& hit, const IlluminationInputs& view,
-    int bounces, bool camera) const;
+    int bounces, bool camera, std::vector<Source>* sources = nullptr) const;
 
   const RayScene& GetRays() const { return *this->Rays; }
   const IlluminationInputs& GetCameraView() const { return this->View; }

@@ -173,13 +173,13 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
     lights.push_back(DescribeLight(light));
   }
   j["lights"] = lights;
-  if (std::any_of(o.Lights.begin(), o.Lights.end(), CastsShadows) || o.Shadows)
-  {
-    j["shadow_map_size"] = o.ShadowMapSize;
-  }
   if (o.ShadingRule == Shading::Raytrace)
   {
-    j["reflections"] = o.Reflections;
+    j["reflections"] = o.Reflections; // its shadows are rays: no maps
+  }
+  else if (std::any_of(o.Lights.begin(), o.Lights.end(), CastsShadows) || o.Shadows)
+  {
+    j["shadow_map_size"] = o.ShadowMapSize;
   }
   nlohmann::ordered_json cam;
   cam["projection"] = o.Orthographic ? "orthographic" : "perspective";

@@ -32,9 +32,7 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Model = options.ReflectionModel;
   s.Surface = options.EffectiveMaterial();
   s.Ia = options.Ambient;
-  // As BuildScene lights it, or the ray tracer.
-  s.Lights = options.ShadingRule == Shading::Raytrace ? RayTracedLights(options, eye)
-                                                      : EffectiveLights(options, eye);
+  s.Lights = EffectiveLights(options, eye); // as BuildScene lights it, or the ray tracer
   if (options.ShadingRule == Shading::Raytrace)
   {
     this->Tracer = std::make_unique<RayTracer>(options, mesh, camera, images);
@@ -94,8 +92,8 @@ PixelProbe PixelProber::Probe(Pixel at) const
   this->Shade(p, corners);
   if (this->Tracer)
   {
-    p.Traced = this->Tracer->Explain(
-      p.Size.Width, p.Size.Height, at.X + 0.5, at.Y + 0.5, p.Sources);
+    p.Traced =
+      this->Tracer->Explain(p.Size.Width, p.Size.Height, at.X + 0.5, at.Y + 0.5, p.Sources);
   }
   else if (this->Translucent && !p.Element)
   {

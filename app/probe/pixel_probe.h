@@ -162,7 +162,7 @@ private:
   std::unique_ptr<PictureElements> Elements; // drawn as edges or points
   int ElementPixels = 1;                     // the lines' width or the points' size
   SceneSurface Surface;
-  std::unique_ptr<RayScene> Rays;      // shadows: the oracle's shadow rays
+  std::unique_ptr<RayScene> Rays;    // shadows: the oracle's shadow rays
   std::unique_ptr<RayTracer> Tracer; // raytrace: the picture's rays
   const ShadowCasters* Casters = nullptr;
   mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's

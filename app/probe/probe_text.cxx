@@ -107,13 +107,14 @@ void AddSources(Lines& out, const PixelProbe& p)
         what = "the fog's colour " + ProbeTriple(s.Color);
         break;
     }
-    const std::string path = s.Bounce == 0 ? "the camera's ray"
-                                           : "reflection " + std::to_string(s.Bounce);
+    const std::string path =
+      s.Bounce == 0 ? "the camera's ray" : "reflection " + std::to_string(s.Bounce);
     out.Add("  ",
       path + (s.Through > 0 ? ", through " + std::to_string(s.Through) : "") + ": " + what +
         ", times " + ProbeTriple(s.Weight) + " adds " + ProbeTriple(s.Adds));
   }
-  out.Add("", "sum = " + ProbeTriple(p.Traced->Color) + ", coverage " + ProbeNumber(p.Traced->Alpha),
+  out.Add("",
+    "sum = " + ProbeTriple(p.Traced->Color) + ", coverage " + ProbeNumber(p.Traced->Alpha),
     "the oracle");
 }
 

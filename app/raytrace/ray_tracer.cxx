@@ -12,14 +12,6 @@
 
 namespace shadelab
 {
-std::vector<Light> RayTracedLights(const SceneOptions& options, const Vec3& cameraPosition)
-{
-  // Shadows are global illumination's own.
-  SceneOptions traced = options;
-  traced.Shadows = true;
-  return EffectiveLights(traced, cameraPosition);
-}
-
 RayTracer::~RayTracer() = default;
 
 RayTracer::RayTracer(
@@ -32,7 +24,7 @@ RayTracer::RayTracer(
   , Fogging(options.Fogging)
   , Background(options.OpaqueBackground())
 {
-  this->Lights = RayTracedLights(options, this->Camera.Position);
+  this->Lights = EffectiveLights(options, this->Camera.Position);
   this->View = CameraIllumination(options, this->Lights, camera);
   this->View.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
   { return this->Rays->LightReaches(P, N, this->Lights[l]); };

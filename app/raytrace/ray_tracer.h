@@ -24,20 +24,13 @@ class vtkPolyData;
 
 namespace shadelab
 {
-/**
- * The lights a ray-traced picture of options is lit by, seen from
- * cameraPosition (EffectiveLights): every one casting shadows unless it
- * says otherwise (+no-shadows), whatever --shadows says of the raster rules.
- */
-std::vector<Light> RayTracedLights(const SceneOptions& options, const Vec3& cameraPosition);
-
 class RayTracer
 {
 public:
   /**
    * options' scene as BuildScene made it: `mesh` (BuiltScene::Mesh),
    * `camera` the renderer's, `images` its textures' (BuiltScene::Images),
-   * lit by RayTracedLights.
+   * lit by EffectiveLights (every light casting shadows unless it says not).
    */
   RayTracer(const SceneOptions& options, vtkPolyData* mesh, vtkCamera* camera,
     const SceneImages& images = {});
@@ -68,21 +61,22 @@ public:
       Background, // what a ray that met nothing saw (Beyond)
       Fog         // the fog's colour, where the camera's ray was fogged
     } What = Surface;
-    int Bounce = 0;       // mirror reflections before it: 0 on the camera's ray
-    int Through = 0;      // translucent surfaces before it on its ray
+    int Bounce = 0;  // mirror reflections before it: 0 on the camera's ray
+    int Through = 0; // translucent surfaces before it on its ray
     std::int64_t Triangle = -1;
     Vec3 Point{};         // where its ray met it
     double Distance = 0;  // from its ray's origin (the camera's, or the mirror point)
     double Opacity = 1;   // its a
     ShadedFragment Local; // its own light, with each light's shadow ray's answer
     Rgb Color{};          // its own light (Local.Color), the background's or the fog's colour
-    Rgb Weight{};         // what Color is multiplied by in the sample: the a, (1 - a), ks and f on the way
-    Rgb Adds{};           // Weight * Color: these sum to the sample
+    Rgb Weight{}; // what Color is multiplied by in the sample: the a, (1 - a), ks and f on the way
+    Rgb Adds{};   // Weight * Color: these sum to the sample
   };
 
   /** Sample(width, height, x, y), and where its light comes from. */
   Covered Explain(int width, int height, double x, double y, std::vector<Source>& sources) const;
 
+private:
   /**
    * The light coming back along ray from what it meets beyond tMin: every
    * surface on it composited in depth order over what lies behind
@@ -112,16 +106,12 @@ public:
   Surface LightHit(const Ray& ray, const RayScene::Hit& hit, const IlluminationInputs& view,
     int bounces, bool camera, std::vector<Source>* sources = nullptr) const;
 
-  const RayScene& GetRays() const { return *this->Rays; }
-  const IlluminationInputs& GetCameraView() const { return this->View; }
-
   /**
    * What a ray that meets nothing sees: the background, as in Whitted's
    * ray tracer (a mirror shows it too), or nothing where it is transparent.
    */
   Covered Beyond() const;
 
-private:
   ImageSize Size;
   int Reflections = 2;
   PinholeCamera Camera;

@@ -33,7 +33,9 @@ std::vector<Light> ResolvedLights(std::vector<Light> lights, const SceneOptions&
     {
       light.Attenuation = light.Attenuation.value_or(options.Attenuation);
     }
-    light.Shadows = light.Shadows.value_or(options.Shadows);
+    // Shadows are global illumination's own: ray traced, every light casts.
+    light.Shadows =
+      light.Shadows.value_or(options.Shadows || options.ShadingRule == Shading::Raytrace);
   }
   return lights;
 }
@@ -157,7 +159,9 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   // Every triangle casts, whichever actor draws it (the actors draw the
   // mesh where it is: world coordinates).
   std::shared_ptr<ShadowCasters>& casters = scene.Casters;
-  if (std::any_of(resolved.begin(), resolved.end(), CastsShadows))
+  // Ray traced, its rays cast the shadows: the shaders draw no maps.
+  if (options.ShadingRule != Shading::Raytrace &&
+    std::any_of(resolved.begin(), resolved.end(), CastsShadows))
   {
     casters = reuse && reuse->Casters && reuse->Mesh == mesh &&
         reuse->Casters->GetSize() == options.ShadowMapSize

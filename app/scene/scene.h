@@ -82,7 +82,7 @@ bool UsesVertexKd(const SceneOptions& options, vtkPolyData* mesh);
 /**
  * `lights` with each point and spot light's attenuation and each light's
  * shadows resolved: its own, else the scene's (options' Attenuation,
- * Shadows). Resolved lights stay as they are.
+ * Shadows; ray traced, every light casts). Resolved lights stay as they are.
  */
 std::vector<Light> ResolvedLights(std::vector<Light> lights, const SceneOptions& options);
 

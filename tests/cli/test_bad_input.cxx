@@ -343,7 +343,8 @@ const BadCase Cases[] = {
     2, { "--reflections", "not in range" } },
   // The ray tracer traces the surface: edges and points are the raster's.
   { "RaytraceWireframe",
-    [](const TempDir& d) {
+    [](const TempDir& d)
+    {
       return WithMesh(
         d, "t.obj", Tetrahedron, { "--shading", "raytrace", "--representation", "wireframe" });
     },

@@ -66,8 +66,9 @@ std::size_t WithSource(const std::vector<json>& answers, const std::string& kind
     {
       const json& sources = a.at("raytrace").at("sources");
       return std::any_of(sources.begin(), sources.end(),
-        [&](const json& s)
-        { return s.at("kind") == kind && Vec(s.at("adds")) != Rgb{ 0, 0, 0 }; });
+        [&](const json& s) {
+          return s.at("kind") == kind && Vec(s.at("adds")) != Rgb{ 0, 0, 0 };
+        });
     });
 }
 }
@@ -85,7 +86,8 @@ TEST(ProbeRaytrace, MirrorsAndShadowsSumToTheOracle)
   const std::vector<json> answers = ProbeAgainstTheOracle(s);
   EXPECT_GE(WithSource(answers, "reflected"), 20u) << "pixels whose mirror sees the square";
   const std::size_t shadowed = std::count_if(answers.begin(), answers.end(),
-    [](const json& a) { return a.at("raytrace").at("sources").at(0).at("shadowed").at(0) == true; });
+    [](const json& a)
+    { return a.at("raytrace").at("sources").at(0).at("shadowed").at(0) == true; });
   EXPECT_GE(shadowed, 20u) << "pixels in the square's shadow";
 }
 

@@ -38,6 +38,23 @@ inline const std::vector<std::string> TeapotLights{ "--light", "point:4,6,5", "-
   "point:-5,1,-4:0.4,0.2,0.2", "--light", "directional:0.3,-1,-0.5:0.5,0.6,0.5", "--light",
   "spot:0,8,0:0,-1,0:20:2:0.8,0.8,1", "--light", "spot:-6,3,6:1,-0.3,-1:6:0:1,0.4,0.2" };
 
+// Every fourth pixel each way that the oracle compares (Expected::Interior).
+inline std::vector<std::array<int, 2>> ComparedPixels(const Scene& s, const Oracle& oracle)
+{
+  std::vector<std::array<int, 2>> pixels;
+  for (int y = 0; y < s.Size; y += 4)
+  {
+    for (int x = 0; x < s.Size; x += 4)
+    {
+      if (oracle.At(x, y).What == Expected::Interior)
+      {
+        pixels.push_back({ x, y });
+      }
+    }
+  }
+  return pixels;
+}
+
 // `shadelab probe` on pixels, --json: one object per pixel.
 inline std::vector<json> Probe(const std::vector<std::string>& common,
   const std::vector<std::array<int, 2>>& pixels, std::string& error)

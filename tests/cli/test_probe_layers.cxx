@@ -24,30 +24,13 @@ Scene Sheets()
   return s;
 }
 
-// Every fourth pixel each way that the oracle compares.
-std::vector<std::array<int, 2>> Compared(const Scene& s, const Oracle& oracle)
-{
-  std::vector<std::array<int, 2>> pixels;
-  for (int y = 0; y < s.Size; y += 4)
-  {
-    for (int x = 0; x < s.Size; x += 4)
-    {
-      if (oracle.At(x, y).What == Expected::Interior)
-      {
-        pixels.push_back({ x, y });
-      }
-    }
-  }
-  return pixels;
-}
-
 // Probes the compared pixels of s, and checks each against the test's
 // oracle and the rendered picture; the answers, for more checks.
 std::vector<json> ProbeAgainstTheOracle(const Scene& s, const Image& image)
 {
   TempDir dir;
   const Oracle oracle(s);
-  const auto pixels = Compared(s, oracle);
+  const auto pixels = ComparedPixels(s, oracle);
   std::string error;
   const std::vector<json> answers = Probe(SceneArguments(s, dir), pixels, error);
   EXPECT_EQ(error, "");
@@ -103,7 +86,7 @@ TEST(ProbeLayers, CoverageIsTheAlphaOverATransparentBackground)
   ASSERT_EQ(error, "");
   ASSERT_EQ(image.Channels, 4);
   const Oracle oracle(s);
-  const auto pixels = Compared(s, oracle);
+  const auto pixels = ComparedPixels(s, oracle);
   const std::vector<json> answers = ProbeAgainstTheOracle(s, image);
   ASSERT_EQ(answers.size(), pixels.size());
   for (std::size_t i = 0; i < answers.size(); ++i)
@@ -129,7 +112,7 @@ TEST(ProbeLayers, SayWhichLayersPeelsLeaveOut)
   // A pixel under all three sheets.
   std::vector<std::array<int, 2>> deep;
   std::string error;
-  for (const json& a : Probe(scene, Compared(s, oracle), error))
+  for (const json& a : Probe(scene, ComparedPixels(s, oracle), error))
   {
     if (a.at("layers").size() == 3)
     {

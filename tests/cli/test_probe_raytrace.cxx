@@ -23,17 +23,7 @@ std::vector<json> ProbeAgainstTheOracle(const Scene& s)
   const Image image = Render(s, dir, error);
   EXPECT_EQ(error, "");
   const Oracle oracle(s);
-  std::vector<std::array<int, 2>> pixels;
-  for (int y = 0; y < s.Size; y += 4)
-  {
-    for (int x = 0; x < s.Size; x += 4)
-    {
-      if (oracle.At(x, y).What == Expected::Interior)
-      {
-        pixels.push_back({ x, y });
-      }
-    }
-  }
+  const std::vector<std::array<int, 2>> pixels = ComparedPixels(s, oracle);
   const std::vector<json> answers = Probe(SceneArguments(s, dir), pixels, error);
   EXPECT_EQ(error, "");
   EXPECT_EQ(answers.size(), pixels.size());

@@ -50,12 +50,20 @@ float shadelabAttenuation(vec3 c, float d)
 }
 )glsl";
 
+// The shadow bias's slope factor (shadelabShadowMaps.h): 1 + tan(angle of
+// incidence), the tangent at most `most`, for a receiver that slopes across
+// the texel (the 1 for a normal that leans off the surface).
+const char* const ShadowSlopeSource = R"glsl(float shadelabShadowSlope(float NdotL, float most)
+{
+  return 1.0 + min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, most);
+}
+)glsl";
+
 // Light $'s shadow test at P lit with N.L: whether nothing lies nearer to
 // the light than P in its map, within the bias (shadelabShadowMaps.h):
-// x*(d + |P|) for float's roundings, and the slope term y*tan(angle of
-// incidence), the tangent at most z, for a receiver that slopes across the
-// texel; w, an orthographic map's size in texels. Point and spot lights:
-// the distance from the light, in the cube map along P - light.
+// x*(d + |P|) for float's roundings, and y times the slope factor (its
+// tangent at most z); w, an orthographic map's size in texels. Point and
+// spot lights: the distance from the light, in the cube map along P - light.
 const char* const CubeShadowSource = R"glsl(uniform samplerCube shadelabShadowMap$;
 uniform mat4 shadelabShadowFrame$; // view coordinates to the light's, axes the world's
 uniform vec4 shadelabShadowBias$;
@@ -64,8 +72,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
   vec3 q = (shadelabShadowFrame$ * vec4(P, 1.0)).xyz;
   float d = length(q);
   vec4 b = shadelabShadowBias$;
-  float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
-  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * (1.0 + slope); // shadelab: shadow
+  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * shadelabShadowSlope(NdotL, b.z); // shadelab: shadow
 }
 )glsl";
 
@@ -84,8 +91,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
   {
     return true;
   }
-  float slope = min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, b.z);
-  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * (1.0 + slope); // shadelab: shadow
+  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * shadelabShadowSlope(NdotL, b.z); // shadelab: shadow
 }
 )glsl";
 
@@ -249,6 +255,10 @@ std::string DeclarationsSource(const ShaderFeatures& f)
   if (f.Attenuation)
   {
     s += FillGlsl(AttenuationSource, std::to_string(f.Lights.size()));
+  }
+  if (std::find(f.Shadows.begin(), f.Shadows.end(), true) != f.Shadows.end())
+  {
+    s += ShadowSlopeSource;
   }
   for (std::size_t i = 0; i < f.Shadows.size(); ++i)
   {

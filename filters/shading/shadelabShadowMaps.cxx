@@ -24,6 +24,64 @@ Vec3 CubeDirection(int face, double x, double y, int size)
 
 namespace
 {
+// The OpenGL state a bake changes, saved as it starts and put back as it
+// ends: VTK keeps its own record of OpenGL's state and trusts it.
+struct SavedState
+{
+  GLint Program = 0, VertexArray = 0, ArrayBuffer = 0, DrawFramebuffer = 0, ReadFramebuffer = 0;
+  GLint Viewport[4]{};
+  GLint BlendSource = 0, BlendDestination = 0, BlendSourceAlpha = 0, BlendDestinationAlpha = 0;
+  GLint BlendEquation = 0, BlendEquationAlpha = 0;
+  GLfloat ClearColour[4]{};
+  GLboolean Blend, Depth, Scissor, Cull, Clamp;
+
+  SavedState()
+    : Blend(glIsEnabled(GL_BLEND))
+    , Depth(glIsEnabled(GL_DEPTH_TEST))
+    , Scissor(glIsEnabled(GL_SCISSOR_TEST))
+    , Cull(glIsEnabled(GL_CULL_FACE))
+    , Clamp(glIsEnabled(GL_DEPTH_CLAMP))
+  {
+    glGetIntegerv(GL_CURRENT_PROGRAM, &this->Program);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &this->VertexArray);
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &this->ArrayBuffer);
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &this->DrawFramebuffer);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &this->ReadFramebuffer);
+    glGetIntegerv(GL_VIEWPORT, this->Viewport);
+    glGetIntegerv(GL_BLEND_SRC_RGB, &this->BlendSource);
+    glGetIntegerv(GL_BLEND_DST_RGB, &this->BlendDestination);
+    glGetIntegerv(GL_BLEND_SRC_ALPHA, &this->BlendSourceAlpha);
+    glGetIntegerv(GL_BLEND_DST_ALPHA, &this->BlendDestinationAlpha);
+    glGetIntegerv(GL_BLEND_EQUATION_RGB, &this->BlendEquation);
+    glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &this->BlendEquationAlpha);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, this->ClearColour);
+  }
+
+  ~SavedState()
+  {
+    glBlendEquationSeparate(
+      static_cast<GLenum>(this->BlendEquation), static_cast<GLenum>(this->BlendEquationAlpha));
+    glBlendFuncSeparate(static_cast<GLenum>(this->BlendSource),
+      static_cast<GLenum>(this->BlendDestination), static_cast<GLenum>(this->BlendSourceAlpha),
+      static_cast<GLenum>(this->BlendDestinationAlpha));
+    glClearColor(
+      this->ClearColour[0], this->ClearColour[1], this->ClearColour[2], this->ClearColour[3]);
+    (this->Clamp ? glEnable : glDisable)(GL_DEPTH_CLAMP);
+    (this->Blend ? glEnable : glDisable)(GL_BLEND);
+    (this->Depth ? glEnable : glDisable)(GL_DEPTH_TEST);
+    (this->Scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
+    (this->Cull ? glEnable : glDisable)(GL_CULL_FACE);
+    glViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(this->DrawFramebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(this->ReadFramebuffer));
+    glUseProgram(static_cast<GLuint>(this->Program));
+    glBindVertexArray(static_cast<GLuint>(this->VertexArray));
+    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(this->ArrayBuffer));
+  }
+  SavedState(const SavedState&) = delete;
+  SavedState& operator=(const SavedState&) = delete;
+};
+
 // The casters' program: each vertex relative to the map's origin; the
 // fragment's distance from the light (radial, a cube) or its depth along
 // the axis (an orthographic map).
@@ -261,26 +319,7 @@ std::string ShadowMap::Bake(const std::vector<Vec3>& points,
         { static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2]) });
     }
   }
-  GLint program = 0, vertexArray = 0, drawFramebuffer = 0, readFramebuffer = 0, viewport[4],
-        arrayBuffer = 0, blendSource = 0, blendDestination = 0, blendSourceAlpha = 0,
-        blendDestinationAlpha = 0, blendEquation = 0, blendEquationAlpha = 0;
-  GLfloat clearColour[4];
-  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
-  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &arrayBuffer);
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  glGetIntegerv(GL_BLEND_SRC_RGB, &blendSource);
-  glGetIntegerv(GL_BLEND_DST_RGB, &blendDestination);
-  glGetIntegerv(GL_BLEND_SRC_ALPHA, &blendSourceAlpha);
-  glGetIntegerv(GL_BLEND_DST_ALPHA, &blendDestinationAlpha);
-  glGetIntegerv(GL_BLEND_EQUATION_RGB, &blendEquation);
-  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &blendEquationAlpha);
-  glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColour);
-  const GLboolean blend = glIsEnabled(GL_BLEND), depth = glIsEnabled(GL_DEPTH_TEST),
-                  scissor = glIsEnabled(GL_SCISSOR_TEST), cull = glIsEnabled(GL_CULL_FACE),
-                  clamp = glIsEnabled(GL_DEPTH_CLAMP);
+  const SavedState saved; // everything as it was afterwards: VTK keeps its own record
 
   glBindVertexArray(this->VertexArray);
   glBindBuffer(GL_ARRAY_BUFFER, this->Buffer);
@@ -331,73 +370,7 @@ std::string ShadowMap::Bake(const std::vector<Vec3>& points,
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(relative.size() / 3));
   }
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
-  // Everything as it was: VTK keeps its own record of OpenGL's state.
-  glBlendEquationSeparate(
-    static_cast<GLenum>(blendEquation), static_cast<GLenum>(blendEquationAlpha));
-  glBlendFuncSeparate(static_cast<GLenum>(blendSource), static_cast<GLenum>(blendDestination),
-    static_cast<GLenum>(blendSourceAlpha), static_cast<GLenum>(blendDestinationAlpha));
-  glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
-  (clamp ? glEnable : glDisable)(GL_DEPTH_CLAMP);
-  (blend ? glEnable : glDisable)(GL_BLEND);
-  (depth ? glEnable : glDisable)(GL_DEPTH_TEST);
-  (scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
-  (cull ? glEnable : glDisable)(GL_CULL_FACE);
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer));
-  glUseProgram(static_cast<GLuint>(program));
-  glBindVertexArray(static_cast<GLuint>(vertexArray));
-  glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(arrayBuffer));
   return error;
-}
-
-bool ShadowMap::Lit(const Vec3& P, double NdotL, double fromEye) const
-{
-  if (this->Texels.empty())
-  {
-    for (int f = 0; f < (this->Cube ? 6 : 1); ++f)
-    {
-      this->Texels.push_back(this->ReadFace(f));
-    }
-  }
-  const std::array<double, 16>& m = this->WorldToMap;
-  Vec3 q;
-  for (int r = 0; r < 3; ++r)
-  {
-    q[r] = m[r * 4] * P[0] + m[r * 4 + 1] * P[1] + m[r * 4 + 2] * P[2] + m[r * 4 + 3];
-  }
-  const std::array<float, 4> b = this->GetBias();
-  const double slope = std::min(std::sqrt(std::max(1 - NdotL * NdotL, 0.0)) / NdotL, double(b[2]));
-  const auto texel = [this](int face, double x, double y) -> double
-  {
-    const int i = std::clamp(static_cast<int>(std::floor(x)), 0, this->Size - 1);
-    const int j = std::clamp(static_cast<int>(std::floor(y)), 0, this->Size - 1);
-    return this->Texels[face][static_cast<std::size_t>(j) * this->Size + i];
-  };
-  if (this->Cube)
-  {
-    // The face whose forward axis q leans along most, as OpenGL picks it.
-    int face = 0;
-    for (int f = 1; f < 6; ++f)
-    {
-      if (dot(q, CubeFaces[f].Forward) > dot(q, CubeFaces[face].Forward))
-      {
-        face = f;
-      }
-    }
-    const CubeFace& f = CubeFaces[face];
-    const double ahead = dot(q, f.Forward), n = this->Size;
-    const double x = (dot(q, cross(f.Forward, f.Up)) / ahead + 1) / 2 * n;
-    const double y = (dot(q, f.Up) / ahead + 1) / 2 * n;
-    const double d = length(q);
-    return d <= texel(face, x, y) + b[0] * (d + fromEye) + b[1] * d * (1 + slope);
-  }
-  const double x = q[0] * this->Size, y = q[1] * this->Size;
-  if (x < 0 || y < 0 || x >= this->Size || y >= this->Size)
-  {
-    return true;
-  }
-  return q[2] <= texel(0, x, y) + b[0] * (std::abs(q[2]) + fromEye) + b[1] * (1 + slope);
 }
 
 std::vector<float> ShadowMap::ReadFace(int face) const

@@ -117,6 +117,42 @@ void Scene(std::vector<Vec3>& points, std::vector<TriangleCorners>& triangles)
 }
 }
 
+// The texels held against the oracle's rays: one whose neighbours' rays
+// meet another triangle is left out (unstable: the rasteriser may decide
+// otherwise); one whose ray meets nothing holds FLT_MAX; the rest the ray's
+// T within 1e-6 of it and `spread` (where the texel's sample may lie).
+struct Tally
+{
+  int Compared = 0, Empty = 0, Unstable = 0;
+  double Worst = 0;
+
+  void Check(
+    bool stable, const RayScene::Hit& hit, float got, double spread, const std::string& texel)
+  {
+    if (!stable)
+    {
+      ++this->Unstable;
+      return;
+    }
+    if (hit.Triangle < 0)
+    {
+      ++this->Empty;
+      EXPECT_EQ(got, FLT_MAX) << texel;
+      return;
+    }
+    ++this->Compared;
+    const double error = std::abs(got - hit.T) / hit.T;
+    this->Worst = std::max(this->Worst, error);
+    EXPECT_LE(error, 1e-6 + spread / hit.T) << texel << ": " << got << " against " << hit.T;
+  }
+
+  void Print() const
+  {
+    std::printf("compared %d, empty %d, unstable %d, worst relative error %.3g\n", this->Compared,
+      this->Empty, this->Unstable, this->Worst);
+  }
+};
+
 // The scene's triangles, its rays, and a current OpenGL context to bake in.
 class ShadowMaps : public testing::Test
 {
@@ -147,8 +183,7 @@ TEST_F(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
   ShadowMap map;
   ASSERT_EQ(map.Bake(points, triangles, point, size), "");
   ASSERT_TRUE(map.IsCube());
-  int compared = 0, empty = 0, unstable = 0;
-  double worst = 0;
+  Tally tally;
   for (int f = 0; f < 6; ++f)
   {
     const std::vector<float> texels = map.ReadFace(f);
@@ -164,23 +199,8 @@ TEST_F(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
           const Vec3 d = CubeDirection(f, i + 0.5 + di, j + 0.5 + dj, size);
           stable = stable && rays.First({ light, d }).Triangle == hit.Triangle;
         }
-        if (!stable)
-        {
-          ++unstable;
-          continue;
-        }
-        const float got = texels[static_cast<std::size_t>(j) * size + i];
-        if (hit.Triangle < 0)
-        {
-          ++empty;
-          EXPECT_EQ(got, FLT_MAX) << "face " << f << " texel " << i << ", " << j;
-          continue;
-        }
-        ++compared;
-        const double error = std::abs(got - hit.T) / hit.T;
-        worst = std::max(worst, error);
-        EXPECT_LE(error, 1e-6) << "face " << f << " texel " << i << ", " << j << ": " << got
-                               << " against " << hit.T;
+        tally.Check(stable, hit, texels[static_cast<std::size_t>(j) * size + i], 0,
+          "face " + std::to_string(f) + " texel " + std::to_string(i) + ", " + std::to_string(j));
       }
     }
   }
@@ -198,10 +218,9 @@ TEST_F(ShadowMaps, EachTexelHoldsTheDistanceTheOraclesRayTravels)
     }
     EXPECT_EQ(LookUp(map, directions), map.ReadFace(f)) << "face " << f;
   }
-  std::printf("compared %d, empty %d, unstable %d, worst relative error %.3g\n", compared, empty,
-    unstable, worst);
-  EXPECT_GT(compared, 6 * size * size / 3);
-  EXPECT_LT(unstable, 6 * size * size / 20);
+  tally.Print();
+  EXPECT_GT(tally.Compared, 6 * size * size / 3);
+  EXPECT_LT(tally.Unstable, 6 * size * size / 20);
   map.Release();
 }
 
@@ -236,8 +255,7 @@ TEST_F(ShadowMaps, AnOrthographicTexelHoldsTheDepthOfTheOraclesRay)
   const Vec3 axis = normalize(sun.Direction);
   const std::vector<float> texels = map.ReadFace(0);
   constexpr double Snap = 1.0 / 512;
-  int compared = 0, empty = 0, unstable = 0;
-  double worst = 0;
+  Tally tally;
   for (int j = 0; j < size; ++j)
   {
     for (int i = 0; i < size; ++i)
@@ -263,28 +281,12 @@ TEST_F(ShadowMaps, AnOrthographicTexelHoldsTheDepthOfTheOraclesRay)
       {
         EXPECT_LT(hit.Triangle, 0) << "texel " << i << ", " << j << " at the border";
       }
-      if (!stable)
-      {
-        ++unstable;
-        continue;
-      }
-      const float got = texels[static_cast<std::size_t>(j) * size + i];
-      if (hit.Triangle < 0)
-      {
-        ++empty;
-        EXPECT_EQ(got, FLT_MAX) << "texel " << i << ", " << j;
-        continue;
-      }
-      ++compared;
-      const double error = std::abs(got - hit.T) / hit.T;
-      worst = std::max(worst, error);
-      EXPECT_LE(error, 1e-6 + spread / hit.T)
-        << "texel " << i << ", " << j << ": " << got << " against " << hit.T;
+      tally.Check(stable, hit, texels[static_cast<std::size_t>(j) * size + i], spread,
+        "texel " + std::to_string(i) + ", " + std::to_string(j));
     }
   }
-  std::printf("compared %d, empty %d, unstable %d, worst relative error %.3g\n", compared, empty,
-    unstable, worst);
-  EXPECT_GT(compared, size * size / 2);
-  EXPECT_LT(unstable, size * size / 10);
+  tally.Print();
+  EXPECT_GT(tally.Compared, size * size / 2);
+  EXPECT_LT(tally.Unstable, size * size / 10);
   map.Release();
 }

@@ -146,6 +146,11 @@ struct GridSpec
   // written after the grid; the camera sees it edge-on. A light on its +y side casts a shadow that
   // starts at its foot: one detached from it (peter-panning) shows in the pixels beside the foot.
   bool Wall = false;
+  // Self-shadowing: a torus instead of the grid (radii 0.6 and 0.25, 24 by
+  // 12 quads, its vertex normals the torus's own) around the z axis, tipped
+  // 35 degrees about the x axis so that the camera sees into its hole: a
+  // light from above, nearly in its plane, shadows the inside of its lower half.
+  bool Torus = false;
 };
 
 constexpr std::array<double, 3> SheetStep{ 0.25, 0.125, -1 };
@@ -253,6 +258,46 @@ inline Mesh Box(const GridSpec& g)
   return m;
 }
 
+// GridSpec::Torus: float-exact points and normals, as the reader keeps them;
+// each quad's triangles counter-clockwise from outside.
+inline Mesh Torus(const GridSpec& g)
+{
+  constexpr int Around = 24, Tube = 12;
+  const double c = std::cos(35 * Pi / 180), sn = std::sin(35 * Pi / 180);
+  const auto tipped = [&](const Vec3& p) {
+    return Vec3{ p[0], c * p[1] - sn * p[2], sn * p[1] + c * p[2] };
+  };
+  Mesh m;
+  const auto exact = [](Vec3 p)
+  {
+    for (double& c : p)
+    {
+      c = static_cast<float>(c);
+    }
+    return p;
+  };
+  for (int i = 0; i < Around; ++i)
+  {
+    for (int j = 0; j < Tube; ++j)
+    {
+      const double u = 2 * Pi * i / Around, v = 2 * Pi * j / Tube;
+      const Vec3 n{ std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v) };
+      const Vec3 p = Vec3{ 0.6 * std::cos(u), 0.6 * std::sin(u), 0 } + 0.25 * n;
+      m.Positions.push_back(exact(tipped(p)));
+      m.Normals.push_back(exact(tipped(n)));
+      m.TexCoords.push_back(TexCoordAt(m.Positions.back()[0], m.Positions.back()[1]));
+      if (g.VertexColors)
+      {
+        m.Colors.push_back(GridColor(i % 3, j % 3));
+      }
+      const auto at = [](int a, int b) { return (a % Around) * Tube + b % Tube; };
+      m.Triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      m.Triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  }
+  return m;
+}
+
 // GridSpec::Sheets: the grid copied behind itself.
 inline Mesh Sheets(const GridSpec& g, const Mesh& grid)
 {
@@ -291,6 +336,10 @@ inline Mesh Grid(const GridSpec& g)
   if (g.Box)
   {
     return Box(g);
+  }
+  if (g.Torus)
+  {
+    return Torus(g);
   }
   Mesh m;
   const int n = g.Cells + 1;

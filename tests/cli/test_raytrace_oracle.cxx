@@ -6,8 +6,9 @@
 //   shadow), the phong rule's picture: every light kind, textures, parts,
 //   vertex colours, fog, attenuation, translucent layers, a transparent
 //   background, back faces, far from the origin;
-// - a square over the grid shadows it under each light kind, exactly where
-//   the oracle's shadow rays say (the band left out is 1e-9 of the scene);
+// - a square over the grid shadows it under each light kind, and a torus
+//   itself (mirroring itself too), exactly where the oracle's shadow rays
+//   say (the band left out is 1e-9 of the scene);
 // - a mirror-like grid shows the square's underside where the oracle's
 //   reflected ray meets it, and where the test's own geometry says so.
 #include "oracle_scene.h"
@@ -110,6 +111,14 @@ std::vector<Case> Cases()
     add("shadow_tiny", s);
     s.Scale = 1e4;
     add("shadow_huge", s);
+  }
+  {
+    // Self-shadowing, and the torus's mirror images of itself.
+    Scene s = Shadowed(Directional({ 0.4, -1, -0.15 }));
+    s.Geometry.Occluder = false;
+    s.Geometry.Torus = true;
+    s.ShadowedAtLeast = 50; // a smaller shadow than the square's
+    add("torus", s);
   }
   add("mirror_one_bounce", Mirror(1));
   add("mirror_two_bounces", Mirror(2));

@@ -6,8 +6,8 @@
 // vertex (gouraud), the provoking vertex (flat). Pixels lit at a point in
 // the band around a shadow's edge, where a map's texel may decide
 // otherwise, are left out and counted; each case must show a shadow.
-// A wall's shadow starting at its foot (peter-panning); a closed box lit
-// from behind. Three lights at once; scenes far from the origin,
+// A wall's shadow starting at its foot (peter-panning); a torus shadowing
+// itself; a closed box lit from behind. Three lights at once; scenes far from the origin,
 // tiny and huge; a small map, whose wider band is left out.
 #include "oracle_scene.h"
 
@@ -69,6 +69,19 @@ std::vector<Case> Cases()
     s.Geometry.Occluder = false;
     s.Geometry.Wall = true;
     add(std::string("wall_") + ToString(r), s);
+  }
+  for (Shading r : { Shading::Flat, Shading::Gouraud })
+  {
+    // Self-shadowing: the torus's upper half shadows the inside of its
+    // lower half. Not phong: there its interpolated normal leans towards
+    // the light where the faces turn away from it (the terminator), and
+    // the map's slope bias, taken from that normal, is too small for the
+    // faces' slope (acne; doc/design.md, "Shadows").
+    Scene s = Shadowed(Directional({ 0.4, -1, -0.15 }), r);
+    s.Geometry.Occluder = false;
+    s.Geometry.Torus = true;
+    s.ShadowedAtLeast = 50; // a smaller shadow than the square's
+    add(std::string("torus_") + ToString(r), s);
   }
   {
     // A closed mesh lit from behind: the faces the camera sees face away

@@ -172,7 +172,7 @@ TEST_F(SceneFile, EachKindOfMistakeNamesItsJsonPath)
     { head + R"({ "size": [100000, 10] } ] })", "shots[3].size: '100000x10' is outside 1x1 to" },
     { head + R"({ "size": "640x480" } ] })", "shots[3].size: expected [width, height] in pixels" },
     { head + R"({ "shading": "toon" } ] })",
-      "shots[3].shading: unknown shading \"toon\" (known: none, flat, gouraud, phong)" },
+      "shots[3].shading: unknown shading \"toon\" (known: none, flat, gouraud, phong, raytrace)" },
     { head + R"({ "material": "silver" } ] })", "shots[3].material: unknown material \"silver\"" },
     { head + R"({ "material": { "name": "red", "kd": [1, 1, 1] } } ] })",
       "shots[3].material.name: names a whole material: \"base\", or all of ka, kd, ks, ns" },

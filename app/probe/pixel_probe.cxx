@@ -70,7 +70,8 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
         const Vec3 L = GeometryOf(light.Kind).Position ? normalize(light.Position - P)
                                                        : normalize(-1.0 * light.Direction);
         check.MapRead = true;
-        check.MapDisagrees += map->Lit(P, dot(N, L), length(P - this->In.Eye)) != reaches;
+        check.MapDisagrees +=
+          map->Lit(P, dot(this->SlopeFace.value_or(N), L), length(P - this->In.Eye)) != reaches;
       }
       return reaches;
     };
@@ -119,6 +120,13 @@ void PixelProber::Shade(PixelProbe& p, const TriangleCorners& corners) const
   p.Textured = p.Textured && part.Texture.Used();
   const IlluminationInputs in = this->Surface.InputsOf(this->In, p.Triangle);
   this->Checks.assign(p.Lights.size(), {});
+  this->SlopeFace.reset();
+  if (RasterRule(p.Rule) == Shading::Phong && !p.Element)
+  {
+    Vec3 unit;
+    FaceNormal(p.Fragment.Positions[0], p.Fragment.Positions[1], p.Fragment.Positions[2], unit);
+    this->SlopeFace = p.Fragment.Front ? unit : -unit;
+  }
   p.Shaded = p.Element ? ShadeElementFragment(in, p.Rule, p.Fragment)
                        : ShadeTriangleFragment(in, p.Rule, p.Fragment);
   p.Shadows = this->Checks;

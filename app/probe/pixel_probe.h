@@ -166,6 +166,9 @@ private:
   std::unique_ptr<RayTracer> Tracer; // raytrace: the picture's rays
   const ShadowCasters* Casters = nullptr;
   mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's
+  // Its face's normal, the viewer's side, where the maps' bias slopes by
+  // the face (phong's surface: ShaderFeatures::SlopesByFace).
+  mutable std::optional<Vec3> SlopeFace;
 };
 }
 

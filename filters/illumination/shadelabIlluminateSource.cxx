@@ -51,15 +51,22 @@ float shadelabAttenuation(vec3 c, float d)
 )glsl";
 
 // The shadow bias's slope factor (shadelabShadowMaps.h): 1 + tan(angle of
-// incidence), the tangent at most `most`, for a receiver that slopes across
-// the texel (the 1 for a normal that leans off the surface).
-const char* const ShadowSlopeSource = R"glsl(float shadelabShadowSlope(float NdotL, float most)
+// incidence), the tangent at most `most` (and `most` for a face turned
+// from the light), for a receiver that slopes across the texel (the 1 for a
+// normal that leans off the surface).
+const char* const ShadowSlopeSource = R"glsl(float shadelabShadowSlope(float slopeCos, float most)
 {
-  return 1.0 + min(sqrt(max(1.0 - NdotL * NdotL, 0.0)) / NdotL, most);
+  return 1.0 + (slopeCos > 0.0 ? min(sqrt(max(1.0 - slopeCos * slopeCos, 0.0)) / slopeCos, most) : most);
 }
 )glsl";
 
-// Light $'s shadow test at P lit with N.L: whether nothing lies nearer to
+// Phong's slope is the face's (the map holds faces), from the fragment's
+// geometric normal turned to the lit side; gouraud and flat light where no
+// face is at hand (a vertex) or where N is the face's (a triangle).
+const char* const FaceSlopeSource =
+  "vec3 shadelabFaceN; // the face's unit normal, the viewer's side\n";
+
+// Light $'s shadow test at P, the slope's cosine slopeCos: whether nothing lies nearer to
 // the light than P in its map, within the bias (shadelabShadowMaps.h):
 // x*(d + |P|) for float's roundings, and y times the slope factor (its
 // tangent at most z); w, an orthographic map's size in texels. Point and
@@ -67,12 +74,12 @@ const char* const ShadowSlopeSource = R"glsl(float shadelabShadowSlope(float Ndo
 const char* const CubeShadowSource = R"glsl(uniform samplerCube shadelabShadowMap$;
 uniform mat4 shadelabShadowFrame$; // view coordinates to the light's, axes the world's
 uniform vec4 shadelabShadowBias$;
-bool shadelabShadowLit$(vec3 P, float NdotL)
+bool shadelabShadowLit$(vec3 P, float slopeCos)
 {
   vec3 q = (shadelabShadowFrame$ * vec4(P, 1.0)).xyz;
   float d = length(q);
   vec4 b = shadelabShadowBias$;
-  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * shadelabShadowSlope(NdotL, b.z); // shadelab: shadow
+  return d <= textureLod(shadelabShadowMap$, q, 0.0).r + b.x * (d + length(P)) + b.y * d * shadelabShadowSlope(slopeCos, b.z); // shadelab: shadow
 }
 )glsl";
 
@@ -82,7 +89,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
 const char* const OrthographicShadowSource = R"glsl(uniform sampler2D shadelabShadowMap$;
 uniform mat4 shadelabShadowFrame$; // view coordinates to the map's
 uniform vec4 shadelabShadowBias$;
-bool shadelabShadowLit$(vec3 P, float NdotL)
+bool shadelabShadowLit$(vec3 P, float slopeCos)
 {
   vec3 q = (shadelabShadowFrame$ * vec4(P, 1.0)).xyz;
   vec4 b = shadelabShadowBias$;
@@ -91,7 +98,7 @@ bool shadelabShadowLit$(vec3 P, float NdotL)
   {
     return true;
   }
-  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * shadelabShadowSlope(NdotL, b.z); // shadelab: shadow
+  return q.z <= texelFetch(shadelabShadowMap$, texel, 0).r + b.x * (abs(q.z) + length(P)) + b.y * shadelabShadowSlope(slopeCos, b.z); // shadelab: shadow
 }
 )glsl";
 
@@ -259,6 +266,10 @@ std::string DeclarationsSource(const ShaderFeatures& f)
   if (std::find(f.Shadows.begin(), f.Shadows.end(), true) != f.Shadows.end())
   {
     s += ShadowSlopeSource;
+    if (f.SlopesByFace())
+    {
+      s += FaceSlopeSource;
+    }
   }
   for (std::size_t i = 0; i < f.Shadows.size(); ++i)
   {
@@ -298,8 +309,8 @@ const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N -
 // Light i's term, unrolled: its kind's direction, distance attenuation
 // (with `attenuation`), spot fall-off and guard;
 // apart, its diffuse and specular parts added to D and S.
-std::string LightTermSource(
-  size_t i, LightKind kind, bool specular, bool attenuation, bool shadows, bool apart)
+std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenuation, bool shadows,
+  bool faceSlope, bool apart)
 {
   const std::string index = std::to_string(i);
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
@@ -337,7 +348,10 @@ std::string LightTermSource(
   }
   // Whether the light reaches P: read where it would add a term.
   guard += "NdotL > shadelabGrazingLimit" +
-    (shadows ? FillGlsl(" && shadelabShadowLit$(P, NdotL)", index) : std::string());
+    (shadows ? FillGlsl(faceSlope ? " && shadelabShadowLit$(P, dot(shadelabFaceN, L))"
+                                  : " && shadelabShadowLit$(P, NdotL)",
+                 index)
+             : std::string());
   if (apart)
   {
     s += FillGlsl(R"glsl(  NdotL = dot(N, L);
@@ -416,8 +430,8 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   }
   for (size_t i = 0; i < f.Lights.size(); ++i)
   {
-    s += LightTermSource(
-      i, f.Lights[i], f.Specular, f.Attenuation, i < f.Shadows.size() && f.Shadows[i], apart);
+    s += LightTermSource(i, f.Lights[i], f.Specular, f.Attenuation,
+      i < f.Shadows.size() && f.Shadows[i], f.SlopesByFace(), apart);
   }
   return s + (apart ? "}\n" : R"glsl(  return I;
 }

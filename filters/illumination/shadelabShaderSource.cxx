@@ -174,10 +174,11 @@ void Prepend(
 }
 
 // The equation's functions for the stage that lights, and for edges and
-// points the turn towards the viewer.
+// points (and phong's shadow slope, shadelabFaceN) the turn towards the viewer.
 std::string LitSource(const ShaderFeatures& f)
 {
-  return IlluminateSource(f) + (f.Drawn == Representation::Surface ? "" : TowardsViewerSource);
+  return IlluminateSource(f) +
+    (f.Drawn != Representation::Surface || f.SlopesByFace() ? TowardsViewerSource : "");
 }
 
 // The texture coordinates, passed to the fragment (interpolated with
@@ -357,6 +358,12 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   if (f.KsTexture)
   {
     shade = std::string("  shadelabKs = ") + TexelKsSource + ";\n" + shade;
+  }
+  if (f.SlopesByFace())
+  {
+    shade =
+      "  shadelabFaceN = shadelabTowardsViewer(normalize(shadelabGeometricN), vertexVC.xyz);\n" +
+      shade;
   }
   r.push_back({ false, "//VTK::Light::Dec", declarations });
   r.push_back({ false, "//VTK::UniformFlow::Impl", surface ? GeometricNormalSource : "" });

@@ -14,6 +14,7 @@
 #include "shadelabIllumination.h"
 #include "shadelabRepresentation.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,16 @@ struct ShaderFeatures
   bool ReadsTexel() const
   {
     return !this->AllFeatures && (this->Rule == Shading::None ? this->KdTexture : this->Textured());
+  }
+  /**
+   * Phong's shadow tests take the bias's slope from the fragment's face
+   * (shadelabFaceN), as the maps hold faces: at a terminator the
+   * interpolated normal leans towards the light while the face turns away.
+   */
+  bool SlopesByFace() const
+  {
+    return this->Rule == Shading::Phong && this->Drawn == Representation::Surface &&
+      std::find(this->Shadows.begin(), this->Shadows.end(), true) != this->Shadows.end();
   }
   bool operator==(const ShaderFeatures& other) const;
 };

@@ -9,7 +9,7 @@
 
 namespace shadelab
 {
-bool ShadowMap::Lit(const Vec3& P, double NdotL, double fromEye) const
+bool ShadowMap::Lit(const Vec3& P, double slopeCos, double fromEye) const
 {
   if (this->Texels.empty())
   {
@@ -25,7 +25,10 @@ bool ShadowMap::Lit(const Vec3& P, double NdotL, double fromEye) const
     q[r] = m[r * 4] * P[0] + m[r * 4 + 1] * P[1] + m[r * 4 + 2] * P[2] + m[r * 4 + 3];
   }
   const std::array<float, 4> b = this->GetBias();
-  const double slope = std::min(std::sqrt(std::max(1 - NdotL * NdotL, 0.0)) / NdotL, double(b[2]));
+  const double most = b[2];
+  const double slope = slopeCos > 0
+    ? std::min(std::sqrt(std::max(1 - slopeCos * slopeCos, 0.0)) / slopeCos, most)
+    : most;
   const auto texel = [this](int face, double x, double y) -> double
   {
     const int i = std::clamp(static_cast<int>(std::floor(x)), 0, this->Size - 1);

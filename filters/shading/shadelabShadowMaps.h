@@ -46,7 +46,9 @@ Vec3 CubeDirection(int face, double x, double y, int size);
  *     by up to tan times the texel's half diagonal (y is twice that, the
  *     texel's angle for a cube, its side for an orthographic map); the 1
  *     covers a normal that leans off the surface (gouraud's vertex
- *     normals), z = 50 the grazing angles.
+ *     normals), z = 50 the grazing angles and a face turned from the
+ *     light. The angle is the face's under phong (ShaderFeatures::
+ *     SlopesByFace), the lighting normal's under gouraud and flat.
  */
 class ShadowMap
 {
@@ -78,11 +80,13 @@ public:
   std::array<float, 4> GetBias() const;
 
   /**
-   * What the shaders decide (shadelabShadowLit) at world point P lit with
-   * N.L, `fromEye` from the camera, computed in double from the map's
-   * texels (read once, in the current context): whether the light reaches P.
+   * What the shaders decide (shadelabShadowLit) at world point P, the
+   * bias's slope from the cosine `slopeCos` between L and the normal the
+   * rule slopes by (phong: the face's; others: the one that lights),
+   * `fromEye` from the camera, computed in double from the map's texels
+   * (read once, in the current context): whether the light reaches P.
    */
-  bool Lit(const Vec3& P, double NdotL, double fromEye) const;
+  bool Lit(const Vec3& P, double slopeCos, double fromEye) const;
 
   /** Face f's texels (an orthographic map: its only one), rows bottom first. */
   std::vector<float> ReadFace(int face) const;

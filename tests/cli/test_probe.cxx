@@ -276,65 +276,6 @@ TEST(Probe, NoneIsKdUnlit)
   EXPECT_FALSE(p[0].contains("lights") || p[0].contains("ambient"));
 }
 
-// Shadows on the teapot (the lid, the spout and the handle shade its body):
-// each light's `shadowed` is the oracle's shadow ray, and where the
-// picture's shadow map decided alike (`shadow_map_agrees`) the rendered
-// value is the oracle's within the bound; where it did not, the picture
-// differs from the oracle at the shadow's edge, as the probe says.
-TEST(Probe, ShadowedIsTheShadowRayAndTheMapsAgreementIsThePictures)
-{
-  for (const char* rule : { "phong", "gouraud", "flat" })
-  {
-    std::vector<std::array<int, 2>> pixels;
-    for (int y = 0; y < 96; y += 3)
-    {
-      for (int x = 0; x < 128; x += 3)
-      {
-        pixels.push_back({ x, y });
-      }
-    }
-    std::string error;
-    const std::vector<json> p =
-      Probe({ Teapot, "--size", "128x96", "--camera-position", "0,5,8", "--camera-focal-point",
-              "0,1.3,0", "--view-angle", "32", "--material", "gold", "--shading", rule, "--shadows",
-              "--light", "point:-6,2,0", "--light", "directional:-1,-0.5,-0.2:0.4,0.4,0.4",
-              "--light", "point:4,6,5:0.3,0.3,0.3+no-shadows" },
-        pixels, error);
-    ASSERT_EQ(error, "");
-    int shadowed = 0, agreed = 0, disagreed = 0;
-    for (const json& at : p)
-    {
-      if (!at.at("hit").get<bool>())
-      {
-        continue;
-      }
-      const json& lights = at.at("lights");
-      EXPECT_FALSE(lights.at(2).contains("shadowed")) << "a light that casts none";
-      bool agrees = true;
-      for (int l = 0; l < 2; ++l)
-      {
-        shadowed += lights.at(l).at("shadowed").get<bool>();
-        agrees = agrees && lights.at(l).value("shadow_map_agrees", true);
-      }
-      if (!agrees)
-      {
-        ++disagreed;
-        continue;
-      }
-      ++agreed;
-      if (!NearACase(lights))
-      {
-        ExpectWithinTheBound(Vec(at.at("rendered")), Vec(at.at("oracle")));
-      }
-    }
-    std::printf(
-      "[probe] %s: %d light-pixels in shadow; the maps agree at %d pixels, disagree at %d\n", rule,
-      shadowed, agreed, disagreed);
-    EXPECT_GT(shadowed, 50) << rule;
-    EXPECT_LT(disagreed, agreed / 20) << rule;
-  }
-}
-
 // A texture: the probe gives where it was looked up and the texel, the kd
 // that lit is the texel (--texture alone: factor 1), and the render agrees.
 TEST(Probe, TexelIsTheKdThatLit)

@@ -70,13 +70,12 @@ std::vector<Case> Cases()
     s.Geometry.Wall = true;
     add(std::string("wall_") + ToString(r), s);
   }
-  for (Shading r : { Shading::Flat, Shading::Gouraud })
+  for (Shading r : { Shading::Flat, Shading::Gouraud, Shading::Phong })
   {
     // Self-shadowing: the torus's upper half shadows the inside of its
-    // lower half. Not phong: there its interpolated normal leans towards
-    // the light where the faces turn away from it (the terminator), and
-    // the map's slope bias, taken from that normal, is too small for the
-    // faces' slope (acne; doc/design.md, "Shadows").
+    // lower half. Under phong, at the terminator the interpolated normal
+    // leans towards the light where the faces turn away from it: the
+    // map's slope bias must be the face's (doc/design.md, "Shadows").
     Scene s = Shadowed(Directional({ 0.4, -1, -0.15 }), r);
     s.Geometry.Occluder = false;
     s.Geometry.Torus = true;

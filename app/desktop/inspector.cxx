@@ -54,6 +54,17 @@ void Inspector::Start()
   this->ObserveFrames();
   this->ObserveDrags();
   this->ObserveClicks();
+  Observe(
+    this->Interactor, vtkCommand::TimerEvent,
+    [](vtkObject*, unsigned long, void* self, void* timer)
+    {
+      auto* inspector = static_cast<Inspector*>(self);
+      if (*static_cast<int*>(timer) == inspector->TraceTimer)
+      {
+        inspector->TraceStep();
+      }
+    },
+    this);
   this->Apply();
   this->ResetCamera(); // the panels' aspect
   this->Window->Render();
@@ -223,6 +234,7 @@ void Inspector::ObserveFrames()
         inspector->FrameMs.pop_front();
       }
       inspector->UpdateHud(); // shows in the next frame
+      inspector->FollowTracing();
     },
     this);
 }
@@ -258,6 +270,7 @@ void Inspector::ObserveDrags()
       {
         inspector->Window->Render();
       }
+      inspector->FollowTracing(); // the camera rests: trace
       inspector->RefreshDifference();
     },
     this);

@@ -18,6 +18,7 @@
 #include "image/comparison_picture.h"
 #include "image/image_writer_process.h"
 #include "probe/pixel_probe.h"
+#include "raytrace/ray_tracer.h"
 #include "scene/mesh_cache.h"
 #include "scene/scene_cache.h"
 #include "scene/shader_sources.h"
@@ -26,6 +27,7 @@
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
+#include <vtkImageData.h>
 #include <vtkLightWidget.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -61,6 +63,12 @@ const char* Describe(LightMode mode);
 
 /** shadelab-MESHSTEM-001.EXTENSION, or the first number not taken in the current folder. */
 std::string NumberedName(const std::string& mesh, const std::string& extension);
+
+/** picture (bottom row first) as VTK's 8-bit RGB image, quantised as files are. */
+vtkSmartPointer<vtkImageData> ToVtkImage(const FloatImage& picture);
+
+/** A raytrace panel's scene as phong draws it until its picture is whole. */
+SceneOptions TracingPreview(const SceneOptions& scene);
 
 /** value with `digits` decimals, as the HUD and the drag's timing print it. */
 std::string Fixed(double value, int digits);
@@ -144,6 +152,22 @@ public:
   std::function<void(const std::string&)> Copy; // text for the clipboard
 
 private:
+  // A raytrace panel of the comparison layout: phong draws it while the
+  // camera moves; once it rests, it is ray traced a band of rows at a time
+  // (the label shows how far) and the picture is shown over the panel.
+  struct Tracing
+  {
+    SceneOptions Scene; // the panel's
+    std::string Label;
+    vtkSmartPointer<vtkRenderer> Renderer; // over the panel's: the picture
+    vtkSmartPointer<vtkImageActor> Picture;
+    std::vector<double> Traced;        // what the picture is of (TracedView), or empty
+    std::unique_ptr<RayTracer> Tracer; // while it traces
+    FloatImage Image;
+    int Row = 0; // the next row to trace
+    Clock::time_point Started;
+  };
+
   // A panel of the window: its renderer, and per rule and mesh the actor
   // built for it (hidden while another shows), so that switching back
   // reuses the compiled program and the uploaded buffers.
@@ -158,6 +182,7 @@ private:
     vtkSmartPointer<vtkTextActor> Label;
     SceneCache Scenes;
     std::map<vtkPolyData*, vtkSmartPointer<vtkActor>> Glyphs, Edges;
+    std::unique_ptr<Tracing> Traced; // a raytrace panel's
   };
 
   // inspector.cxx: start-up, the camera and the lights that follow it, the
@@ -196,6 +221,12 @@ private:
 
   // inspector_command.cxx: the picture as a command.
   void CopyCommand();
+
+  // inspector_tracing.cxx: the raytrace panels.
+  void ShowTracing(Slot& slot, const Panel& panel);
+  std::vector<double> TracedView(const Slot& slot) const;
+  void FollowTracing();
+  void TraceStep();
 
   // inspector_pictures.cxx: the window's pixels read back.
   FloatImage GrabWindow();
@@ -239,6 +270,9 @@ private:
   std::vector<ProbeArrow> Arrows;
   int PressAt[2] = {};
   bool PressControl = false;
+  unsigned Generation = 0;  // Apply's count: a raytrace panel's scene changed
+  bool TraceQueued = false; // the timer TraceTimer will call TraceStep
+  int TraceTimer = -1;
 };
 }
 

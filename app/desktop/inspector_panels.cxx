@@ -39,10 +39,12 @@ void Inspector::Apply()
   this->MakeSlots(panels.size(), this->State.Compare ? this->Plan.Columns : 0,
     this->State.Compare && this->Plan.DifferenceA >= 0);
   this->Problem.clear();
+  ++this->Generation;
   for (std::size_t i = 0; i < panels.size(); ++i)
   {
     Slot& slot = this->Slots[i];
-    const SceneOptions& scene = panels[i].Scene;
+    this->ShowTracing(slot, panels[i]);
+    const SceneOptions scene = TracingPreview(panels[i].Scene);
     const std::vector<Light> lights = CameraLights(scene);
     const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights);
     slot.Peeling->SetMaximumNumberOfPeels(scene.Peels);
@@ -99,6 +101,10 @@ void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
   for (Slot& slot : this->Slots)
   {
     this->Window->RemoveRenderer(slot.Renderer);
+    if (slot.Traced)
+    {
+      this->Window->RemoveRenderer(slot.Traced->Renderer);
+    }
   }
   this->Window->RemoveRenderer(this->DifferenceRenderer);
   this->Slots.clear();

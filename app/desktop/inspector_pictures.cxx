@@ -31,8 +31,8 @@ FloatImage Crop(const FloatImage& window, vtkRenderer* panel, int width, int hei
   }
   return cut;
 }
+}
 
-// picture (top row first) as VTK's 8-bit RGB image, bottom row first.
 vtkSmartPointer<vtkImageData> ToVtkImage(const FloatImage& picture)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -46,7 +46,6 @@ vtkSmartPointer<vtkImageData> ToVtkImage(const FloatImage& picture)
       picture.Width * 3, out + static_cast<size_t>(y) * picture.Width * 3);
   }
   return image;
-}
 }
 
 // The window's pixels as rendered now: 8-bit values as floats, which an
@@ -77,6 +76,15 @@ void Inspector::RefreshDifference()
   if (!this->DifferenceCell || this->Dragging)
   {
     return;
+  }
+  for (int panel : { this->Plan.DifferenceA, this->Plan.DifferenceB })
+  {
+    const Slot& slot = this->Slots[panel];
+    if (slot.Traced && !slot.Traced->Renderer->GetDraw())
+    {
+      this->DifferenceImage->VisibilityOff(); // until its picture is whole
+      return;
+    }
   }
   // The two panels as rendered, without the texts drawn over them.
   std::vector<vtkProp*> texts{ this->Hud, this->Help };

@@ -6,7 +6,6 @@
 #include "desktop/probe_panel.h"
 #include "desktop/shader_panel.h"
 #include "desktop/x_display.h"
-#include "scene/comparison_panels.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -29,26 +28,14 @@ namespace shadelab
 {
 namespace
 {
-// Whether options ask the window for raytrace (the rule, the drag's, a
-// comparison's mode): it draws the raster rules live, and raytrace's
-// pictures take seconds, not a frame; render and compare draw them.
+// Whether options ask the window to draw raytrace live (the rule, the
+// drag's): it draws the raster rules live, and raytrace's pictures take
+// seconds, not a frame. The comparison layout takes it as a mode: traced
+// when the camera rests (inspector_tracing.cxx).
 bool AsksForRaytrace(const ViewOptions& options)
 {
-  if (options.Scene.ShadingRule == Shading::Raytrace ||
-    options.InteractiveShading == Shading::Raytrace)
-  {
-    return true;
-  }
-  try
-  {
-    const std::vector<Panel> modes = PlanComparison(options.Panels, options.Scene).Modes;
-    return std::any_of(modes.begin(), modes.end(),
-      [](const Panel& p) { return p.Scene.ShadingRule == Shading::Raytrace; });
-  }
-  catch (const std::invalid_argument&)
-  {
-    return false; // Inspector::Load reports it
-  }
+  return options.Scene.ShadingRule == Shading::Raytrace ||
+    options.InteractiveShading == Shading::Raytrace;
 }
 }
 
@@ -195,8 +182,9 @@ int RunView(const ViewOptions& options, const std::string& commandLine)
 {
   if (AsksForRaytrace(options))
   {
-    std::cerr << "shadelab: error: view: raytrace is not drawn in the window: shadelab render "
-                 "and compare draw it (see shadelab view --help)"
+    std::cerr << "shadelab: error: view: raytrace is drawn in the window only as a mode of "
+                 "the comparison layout (--modes); shadelab render draws it (see shadelab view "
+                 "--help)"
               << std::endl;
     return ExitUsage;
   }

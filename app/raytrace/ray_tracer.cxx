@@ -199,14 +199,26 @@ Covered RayTracer::Beyond() const
 
 FloatImage RayTracer::Picture(int samples) const
 {
+  FloatImage image = this->Blank(samples);
+  this->TraceRows(image, 0, image.Height);
+  return samples > 1 ? BoxAverage(image, samples) : image;
+}
+
+FloatImage RayTracer::Blank(int samples) const
+{
   FloatImage image;
   image.Width = this->Size.Width * samples;
   image.Height = this->Size.Height * samples;
   image.Rgba.resize(static_cast<std::size_t>(image.Width) * image.Height * 4);
-  std::atomic<int> next{ 0 };
+  return image;
+}
+
+void RayTracer::TraceRows(FloatImage& image, int first, int last) const
+{
+  std::atomic<int> next{ first };
   const auto rows = [&]
   {
-    for (int y; (y = next++) < image.Height;)
+    for (int y; (y = next++) < last;)
     {
       // Bottom row first, as OpenGL reads them; picture y from the top.
       float* out =
@@ -229,6 +241,5 @@ FloatImage RayTracer::Picture(int samples) const
   {
     thread.join();
   }
-  return samples > 1 ? BoxAverage(image, samples) : image;
 }
 }

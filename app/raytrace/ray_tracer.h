@@ -44,6 +44,14 @@ public:
    * alpha the coverage (1 over an opaque background).
    */
   FloatImage Picture(int samples) const;
+  /** Picture's image before a row is traced: samples x samples a pixel, black. */
+  FloatImage Blank(int samples) const;
+  /**
+   * Rows [first, last) of `image` (from the top; stored bottom row first,
+   * as OpenGL reads them) traced on every core: Picture a band at a time
+   * (the window's raytrace panel, with its progress).
+   */
+  void TraceRows(FloatImage& image, int first, int last) const;
 
   /** What the camera's ray through picture point (x, y) of a width x height picture sees. */
   Covered Sample(int width, int height, double x, double y) const;

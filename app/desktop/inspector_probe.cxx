@@ -134,11 +134,14 @@ bool Inspector::Reprobe()
   const SceneOptions scene = this->ShownScene();
   if (shown && at.X >= 0 && at.Y >= 0 && at.X < scene.Size.Width && at.Y < scene.Size.Height)
   {
-    const PixelProber prober(scene, shown->Mesh, this->Camera, scene.Size, shown->Images);
-    PixelProbe probe = prober.Probe(at);
-    // The window's pixel without the arrows over it.
+    // The window's pixel without the arrows over it, and the shadow maps
+    // baked, whose texels are read in the window's context (shadow_map_agrees).
     this->DrawArrows();
     this->Window->Render();
+    this->Window->MakeCurrent();
+    const PixelProber prober(
+      scene, shown->Mesh, this->Camera, scene.Size, shown->Images, shown->Casters.get());
+    PixelProbe probe = prober.Probe(at);
     vtkNew<vtkUnsignedCharArray> rgb;
     this->Window->GetPixelData(
       at.X, scene.Size.Height - 1 - at.Y, at.X, scene.Size.Height - 1 - at.Y, 0, rgb, 0);

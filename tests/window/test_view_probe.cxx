@@ -235,6 +235,17 @@ TEST(Probe, CtrlClickExplainsThePixelAsTheCommandLineDoesWithArrowsAlongNLH)
   EXPECT_EQ(CheckArrows(inspector, headless), (std::vector<std::string>{ "N", "L1", "R1" }));
   EXPECT_EQ(readout->toPlainText().toStdString(), ProbeText(*inspector.GetProbe()));
 
+  // Shadows: the light's shadow ray, and whether the window's own map
+  // decided alike at the pixel, as headless (its map, its own context).
+  inspector.Edit([](ViewState& s) { s.Scene.Shadows = true; });
+  ASSERT_TRUE(inspector.GetProbe());
+  headless = Headless(inspector, on);
+  const json& shadowed = ProbeJson(*inspector.GetProbe())["lights"][0];
+  EXPECT_EQ(shadowed["shadowed"], headless["lights"][0]["shadowed"]);
+  ASSERT_TRUE(shadowed.contains("shadow_map_agrees")) << shadowed.dump();
+  EXPECT_EQ(shadowed["shadow_map_agrees"], headless["lights"][0]["shadow_map_agrees"]);
+  inspector.Edit([](ViewState& s) { s.Scene.Shadows = false; });
+
   // Cleared: no probe, no arrows, and it stays cleared when the settings change.
   inspector.ClearProbe();
   inspector.Edit([](ViewState& s) { s.Scene.ReflectionModel = Reflection::BlinnPhong; });

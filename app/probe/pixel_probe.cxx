@@ -55,8 +55,12 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   }
   if (std::any_of(s.Lights.begin(), s.Lights.end(), CastsShadows))
   {
-    this->Rays =
-      std::make_unique<RayScene>(this->Triangles.GetPoints(), this->Triangles.GetTriangles());
+    if (!this->Tracer)
+    {
+      this->OwnRays =
+        std::make_unique<RayScene>(this->Triangles.GetPoints(), this->Triangles.GetTriangles());
+    }
+    this->Rays = this->Tracer ? &this->Tracer->GetRays() : this->OwnRays.get();
     // The prober stays where it is made (no copy, no move): `this` holds.
     this->In.Reaches = [this](std::size_t l, const Vec3& P, const Vec3& N)
     {

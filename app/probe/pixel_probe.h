@@ -162,8 +162,9 @@ private:
   std::unique_ptr<PictureElements> Elements; // drawn as edges or points
   int ElementPixels = 1;                     // the lines' width or the points' size
   SceneSurface Surface;
-  std::unique_ptr<RayScene> Rays;    // shadows: the oracle's shadow rays
   std::unique_ptr<RayTracer> Tracer; // raytrace: the picture's rays
+  std::unique_ptr<RayScene> OwnRays; // shadows in a raster picture: the oracle's rays
+  const RayScene* Rays = nullptr;    // shadows: the tracer's or OwnRays
   const ShadowCasters* Casters = nullptr;
   mutable std::vector<PixelProbe::ShadowCheck> Checks; // the pixel being shaded's
   // Its face's normal, the viewer's side, where the maps' bias slopes by

@@ -81,6 +81,9 @@ public:
     Rgb Adds{};   // Weight * Color: these sum to the sample
   };
 
+  /** The mesh's rays (the probe casts its shadow rays through them too). */
+  const RayScene& GetRays() const { return *this->Rays; }
+
   /** Sample(width, height, x, y), and where its light comes from. */
   Covered Explain(int width, int height, double x, double y, std::vector<Source>& sources) const;
 

@@ -270,9 +270,7 @@ private:
   std::vector<ProbeArrow> Arrows;
   int PressAt[2] = {};
   bool PressControl = false;
-  unsigned Generation = 0;  // Apply's count: a raytrace panel's scene changed
-  bool TraceQueued = false; // the timer TraceTimer will call TraceStep
-  int TraceTimer = -1;
+  int TraceTimer = -1; // the timer that will call TraceStep, if any
 };
 }
 

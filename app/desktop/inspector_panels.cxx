@@ -39,7 +39,6 @@ void Inspector::Apply()
   this->MakeSlots(panels.size(), this->State.Compare ? this->Plan.Columns : 0,
     this->State.Compare && this->Plan.DifferenceA >= 0);
   this->Problem.clear();
-  ++this->Generation;
   for (std::size_t i = 0; i < panels.size(); ++i)
   {
     Slot& slot = this->Slots[i];

@@ -71,8 +71,8 @@ void Inspector::ShowTracing(Slot& slot, const Panel& panel)
   slot.Traced->Traced.clear(); // the scene may have changed
 }
 
-// What a raytrace panel's picture depends on beyond its scene: the camera,
-// the panel's size in pixels, and Apply's count.
+// What a raytrace panel's picture depends on beyond its scene (a change of
+// which ShowTracing marks): the camera and the panel's size in pixels.
 std::vector<double> Inspector::TracedView(const Slot& slot) const
 {
   std::vector<double> view(9);
@@ -83,7 +83,7 @@ std::vector<double> Inspector::TracedView(const Slot& slot) const
   view.insert(view.end(),
     { this->Camera->GetViewAngle(), this->Camera->GetParallelScale(),
       static_cast<double>(this->Camera->GetParallelProjection()), static_cast<double>(size[0]),
-      static_cast<double>(size[1]), static_cast<double>(this->Generation) });
+      static_cast<double>(size[1]) });
   return view;
 }
 
@@ -116,9 +116,8 @@ void Inspector::FollowTracing()
       pending = true;
     }
   }
-  if (pending && !this->TraceQueued)
+  if (pending && this->TraceTimer < 0)
   {
-    this->TraceQueued = true;
     this->TraceTimer = this->Interactor->CreateOneShotTimer(1);
   }
 }
@@ -127,7 +126,7 @@ void Inspector::FollowTracing()
 // about TickMs; a whole picture is shown over its panel.
 void Inspector::TraceStep()
 {
-  this->TraceQueued = false;
+  this->TraceTimer = -1;
   const auto waiting = std::find_if(this->Slots.begin(), this->Slots.end(),
     [](const Slot& s)
     { return s.Traced && !s.Traced->Traced.empty() && !s.Traced->Renderer->GetDraw(); });
@@ -146,14 +145,13 @@ void Inspector::TraceStep()
     const int* size = slot.Renderer->GetSize();
     scene.Size = { std::max(size[0], 1), std::max(size[1], 1) };
     scene.Lights = this->CameraLights(t.Scene);
-    const SceneCache::Shown shown =
-      slot.Scenes.Show(TracingPreview(t.Scene), slot.Renderer, &scene.Lights);
-    if (!shown.Scene)
+    // The mesh and textures of the preview that Apply showed.
+    const BuiltScene* shown = slot.Scenes.GetShown();
+    if (!shown)
     {
       return; // the HUD shows the problem (Apply)
     }
-    t.Tracer =
-      std::make_unique<RayTracer>(scene, shown.Scene->Mesh, this->Camera, shown.Scene->Images);
+    t.Tracer = std::make_unique<RayTracer>(scene, shown->Mesh, this->Camera, shown->Images);
     t.Image = t.Tracer->Blank(1);
     t.Row = 0;
   }

@@ -263,7 +263,7 @@ std::string DeclarationsSource(const ShaderFeatures& f)
   {
     s += FillGlsl(AttenuationSource, std::to_string(f.Lights.size()));
   }
-  if (std::find(f.Shadows.begin(), f.Shadows.end(), true) != f.Shadows.end())
+  if (f.CastsShadows())
   {
     s += ShadowSlopeSource;
     if (f.SlopesByFace())

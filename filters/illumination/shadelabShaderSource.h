@@ -101,7 +101,12 @@ struct ShaderFeatures
   bool SlopesByFace() const
   {
     return this->Rule == Shading::Phong && this->Drawn == Representation::Surface &&
-      std::find(this->Shadows.begin(), this->Shadows.end(), true) != this->Shadows.end();
+      this->CastsShadows();
+  }
+  /** A light casts shadows. */
+  bool CastsShadows() const
+  {
+    return std::find(this->Shadows.begin(), this->Shadows.end(), true) != this->Shadows.end();
   }
   bool operator==(const ShaderFeatures& other) const;
 };

@@ -107,9 +107,9 @@ int RunCompare(const CompareOptions& o, const std::string& commandLine)
   for (const Panel& panel : panels)
   {
     ScenePicture shot = RenderScenePicture(panel.Scene, scenes, meshes, renderer);
-    if (!shot.Error.empty())
+    if (!shot.Errors.empty())
     {
-      return ReportError(shot.Input, shot.Error);
+      return ReportErrors(shot.Errors);
     }
     pictures.push_back(std::move(shot.Picture));
     mesh = shot.Scene->Mesh;

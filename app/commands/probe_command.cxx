@@ -95,9 +95,9 @@ int RunProbe(const ProbeOptions& o)
   }
   SceneCache scenes(meshes);
   const ScenePicture picture = RenderScenePicture(s, scenes, meshes, renderer);
-  if (!picture.Error.empty())
+  if (!picture.Errors.empty())
   {
-    return ReportError(picture.Input, picture.Error);
+    return ReportErrors(picture.Errors);
   }
   // The render's context is current: the prober reads its shadow maps.
   const PixelProber prober(s, picture.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(),

@@ -17,6 +17,15 @@ int ReportError(const std::string& input, const std::string& problem)
   return ExitFailure;
 }
 
+int ReportErrors(const std::vector<InputProblem>& problems)
+{
+  for (const auto& [input, problem] : problems)
+  {
+    ReportError(input, problem);
+  }
+  return ExitFailure;
+}
+
 void ReportWarnings(const std::string& input, const std::vector<std::string>& warnings)
 {
   static std::set<std::pair<std::string, std::string>> reported;

@@ -4,6 +4,7 @@
 #define shadelab_errors_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab
@@ -12,8 +13,14 @@ namespace shadelab
 constexpr int ExitFailure = 1;
 constexpr int ExitUsage = 2;
 
+/** An input (a file, `FILE:LINE`, "render") and its problem. */
+using InputProblem = std::pair<std::string, std::string>;
+
 /** Prints the error line on stderr and returns ExitFailure. */
 int ReportError(const std::string& input, const std::string& problem);
+
+/** Prints an error line for each problem (a stage's compile errors) and returns ExitFailure. */
+int ReportErrors(const std::vector<InputProblem>& problems);
 
 /**
  * Prints each warning about input on stderr, one line each, once per run

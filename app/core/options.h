@@ -150,6 +150,10 @@ struct SceneOptions
   std::string Texture;
   TextureWrap TextureWrapping = TextureWrap::Repeat;
   TextureFilter TextureFiltering = TextureFilter::Bilinear;
+  // --vertex-shader, --fragment-shader: files of complete GLSL that replace
+  // the generated stage of the scene's rule (scene/own_stage_files.h).
+  std::string VertexShader;
+  std::string FragmentShader;
   // OpenGL's default global ambient: the lecture's table is OpenGL's classic
   // material table, whose ka values were chosen for it.
   Rgb Ambient{ 0.2, 0.2, 0.2 };

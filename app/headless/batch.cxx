@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include "scene/mesh_cache.h"
 #include "scene/overlays.h"
+#include "scene/own_stage_files.h"
 #include "scene/scene.h"
 #include "scene/scene_cache.h"
 #include "vtkShadelabShading.h"
@@ -128,22 +129,35 @@ public:
   std::size_t Failed = 0, Skipped = 0;
 
 private:
-  // One line per failure, naming the shot when there is a scene file.
-  void Fail(const Shot& shot, const std::string& input, const std::string& problem)
+  // One line per failure (per error of a shader stage), naming the shot
+  // when there is a scene file.
+  void Fail(const Shot& shot, const std::vector<InputProblem>& problems)
   {
     ++this->Failed;
-    ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
+    for (const auto& [input, problem] : problems)
+    {
+      ReportError(shot.Label.empty() ? input : shot.Label + ": " + input, problem);
+    }
+  }
+  void Fail(const Shot& shot, const std::string& input, const std::string& problem)
+  {
+    this->Fail(shot, { { input, problem } });
   }
 
   // A shot that fails at one of its frames: the frame before, still with
   // the writer, is collected first, so that a shot fails once.
   void FailFrame(
-    const Shot& shot, const FramePlace& frame, const std::string& input, const std::string& problem)
+    const Shot& shot, const FramePlace& frame, const std::vector<InputProblem>& problems)
   {
     if (frame.Index == 0 || this->CollectUntil(0))
     {
-      this->Fail(shot, input, problem);
+      this->Fail(shot, problems);
     }
+  }
+  void FailFrame(
+    const Shot& shot, const FramePlace& frame, const std::string& input, const std::string& problem)
+  {
+    this->FailFrame(shot, frame, { { input, problem } });
   }
 
   // An output template (a scene file's, or many meshes') may name folders
@@ -241,6 +255,13 @@ private:
     if (!error.empty())
     {
       this->FailFrame(shot, frame, "render", error);
+      return false;
+    }
+    // Stages of one's own that the driver refused drew nothing: no picture.
+    if (const std::vector<InputProblem> refused = StageErrorLines(options, StageErrors(scene));
+        !refused.empty())
+    {
+      this->FailFrame(shot, frame, refused);
       return false;
     }
     if (dump && !dump->GetError().empty())

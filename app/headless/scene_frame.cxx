@@ -28,6 +28,13 @@ std::pair<std::string, std::string> RayTraceProblem(const SceneOptions& options)
   {
     return refused("--normal-glyphs");
   }
+  for (const std::string* stage : { &options.VertexShader, &options.FragmentShader })
+  {
+    if (!stage->empty())
+    {
+      return { *stage, "--shading raytrace traces rays on the CPU and runs no shader stage" };
+    }
+  }
   return {};
 }
 

@@ -3,6 +3,7 @@
 #include "headless/headless_renderer.h"
 #include "headless/scene_frame.h"
 #include "scene/overlays.h"
+#include "scene/own_stage_files.h"
 
 #include <vtkRenderer.h>
 
@@ -15,15 +16,13 @@ ScenePicture RenderScenePicture(
   const SceneCache::Shown shown = scenes.Show(options, renderer.GetRenderer());
   if (!shown.Scene)
   {
-    picture.Input = shown.Input;
-    picture.Error = shown.Error;
+    picture.Errors = { { shown.Input, shown.Error } };
     return picture;
   }
   picture.Scene = shown.Scene;
   if (auto [input, error] = RayTraceProblem(options); !error.empty())
   {
-    picture.Input = input;
-    picture.Error = error;
+    picture.Errors = { { input, error } };
     return picture;
   }
   const SceneOverlays overlays(options, shown.Scene->Mesh, meshes, renderer.GetRenderer());
@@ -31,8 +30,13 @@ ScenePicture RenderScenePicture(
   if (const std::string error = SceneFrame(options, *shown.Scene, renderer, picture.Picture);
       !error.empty())
   {
-    picture.Input = "render";
-    picture.Error = error;
+    picture.Errors = { { "render", error } };
+  }
+  // Stages of one's own that the driver refused drew nothing.
+  else if (std::vector<InputProblem> refused = StageErrorLines(options, StageErrors(*shown.Scene));
+           !refused.empty())
+  {
+    picture.Errors = std::move(refused);
   }
   return picture;
 }

@@ -4,10 +4,11 @@
 #ifndef shadelab_scene_picture_h
 #define shadelab_scene_picture_h
 
+#include "core/errors.h"
 #include "image/image_pixels.h"
 #include "scene/scene_cache.h"
 
-#include <string>
+#include <vector>
 
 namespace shadelab
 {
@@ -17,8 +18,10 @@ struct ScenePicture
 {
   FloatImage Picture;
   const BuiltScene* Scene = nullptr; // what was drawn, its camera in the renderer
-  std::string Input;                 // on error: what failed (the mesh, "camera", "render")
-  std::string Error;                 // on error: why, one line; else empty
+  // On error what failed (the mesh, "camera", "render") and why, one line
+  // each (a stage of one's own that the driver refused: a line per error);
+  // else none.
+  std::vector<InputProblem> Errors;
 };
 
 /** options' scene drawn by renderer, which was started at its size. */

@@ -15,9 +15,11 @@ namespace
 {
 // The settings a mode may change: those whose values hold no ',' or ':'
 // (the separators). The camera, size and lights are the comparison's own,
-// shared by every panel.
-const std::array<const char*, 6> ModeKeys{ "shading", "reflection", "material", "weighting", "ns",
-  "normals" };
+// shared by every panel. A panel of --shading's rule draws with the
+// stages of one's own given for the comparison, unless it names its own;
+// the other rules' panels draw their generated stages.
+const std::array<const char*, 8> ModeKeys{ "shading", "reflection", "material", "weighting", "ns",
+  "normals", "vertex_shader", "fragment_shader" };
 
 Panel ParseMode(const std::string& mode, const SceneOptions& base)
 {
@@ -29,6 +31,7 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
   }
   std::vector<std::string> args;
   std::string changes;
+  bool ownStages = false;
   const std::vector<std::string> parts = Split(mode, ':');
   for (std::size_t i = 0; i < parts.size(); ++i)
   {
@@ -45,10 +48,13 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
     {
       fail("'" + part +
         "' is not KEY=VALUE with KEY one of shading, reflection, material, "
-        "weighting, ns, normals");
+        "weighting, ns, normals, vertex_shader, fragment_shader");
     }
     const std::string value = part.substr(equals + 1);
-    args.insert(args.end(), { "--" + key, value });
+    ownStages = ownStages || key == "vertex_shader" || key == "fragment_shader";
+    std::string option = "--" + key;
+    std::replace(option.begin(), option.end(), '_', '-');
+    args.insert(args.end(), { option, value });
     if (key != "shading")
     {
       changes += ", " + key + " " + value;
@@ -65,15 +71,22 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
   {
     fail(e.what());
   }
+  if (!ownStages && panel.Scene.ShadingRule != base.ShadingRule)
+  {
+    panel.Scene.VertexShader.clear();
+    panel.Scene.FragmentShader.clear();
+  }
   panel.Label = ToString(panel.Scene.ShadingRule) + changes;
   return panel;
 }
 }
 
 const char* const ModesHelp =
-  "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong|raytrace, KEY "
-  "shading|reflection|material|weighting|ns|normals; e.g. phong,phong:material=gold,"
-  "gouraud:weighting=area (default flat,gouraud,phong)";
+  "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong|raytrace, "
+  "KEY "
+  "shading|reflection|material|weighting|ns|normals|vertex_shader|fragment_shader; e.g. "
+  "phong,phong:material=gold,gouraud:weighting=area,phong:fragment_shader=mine.frag (default "
+  "flat,gouraud,phong)";
 
 void AddComparisonOptions(CLI::App& command, ComparisonOptions& o)
 {

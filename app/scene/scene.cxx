@@ -76,7 +76,7 @@ IlluminationInputs CameraIllumination(
 }
 
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
-  const BuiltScene* reuse, const SceneImages& images)
+  const BuiltScene* reuse, const SceneImages& images, const OwnStages& stages)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -93,7 +93,7 @@ BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRendere
   renderer->ResetCameraClippingRange(bounds);
   Vec3 eye;
   camera->GetPosition(eye.data());
-  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse, images);
+  return BuildActor(options, EffectiveLights(options, eye), mesh, renderer, reuse, images, stages);
 }
 
 namespace
@@ -143,7 +143,8 @@ std::vector<std::vector<int>> PartsByLook(const std::vector<ScenePart>& parts)
 }
 
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
-  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse, const SceneImages& images)
+  vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse, const SceneImages& images,
+  const OwnStages& stages)
 {
   BuiltScene scene;
   scene.Mesh = mesh;
@@ -181,6 +182,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);
     drawn.Shading->SetShadows(casters);
+    drawn.Shading->SetOwnStages(stages);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)
     {
@@ -204,5 +206,19 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     scene.Drawn.push_back(drawn);
   }
   return scene;
+}
+
+std::vector<StageError> StageErrors(const BuiltScene& scene)
+{
+  for (const DrawnParts& drawn : scene.Drawn)
+  {
+    // Every part draws the same stages: the first that failed says why.
+    if (auto* mapper = vtkShadelabPolyDataMapper::SafeDownCast(drawn.Actor->GetMapper());
+        mapper && !mapper->GetOwnStageErrors().empty())
+    {
+      return mapper->GetOwnStageErrors();
+    }
+  }
+  return {};
 }
 }

@@ -5,6 +5,7 @@
 
 #include "core/options.h"
 #include "scene/scene_parts.h"
+#include "shadelabOwnStages.h"
 #include "shadelabShadingOracle.h"
 
 #include <vtkSmartPointer.h>
@@ -62,16 +63,19 @@ struct BuiltScene
  * buffers; only the lighting changes).
  */
 BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRenderer* renderer,
-  const BuiltScene* reuse = nullptr, const SceneImages& images = {});
+  const BuiltScene* reuse = nullptr, const SceneImages& images = {}, const OwnStages& stages = {});
 
 /**
  * The actor part of BuildScene: mesh lit as options say by `lights` (world
- * coordinates), under the renderer's camera as it is; `reuse` and `images`
- * as there.
+ * coordinates), under the renderer's camera as it is; `reuse`, `images`
+ * and `stages` as there.
  */
 BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lights,
   vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr,
-  const SceneImages& images = {});
+  const SceneImages& images = {}, const OwnStages& stages = {});
+
+/** The errors of the stages of one's own that the scene's last draw built, or none. */
+std::vector<StageError> StageErrors(const BuiltScene& scene);
 
 /**
  * Whether mesh's vertex colours are its kd: it has them ("Colors") and

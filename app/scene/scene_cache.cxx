@@ -1,5 +1,7 @@
 #include "scene/scene_cache.h"
 
+#include "scene/own_stage_files.h"
+
 #include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "vtkShadelabShading.h"
@@ -62,11 +64,19 @@ SceneCache::Shown SceneCache::Show(
       images.File[part.FileTexture] = image.Image;
     }
   }
+  OwnStages stages;
+  if (auto [input, error] = ReadOwnStages(options, stages); !error.empty())
+  {
+    shown.Input = input;
+    shown.Error = error;
+    return shown;
+  }
   const Key key{ options.ShadingRule, loaded.Mesh.GetPointer() };
   const auto before = this->Scenes.find(key);
   const BuiltScene* reuse = before == this->Scenes.end() ? nullptr : &before->second;
-  BuiltScene scene = lights ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse, images)
-                            : BuildScene(options, loaded.Mesh, renderer, reuse, images);
+  BuiltScene scene = lights
+    ? BuildActor(options, *lights, loaded.Mesh, renderer, reuse, images, stages)
+    : BuildScene(options, loaded.Mesh, renderer, reuse, images, stages);
   if (!scene.Error.empty())
   {
     shown.Input = "camera";

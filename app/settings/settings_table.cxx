@@ -24,6 +24,8 @@ using namespace settings;
     return o.member;                                                                               \
   }
 
+// The commands that draw with a rule's shaders (probe explains the generated ones).
+constexpr CommandSet StageCommands = Of(Command::Render) | Of(Command::Compare) | Of(Command::View);
 constexpr CommandSet ComputedNormals = PictureCommands | Of(Command::Normals) | Of(Command::Advise);
 
 std::vector<Setting> MakeSettings()
@@ -73,6 +75,16 @@ std::vector<Setting> MakeSettings()
             "Texel lookup: bilinear between the four nearest texel centres, or the nearest "
             "texel; no mipmaps" },
       Choice<TextureFilter>{ "texture filter" }, SHADELAB_FIELD(TextureFiltering)),
+    Plain({ "--vertex-shader", "vertex_shader", "FILE",
+            "The vertex stage's complete GLSL, as --dump-shaders writes it, possibly edited: it "
+            "replaces the generated stage of the rule (compare: the panels of --shading's rule); "
+            "the uniforms and attributes stay the generated program's",
+            StageCommands, "the generated stage" },
+      File{}, SHADELAB_FIELD(VertexShader)),
+    Plain({ "--fragment-shader", "fragment_shader", "FILE",
+            "The fragment stage's complete GLSL, as --vertex-shader's", StageCommands,
+            "the generated stage" },
+      File{}, SHADELAB_FIELD(FragmentShader)),
     Plain({ "--ambient", "ambient", "R,G,B", "Ambient light Ia" }, colour, SHADELAB_FIELD(Ambient)),
     LightsSetting(),
     Plain({ "--attenuation", "attenuation", "C0,C1,C2",

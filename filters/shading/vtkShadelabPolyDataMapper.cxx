@@ -13,10 +13,47 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
+#include <vtkShader.h>
 
 #include <vector>
 
 vtkStandardNewMacro(vtkShadelabPolyDataMapper);
+
+void vtkShadelabPolyDataMapper::SetOwnStages(const shadelab::OwnStages& stages)
+{
+  if (!(stages == this->Own))
+  {
+    this->Own = stages;
+    this->OwnErrors.clear();
+    this->Modified(); // the program is built again
+  }
+}
+
+void vtkShadelabPolyDataMapper::BuildShaders(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* renderer, vtkActor* actor)
+{
+  this->Superclass::BuildShaders(shaders, renderer, actor);
+  this->OwnErrors.clear();
+  if (this->Own.Empty())
+  {
+    return;
+  }
+  // Last, so that the stage is exactly the given text: nothing of VTK's or
+  // of a render pass's is substituted into it (the cache's substitutions
+  // find nothing to change in a dumped stage).
+  vtkShader* vertex = shaders[vtkShader::Vertex];
+  vtkShader* fragment = shaders[vtkShader::Fragment];
+  const std::string& ownVertex = this->Own.Vertex.empty() ? vertex->GetSource() : this->Own.Vertex;
+  const std::string& ownFragment =
+    this->Own.Fragment.empty() ? fragment->GetSource() : this->Own.Fragment;
+  this->OwnErrors =
+    shadelab::CheckStages(ownVertex, ownFragment, shaders[vtkShader::Geometry]->GetSource());
+  if (this->OwnErrors.empty())
+  {
+    vertex->SetSource(ownVertex);
+    fragment->SetSource(ownFragment);
+  }
+}
 
 void vtkShadelabPolyDataMapper::BuildIBO(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* mesh)
 {

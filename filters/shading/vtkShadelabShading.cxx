@@ -314,6 +314,7 @@ void vtkShadelabShading::Attach(
   if (auto* ours = vtkShadelabPolyDataMapper::SafeDownCast(mapper))
   {
     ours->SetEachElementOnce(this->Features.Drawn != Representation::Surface);
+    ours->SetOwnStages(this->Own);
   }
   vtkProperty* property = actor->GetProperty();
   property->LightingOn();

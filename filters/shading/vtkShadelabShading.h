@@ -18,6 +18,7 @@
 #include "shadelab_filtersModule.h" // the export macro
 
 #include "shadelabFaceNormalTexture.h"
+#include "shadelabOwnStages.h"
 #include "shadelabShaderSource.h"
 #include "shadelabShadingOracle.h"
 
@@ -128,6 +129,12 @@ public:
    */
   VTK_WRAPEXCLUDE void SetShadows(std::shared_ptr<shadelab::ShadowCasters> casters);
 
+  /**
+   * Stages of one's own that replace the generated ones on the actor's
+   * mapper (vtkShadelabPolyDataMapper::SetOwnStages). Default none.
+   */
+  VTK_WRAPEXCLUDE void SetOwnStages(const shadelab::OwnStages& stages) { this->Own = stages; }
+
   /** What the generated code depends on. */
   const shadelab::ShaderFeatures& GetFeatures() const { return this->Features; }
 
@@ -170,6 +177,7 @@ private:
   void UpdateShadowFeatures();
 
   shadelab::ShaderFeatures Features;
+  shadelab::OwnStages Own;
   shadelab::Material Surface;
   shadelab::Rgb Ambient{};
   std::vector<shadelab::Light> Lights;

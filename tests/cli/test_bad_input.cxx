@@ -423,6 +423,35 @@ const BadCase Cases[] = {
       return std::vector<std::string>{ (d / "huge.stl").string(), "-o", "OUT" };
     },
     1, { "huge.stl", "is 102400 MiB; reading it needs more than the", "MiB of memory available" } },
+  // A stage of one's own: the file named with its problem.
+  { "ShaderStageMissing",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--fragment-shader", (d / "nope.frag").string() });
+    },
+    1, { "nope.frag", "No such file" } },
+  { "ShaderStageFolder",
+    [](const TempDir& d)
+    {
+      std::filesystem::create_directory(d / "stage.vert");
+      return WithMesh(d, "t.obj", Tetrahedron, { "--vertex-shader", (d / "stage.vert").string() });
+    },
+    1, { "stage.vert", "Is a directory" } },
+  { "ShaderStageEmpty",
+    [](const TempDir& d)
+    {
+      WriteText(d / "empty.frag", "");
+      return WithMesh(
+        d, "t.obj", Tetrahedron, { "--fragment-shader", (d / "empty.frag").string() });
+    },
+    1, { "empty.frag", "is empty" } },
+  { "ShaderStageUnderRaytrace",
+    [](const TempDir& d)
+    {
+      WriteText(d / "mine.frag", "#version 150\nvoid main() {}\n");
+      return WithMesh(d, "t.obj", Tetrahedron,
+        { "--shading", "raytrace", "--fragment-shader", (d / "mine.frag").string() });
+    },
+    1, { "mine.frag", "runs no shader stage" } },
   // --texture: the image named with its problem, and a mesh without texture
   // coordinates named with the contract's words.
   { "TextureMissing",

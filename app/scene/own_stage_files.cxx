@@ -1,0 +1,82 @@
+#include "scene/own_stage_files.h"
+
+#include "shadelabCheckedFile.h"
+#include "shadelabMeshReadError.h"
+
+#include <regex>
+#include <sstream>
+
+namespace shadelab
+{
+InputProblem ReadOwnStages(const SceneOptions& options, OwnStages& stages)
+{
+  const std::pair<const std::string*, std::string*> files[] = {
+    { &options.VertexShader, &stages.Vertex }, { &options.FragmentShader, &stages.Fragment }
+  };
+  for (const auto& [path, text] : files)
+  {
+    text->clear();
+    if (path->empty())
+    {
+      continue;
+    }
+    try
+    {
+      *text = OpenChecked(*path, MaxShaderFileBytes).ReadAll();
+    }
+    catch (const MeshReadError& e)
+    {
+      return { *path, e.what() };
+    }
+    if (text->empty())
+    {
+      return { *path, "is empty: a stage is complete GLSL, as --dump-shaders writes it" };
+    }
+  }
+  return {};
+}
+
+std::vector<InputProblem> StageErrorLines(
+  const SceneOptions& options, const std::vector<StageError>& errors)
+{
+  // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
+  static const std::regex located(R"(^\s*\d+(?::(\d+)\(\d+\)|\((\d+)\))\s*:\s*(.*)$)");
+  std::string both = options.VertexShader;
+  if (!options.FragmentShader.empty())
+  {
+    both += (both.empty() ? "" : " + ") + options.FragmentShader;
+  }
+  std::vector<InputProblem> lines;
+  for (const StageError& error : errors)
+  {
+    const std::string& own = error.Where == StageError::Stage::Vertex ? options.VertexShader
+      : error.Where == StageError::Stage::Fragment                    ? options.FragmentShader
+                                                                      : both;
+    const std::string file = own.empty()
+      ? std::string(error.Where == StageError::Stage::Vertex ? "the generated vertex stage"
+                                                             : "the generated fragment stage")
+      : own;
+    const std::size_t before = lines.size();
+    std::istringstream log(error.Log);
+    std::string line;
+    while (std::getline(log, line))
+    {
+      std::smatch m;
+      if (std::regex_match(line, m, located))
+      {
+        lines.push_back({ file + ":" + (m[1].matched ? m[1].str() : m[2].str()), m[3].str() });
+      }
+      else if (line.find_first_not_of(" \t\r") != std::string::npos)
+      {
+        lines.push_back(
+          { file, error.Where == StageError::Stage::Link ? "linking: " + line : line });
+      }
+    }
+    if (lines.size() == before)
+    {
+      lines.push_back({ file, "the driver rejected it and said nothing more" });
+    }
+  }
+  return lines;
+}
+}

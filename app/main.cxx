@@ -2,6 +2,7 @@
 // meshes, through VTK. Each command lives in its own file.
 #include "commands/advise_command.h"
 #include "commands/bench_command.h"
+#include "commands/check_shader_command.h"
 #include "commands/compare_command.h"
 #include "commands/normals_command.h"
 #include "commands/probe_command.h"
@@ -109,6 +110,7 @@ int main(int argc, char** argv)
   shadelab::BenchOptions bench;
   shadelab::AdviseOptions advise;
   shadelab::ProbeOptions probe;
+  shadelab::CheckShaderOptions checkShader;
   std::string commandLine; // set once parsed
   const Command commands[] = {
     { [&](CLI::App& p) { return shadelab::AddRenderCommand(p, render); }, &render.Quiet,
@@ -133,6 +135,8 @@ int main(int argc, char** argv)
       [&] { return shadelab::RunAdvise(advise); } },
     { [&](CLI::App& p) { return shadelab::AddProbeCommand(p, probe); }, &probe.Quiet,
       [&] { return shadelab::RunProbe(probe); } },
+    { [&](CLI::App& p) { return shadelab::AddCheckShaderCommand(p, checkShader); },
+      &checkShader.Quiet, [&] { return shadelab::RunCheckShader(checkShader, commandLine); } },
   };
   std::vector<CLI::App*> added;
   for (const Command& command : commands)

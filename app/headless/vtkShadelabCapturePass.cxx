@@ -1,6 +1,7 @@
 #include "headless/vtkShadelabCapturePass.h"
 
 #include "image/image_pixels.h"
+#include "shadelabEightBitStep.h"
 
 #include <vtkAbstractMapper.h>
 #include <vtkActor.h>
@@ -21,35 +22,6 @@ vtkStandardNewMacro(vtkShadelabCapturePass);
 
 namespace
 {
-// The 8-bit step, after everything else in main (VTK's last tag in its
-// polydata fragment shader is the coincident-topology offset's).
-// shadelabQuantised(v) is Quantised(v, 255) / 255: an estimate in float is
-// one too high at most, next to a half step, where comparing with the half
-// step's least float settles it exactly. NaN lands on 0, as on the CPU:
-// llvmpipe's clamp takes the larger of NaN and 0 first, which is 0 (the
-// test's NaN square holds it to that).
-const char* const QuantiseDeclaration =
-  R"glsl(// The 8-bit capture: k = round(255*clamp(I)), decided exactly, stored as k/255.
-uniform float shadelabHalfSteps[255]; // the least float at or above (k - 0.5)/255, k = 1..255
-float shadelabQuantised(float v)
-{
-  float c = clamp(v, 0.0, 1.0);
-  int k = int(c * 255.0 + 0.5); // k or k + 1 (IEEE rounding is monotonic, half steps are floats)
-  if (k > 0 && c < shadelabHalfSteps[k - 1])
-  {
-    k -= 1;
-  }
-  return float(k) / 255.0;
-}
-vec4 shadelabQuantised(vec4 v)
-{
-  return vec4(shadelabQuantised(v.r), shadelabQuantised(v.g), shadelabQuantised(v.b),
-    shadelabQuantised(v.a));
-}
-)glsl";
-const char* const QuantiseCall = "\n  fragOutput0 = shadelabQuantised(fragOutput0);\n";
-const char* const DeclarationTag = "//VTK::Output::Dec";
-const char* const LastTag = "//VTK::Coincident::Impl";
 
 // v as the 8-bit target stores it from k/255 (k = Quantised(v, 255)), for the clear colour.
 double QuantisedToEightBits(double v)
@@ -215,12 +187,10 @@ void vtkShadelabCapturePass::Render(const vtkRenderState* s)
 bool vtkShadelabCapturePass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
-  if (!vtkShaderProgram::Substitute(
-        fragmentShader, DeclarationTag, std::string(QuantiseDeclaration) + DeclarationTag) ||
-    !vtkShaderProgram::Substitute(fragmentShader, LastTag, std::string(LastTag) + QuantiseCall))
+  if (!shadelab::AddEightBitStep(fragmentShader))
   {
-    vtkErrorMacro("the fragment shader of " << mapper->GetClassName() << " lacks " << DeclarationTag
-                                            << " or " << LastTag << " for the 8-bit step");
+    vtkErrorMacro(
+      "the fragment shader of " << mapper->GetClassName() << " has no place for the 8-bit step");
     return false;
   }
   return true;

@@ -119,6 +119,12 @@ struct PixelProbe
   int Reflections = 0; // --reflections
 };
 
+/** The oracle's value at the pixel: traced, composited in depth order, or shaded. */
+inline Rgb OracleOf(const PixelProbe& p)
+{
+  return p.Traced ? p.Traced->Color : p.Composited ? p.Composited->Color : p.Shaded.Color;
+}
+
 /** A scene's picture, ready to explain pixel after pixel. */
 class PixelProber
 {

@@ -120,7 +120,7 @@ ordered_json ProbeJson(const PixelProbe& p)
     j["background"] = p.Background;
     return j;
   }
-  j["oracle"] = p.Traced ? p.Traced->Color : p.Composited ? p.Composited->Color : p.Shaded.Color;
+  j["oracle"] = OracleOf(p);
   if (p.Traced)
   {
     // Where the ray-traced sample's light comes from: these adds sum to the

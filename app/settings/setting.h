@@ -31,15 +31,17 @@ enum class Command
   View,
   Probe,
   Normals,
-  Advise
+  Advise,
+  CheckShader
 };
 
 template <>
 struct NameTable<Command>
 {
-  static constexpr std::array<std::pair<Command, const char*>, 6> Entries{
+  static constexpr std::array<std::pair<Command, const char*>, 7> Entries{
     { { Command::Render, "render" }, { Command::Compare, "compare" }, { Command::View, "view" },
-      { Command::Probe, "probe" }, { Command::Normals, "normals" }, { Command::Advise, "advise" } }
+      { Command::Probe, "probe" }, { Command::Normals, "normals" }, { Command::Advise, "advise" },
+      { Command::CheckShader, "check-shader" } }
   };
 };
 
@@ -52,8 +54,8 @@ constexpr CommandSet Of(Command c)
 }
 
 /** The commands that make or explain a picture of a scene. */
-constexpr CommandSet PictureCommands =
-  Of(Command::Render) | Of(Command::Compare) | Of(Command::View) | Of(Command::Probe);
+constexpr CommandSet PictureCommands = Of(Command::Render) | Of(Command::Compare) |
+  Of(Command::View) | Of(Command::Probe) | Of(Command::CheckShader);
 
 struct Setting
 {

@@ -301,6 +301,11 @@ void vtkShadelabPeelingPass::BlendTexture(vtkOpenGLRenderWindow* window,
 bool vtkShadelabPeelingPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  // A stage of one's own dumped from a translucent scene holds the test already.
+  if (fragmentShader.find(PeelDeclaration) != std::string::npos)
+  {
+    return true;
+  }
   // The depth the fragment writes: its own, or the one the stage gives it
   // (lines drawn over the surface push the surface back).
   const char* depth =

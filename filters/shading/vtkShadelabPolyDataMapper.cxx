@@ -1,5 +1,6 @@
 #include "vtkShadelabPolyDataMapper.h"
 
+#include "shadelabEightBitStep.h"
 #include "shadelabRepresentation.h"
 #include "shadelabTriangleIndexBuffer.h"
 
@@ -38,20 +39,30 @@ void vtkShadelabPolyDataMapper::BuildShaders(
   {
     return;
   }
-  // Last, so that the stage is exactly the given text: nothing of VTK's or
-  // of a render pass's is substituted into it (the cache's substitutions
-  // find nothing to change in a dumped stage).
+  // Last, so that the stage is the given text: nothing of VTK's is
+  // substituted into it (the cache's substitutions find nothing to change
+  // in a dumped stage), only the render passes' own steps, as they are
+  // into the generated fragment stage (the 8-bit capture's where the
+  // picture is 8-bit, and only then; a translucent scene's peels).
   vtkShader* vertex = shaders[vtkShader::Vertex];
   vtkShader* fragment = shaders[vtkShader::Fragment];
-  const std::string& ownVertex = this->Own.Vertex.empty() ? vertex->GetSource() : this->Own.Vertex;
-  const std::string& ownFragment =
-    this->Own.Fragment.empty() ? fragment->GetSource() : this->Own.Fragment;
-  this->OwnErrors =
-    shadelab::CheckStages(ownVertex, ownFragment, shaders[vtkShader::Geometry]->GetSource());
-  if (this->OwnErrors.empty())
+  vtkShader* geometry = shaders[vtkShader::Geometry];
+  const std::string generatedVertex = vertex->GetSource();
+  const std::string generatedFragment = fragment->GetSource();
+  const std::string geometrySource = geometry->GetSource();
+  if (!this->Own.Fragment.empty())
   {
-    vertex->SetSource(ownVertex);
-    fragment->SetSource(ownFragment);
+    fragment->SetSource(shadelab::WithoutEightBitStep(this->Own.Fragment));
+    this->ReplaceShaderRenderPass(shaders, renderer, actor, true);
+    geometry->SetSource(geometrySource);
+  }
+  vertex->SetSource(this->Own.Vertex.empty() ? generatedVertex : this->Own.Vertex);
+  this->OwnErrors =
+    shadelab::CheckStages(vertex->GetSource(), fragment->GetSource(), geometrySource);
+  if (!this->OwnErrors.empty())
+  {
+    vertex->SetSource(generatedVertex);
+    fragment->SetSource(generatedFragment);
   }
 }
 

@@ -1,0 +1,306 @@
+#include "commands/check_shader_command.h"
+
+#include "core/errors.h"
+#include "headless/headless_renderer.h"
+#include "headless/scene_picture.h"
+#include "image/comparison_picture.h"
+#include "image/image_writer_process.h"
+#include "image/metadata.h"
+#include "probe/pixel_probe.h"
+#include "probe/probe_json.h"
+#include "probe/probe_text.h"
+#include "scene/camera.h"
+#include "scene/mesh_cache.h"
+#include "scene/scene_cache.h"
+#include "settings/command_line.h"
+#include "shadelabJsonProblem.h"
+
+#include <vtkRenderer.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace shadelab
+{
+namespace
+{
+// A pixel is compared where the ray through its centre meets the mesh at
+// least this many pixels from every edge of the triangle it meets. Both
+// the rasteriser and the oracle then take that triangle (a float's
+// rounding moves a pixel centre across an edge only within about 1e-4 of
+// a pixel) and interpolate its corners with the same weights; at an edge
+// flat's colour jumps and the two may take either side.
+constexpr double CheckedEdgeMargin = 0.5;
+
+// The oracle tests' bound on a channel (tests/cli/oracle_scene.h): float's
+// arithmetic through the shader's steps, relative, with a floor for values
+// near 0.
+double Bound(double oracle)
+{
+  return 1e-4 * std::max(std::abs(oracle), 0.01);
+}
+
+// One picture's errors against the oracle over the compared pixels.
+struct Errors
+{
+  std::array<double, 3> Largest{};
+  std::array<double, 3> Sum{};
+  long long Beyond = 0;  // pixels with a channel beyond its bound
+  double Worst = -1;     // the largest error over the channels
+  Pixel WorstAt;         // where it is
+  std::vector<float> At; // per pixel (top row first): the largest channel's error
+
+  void Add(const Rgb& rendered, const Rgb& oracle, Pixel at, int width)
+  {
+    double pixel = 0;
+    bool beyond = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double error = std::abs(rendered[c] - oracle[c]);
+      this->Largest[c] = std::max(this->Largest[c], error);
+      this->Sum[c] += error;
+      pixel = std::max(pixel, error);
+      beyond = beyond || error > Bound(oracle[c]);
+    }
+    this->Beyond += beyond;
+    if (pixel > this->Worst)
+    {
+      this->Worst = pixel;
+      this->WorstAt = at;
+    }
+    this->At[static_cast<std::size_t>(at.Y) * width + at.X] = static_cast<float>(pixel);
+  }
+};
+
+std::string Triple(const std::array<double, 3>& v, double scale = 1)
+{
+  std::ostringstream out;
+  out << std::setprecision(3) << v[0] * scale << ", " << v[1] * scale << ", " << v[2] * scale;
+  return out.str();
+}
+
+nlohmann::ordered_json ErrorsJson(const Errors& e, long long compared)
+{
+  nlohmann::ordered_json j;
+  j["largest"] = e.Largest;
+  std::array<double, 3> mean{};
+  for (int c = 0; c < 3; ++c)
+  {
+    mean[c] = compared ? e.Sum[c] / compared : 0;
+  }
+  j["mean"] = mean;
+  j["beyond_bound"] = e.Beyond;
+  j["worst_pixel"] = { e.WorstAt.X, e.WorstAt.Y };
+  return j;
+}
+
+// The heat map of one's own errors: black where the picture agrees, through
+// red and yellow to white at the largest error; uncompared pixels black.
+Difference HeatOf(const Errors& e, int width, int height, long long compared)
+{
+  Difference d;
+  d.Largest = std::max(e.Worst, 0.0);
+  d.Heat.Width = width;
+  d.Heat.Height = height;
+  d.Heat.Rgba.assign(static_cast<std::size_t>(width) * height * 4, 1.0f);
+  double sum = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const double error = e.At[static_cast<std::size_t>(y) * width + x];
+      sum += error;
+      d.Differing += error > 0;
+      const Rgb colour = HeatColour(d.Largest > 0 ? error / d.Largest : 0);
+      float* p = d.Heat.Rgba.data() + (static_cast<std::size_t>(height - 1 - y) * width + x) * 4;
+      std::copy(colour.begin(), colour.end(), p);
+    }
+  }
+  d.Mean = compared ? sum / compared : 0;
+  return d;
+}
+
+std::string OwnLabel(const SceneOptions& s)
+{
+  std::string files = s.VertexShader;
+  if (!s.FragmentShader.empty())
+  {
+    files += (files.empty() ? "" : " + ") + s.FragmentShader;
+  }
+  return files;
+}
+}
+
+CLI::App* AddCheckShaderCommand(CLI::App& program, CheckShaderOptions& o)
+{
+  CLI::App* check = program.add_subcommand("check-shader",
+    "Check stages of one's own (--vertex-shader, --fragment-shader) against the lecture's "
+    "equation: render MESH with them and with the generated stages, compare both with the "
+    "double-precision oracle pixel by pixel, and say where they part; exit 0 when the "
+    "stages agree with the oracle within the oracle tests' bound, 1 when not");
+  o.Scene.Size = { 320, 240 };
+  check->add_option("MESH", o.Scene.Mesh, MeshFileHelp())->required();
+  AddSettings(*check, o.Scene, Command::CheckShader);
+  check->get_option("--size")->description("Image size in pixels (default 320x240)");
+  check->add_option("-o,--output", o.Output,
+    "A picture of the stages' render, the generated one's, and the heat map of the stages' "
+    "error against the oracle");
+  check->add_flag("--json", o.Json, "One JSON object instead of the text");
+  check->add_flag("-q,--quiet", o.Quiet, "No warnings");
+  check->footer(CameraHelp);
+  return check;
+}
+
+int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
+{
+  const SceneOptions& own = o.Scene;
+  if (own.VertexShader.empty() && own.FragmentShader.empty())
+  {
+    ReportError("check-shader",
+      "give the stages to check: --fragment-shader FILE and/or --vertex-shader FILE (as "
+      "render --dump-shaders writes them)");
+    return ExitUsage;
+  }
+  if (!o.Output.empty())
+  {
+    if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
+    {
+      return ReportError(o.Output, error);
+    }
+  }
+  SceneOptions generated = own;
+  generated.VertexShader.clear();
+  generated.FragmentShader.clear();
+
+  std::unique_ptr<ImageWriterProcess> writer; // started for a texture's image or the picture
+  MeshCache meshes(DecodingThrough(writer));
+  HeadlessRenderer renderer;
+  const int width = own.Size.Width, height = own.Size.Height;
+  if (const std::string error = renderer.Start(width, height); !error.empty())
+  {
+    return ReportError("render", error);
+  }
+  SceneCache scenes(meshes);
+  // One's own first: a stage the driver refuses ends the check at once.
+  ScenePicture mine = RenderScenePicture(own, scenes, meshes, renderer);
+  if (!mine.Errors.empty())
+  {
+    return ReportErrors(mine.Errors);
+  }
+  const ScenePicture theirs = RenderScenePicture(generated, scenes, meshes, renderer);
+  if (!theirs.Errors.empty())
+  {
+    return ReportErrors(theirs.Errors);
+  }
+  // The render's context is current: the prober reads its shadow maps.
+  const PixelProber prober(generated, theirs.Scene->Mesh, renderer.GetRenderer()->GetActiveCamera(),
+    own.Size, theirs.Scene->Images, theirs.Scene->Casters.get());
+  Errors ownErrors, generatedErrors;
+  ownErrors.At.assign(static_cast<std::size_t>(width) * height, 0.0f);
+  generatedErrors.At = ownErrors.At;
+  long long compared = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const PixelProbe p = prober.Probe({ x, y });
+      if (!p.Hit || p.EdgeDistance < CheckedEdgeMargin)
+      {
+        continue;
+      }
+      ++compared;
+      const Rgb oracle = OracleOf(p);
+      ownErrors.Add(PixelRgb(mine.Picture, x, y), oracle, { x, y }, width);
+      generatedErrors.Add(PixelRgb(theirs.Picture, x, y), oracle, { x, y }, width);
+    }
+  }
+  const bool agrees = ownErrors.Beyond == 0;
+  PixelProbe worst;
+  if (compared > 0)
+  {
+    worst = prober.Probe(ownErrors.WorstAt);
+    worst.Rendered = PixelRgb(theirs.Picture, worst.At.X, worst.At.Y);
+    worst.RenderedFrom = "the generated stages' float render at the pixel";
+  }
+  const std::string label = OwnLabel(own);
+  if (o.Json)
+  {
+    nlohmann::ordered_json j;
+    j["mesh"] = own.Mesh;
+    j["stages"] = label;
+    j["size"] = { width, height };
+    j["compared"] = compared;
+    j["edge_margin"] = CheckedEdgeMargin;
+    j["own"] = ErrorsJson(ownErrors, compared);
+    j["generated"] = ErrorsJson(generatedErrors, compared);
+    if (compared > 0)
+    {
+      j["own_at_worst"] = PixelRgb(mine.Picture, worst.At.X, worst.At.Y);
+      j["worst_probe"] = ProbeJson(worst);
+    }
+    j["agrees"] = agrees;
+    std::cout << JsonText(j) << std::endl;
+  }
+  else
+  {
+    const auto mean = [compared](const Errors& e)
+    {
+      std::array<double, 3> m{};
+      for (int c = 0; c < 3; ++c)
+      {
+        m[c] = compared ? e.Sum[c] / compared : 0;
+      }
+      return m;
+    };
+    std::cout << "check-shader: " << label << " against the oracle, " << own.Mesh << ", "
+              << ToString(own.ShadingRule) << " " << ToString(own.ReflectionModel) << ", " << width
+              << "x" << height << "\n"
+              << "compared " << compared << " pixels (the mesh, " << CheckedEdgeMargin
+              << " pixels or more from a triangle's edge); a channel's bound is 1e-4 * "
+                 "max(|oracle|, 0.01)\n"
+              << "  yours:     largest error (R, G, B) " << Triple(ownErrors.Largest) << ", mean "
+              << Triple(mean(ownErrors)) << ", " << ownErrors.Beyond << " pixels beyond the bound\n"
+              << "  generated: largest error (R, G, B) " << Triple(generatedErrors.Largest)
+              << ", mean " << Triple(mean(generatedErrors)) << ", " << generatedErrors.Beyond
+              << " pixels beyond the bound\n";
+    if (compared > 0)
+    {
+      const Rgb at = PixelRgb(mine.Picture, worst.At.X, worst.At.Y);
+      std::cout << "yours part most from the oracle at pixel " << worst.At.X << "," << worst.At.Y
+                << ": yours " << Triple(at) << ", the oracle " << Triple(OracleOf(worst))
+                << "; the generated stages there:\n"
+                << ProbeText(worst);
+    }
+    std::cout << (agrees ? "agrees with the oracle" : "does not agree with the oracle")
+              << std::endl;
+  }
+  if (!o.Output.empty())
+  {
+    const Difference heat = HeatOf(ownErrors, width, height, compared);
+    const std::string heatLabel = "|yours - oracle|";
+    const FloatImage picture = ComposeComparison(
+      { { &mine.Picture, "yours" }, { &theirs.Picture, "generated" }, { &heat.Heat, heatLabel } },
+      0, &heat, 2);
+    const auto metadata =
+      DescribePicture(commandLine, own, renderer.GetRenderer()->GetActiveCamera(), mine.Scene->Mesh,
+        "", { "yours", "generated", heatLabel });
+    if (!writer)
+    {
+      writer = std::make_unique<ImageWriterProcess>();
+    }
+    if (const std::string error = writer->Write(o.Output, picture, PixelType::Auto, metadata);
+        !error.empty())
+    {
+      return ReportError(o.Output, error);
+    }
+  }
+  return agrees ? 0 : ExitFailure;
+}
+}

@@ -83,10 +83,9 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
 
 const char* const ModesHelp =
   "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong|raytrace, "
-  "KEY "
-  "shading|reflection|material|weighting|ns|normals|vertex_shader|fragment_shader; e.g. "
-  "phong,phong:material=gold,gouraud:weighting=area,phong:fragment_shader=mine.frag (default "
-  "flat,gouraud,phong)";
+  "KEY one of shading, reflection, material, weighting, ns, normals, vertex_shader, "
+  "fragment_shader; e.g. phong,phong:material=gold,gouraud:weighting=area or "
+  "phong,phong:fragment_shader=mine.frag (default flat,gouraud,phong)";
 
 void AddComparisonOptions(CLI::App& command, ComparisonOptions& o)
 {

@@ -96,6 +96,10 @@ void Inspector::Show(bool layout)
   }
   this->Reprobe();
   this->Window->Render();
+  if (this->ReportStageErrors())
+  {
+    this->Window->Render();
+  }
   this->RefreshDifference();
   if (this->Changed)
   {
@@ -233,6 +237,7 @@ void Inspector::ObserveFrames()
       {
         inspector->FrameMs.pop_front();
       }
+      inspector->ReportStageErrors();
       inspector->UpdateHud(); // shows in the next frame
       inspector->FollowTracing();
     },

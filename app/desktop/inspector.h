@@ -12,6 +12,7 @@
 #define shadelab_inspector_h
 
 #include "commands/view_command.h"
+#include "core/errors.h"
 #include "core/milliseconds.h"
 #include "desktop/view_keys.h"
 #include "desktop/vtkShadelabInteractorStyle.h"
@@ -199,6 +200,11 @@ private:
   void Apply();
   void MakeSlots(std::size_t count, int columns, bool difference);
   void ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* shown);
+  // After a frame: stages of one's own that the driver refused (the
+  // generated ones drew instead), their errors on stderr when they change
+  // and the first in the HUD; true when they changed. A program is built
+  // at its first draw, which Qt's first paint may make: every frame asks.
+  bool ReportStageErrors();
   vtkActor* GlyphsOf(Slot& slot, vtkPolyData* mesh);
   vtkActor* EdgesOf(Slot& slot, vtkPolyData* mesh);
 
@@ -239,6 +245,7 @@ private:
   bool Dragging = false;
   bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
   std::string Problem;      // the last thing that went wrong, shown in the HUD
+  std::vector<InputProblem> StageProblems;           // the refused stages' errors, as reported last
   MeshCache Meshes{ DecodingThrough(this->Writer) }; // Writer: declared below, started when used
   double Bounds[6] = {};
   vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)

@@ -4,6 +4,7 @@
 
 #include "scene/comparison_panels.h"
 #include "scene/overlays.h"
+#include "scene/own_stage_files.h"
 #include "scene/scene.h"
 
 #include "vtkShadelabPeelingPass.h"
@@ -63,6 +64,31 @@ void Inspector::Apply()
   }
   this->Help->SetVisibility(this->State.Help);
   this->UpdateHud();
+}
+
+bool Inspector::ReportStageErrors()
+{
+  std::vector<InputProblem> problems;
+  for (Slot& slot : this->Slots)
+  {
+    if (const BuiltScene* shown = slot.Scenes.GetShown(); shown && problems.empty())
+    {
+      problems = StageErrorLines(this->Options.Scene, StageErrors(*shown));
+    }
+  }
+  const bool changed = problems != this->StageProblems;
+  if (changed && !problems.empty())
+  {
+    ReportErrors(problems);
+  }
+  this->StageProblems = problems;
+  if (!problems.empty())
+  {
+    this->Problem =
+      problems.front().first + ": " + problems.front().second + " (the generated stages draw)";
+    this->UpdateHud();
+  }
+  return changed;
 }
 
 // The glyphs and edges that are on, over the panel's mesh `shown`.

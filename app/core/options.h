@@ -150,6 +150,8 @@ struct SceneOptions
   std::string Texture;
   TextureWrap TextureWrapping = TextureWrap::Repeat;
   TextureFilter TextureFiltering = TextureFilter::Bilinear;
+  // How the shaders write the specular term: stable, or the lecture's expressions as written.
+  SpecularForm Form = SpecularForm::Stable;
   // --vertex-shader, --fragment-shader: files of complete GLSL that replace
   // the generated stage of the scene's rule (scene/own_stage_files.h).
   std::string VertexShader;

@@ -18,8 +18,8 @@ namespace
 // shared by every panel. A panel of --shading's rule draws with the
 // stages of one's own given for the comparison, unless it names its own;
 // the other rules' panels draw their generated stages.
-const std::array<const char*, 8> ModeKeys{ "shading", "reflection", "material", "weighting", "ns",
-  "normals", "vertex_shader", "fragment_shader" };
+const std::array<const char*, 9> ModeKeys{ "shading", "reflection", "material", "weighting", "ns",
+  "normals", "specular_form", "vertex_shader", "fragment_shader" };
 
 Panel ParseMode(const std::string& mode, const SceneOptions& base)
 {
@@ -48,7 +48,7 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
     {
       fail("'" + part +
         "' is not KEY=VALUE with KEY one of shading, reflection, material, "
-        "weighting, ns, normals, vertex_shader, fragment_shader");
+        "weighting, ns, normals, specular_form, vertex_shader, fragment_shader");
     }
     const std::string value = part.substr(equals + 1);
     ownStages = ownStages || key == "vertex_shader" || key == "fragment_shader";
@@ -83,8 +83,8 @@ Panel ParseMode(const std::string& mode, const SceneOptions& base)
 
 const char* const ModesHelp =
   "Panels, comma-separated: MODE = [RULE][:KEY=VALUE]..., RULE none|flat|gouraud|phong|raytrace, "
-  "KEY one of shading, reflection, material, weighting, ns, normals, vertex_shader, "
-  "fragment_shader; e.g. phong,phong:material=gold,gouraud:weighting=area or "
+  "KEY one of shading, reflection, material, weighting, ns, normals, specular_form, "
+  "vertex_shader, fragment_shader; e.g. phong,phong:material=gold,gouraud:weighting=area or "
   "phong,phong:fragment_shader=mine.frag (default flat,gouraud,phong)";
 
 void AddComparisonOptions(CLI::App& command, ComparisonOptions& o)

@@ -182,6 +182,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);
     drawn.Shading->SetShadows(casters);
+    drawn.Shading->SetSpecularForm(options.Form);
     drawn.Shading->SetOwnStages(stages);
     const vtkShadelabShading* previous = nullptr;
     if (takeOver)

@@ -306,11 +306,39 @@ const char* const PhongSpecularDBody = R"glsl(  vec3 R = (2.0 * dot(N, L)) * N -
 }
 )glsl";
 
+// The specular part of a light's term, added to `term`, or apart to S
+// (times Il): the stable form, 1 - cos without cancellation and its power
+// by SpecularFalloff, or the lecture's expressions as written
+// (SpecularForm::Literal), pow of the clamped base in the lecture's case.
+std::string SpecularTermSource(const ShaderFeatures& f, bool apart)
+{
+  const std::string add = apart ? "S += Il * (" : "term += ";
+  const std::string end = apart ? ")" : "";
+  if (f.Form == SpecularForm::Stable)
+  {
+    return R"glsl(    d = shadelabSpecularD(N, L, V); // shadelab: specular
+    if (d >= 0.0)
+    {
+      )glsl" +
+      add + "shadelabSpecularFalloff(d, shadelabNs) * shadelabKs" + end +
+      R"glsl(; // shadelab: specular
+    }
+)glsl";
+  }
+  const bool blinn = UsesHalfVector(f.Model);
+  const std::string vector = blinn ? "H = normalize(L + V)" : "R = reflect(-L, N)";
+  const std::string base = blinn ? "dot(N, H)" : "dot(V, R)";
+  return "    vec3 " + vector + "; // shadelab: specular\n    if (" + base +
+    " > 0.0) // the lecture's case: no specular term where the base is not positive\n    {\n" +
+    "      " + add + "pow(max(" + base + ", 0.0), shadelabNs) * shadelabKs" + end +
+    "; // shadelab: specular\n    }\n";
+}
+
 // Light i's term, unrolled: its kind's direction, distance attenuation
-// (with `attenuation`), spot fall-off and guard;
+// (with `attenuation`), spot fall-off and guard, and `specular` code;
 // apart, its diffuse and specular parts added to D and S.
-std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenuation, bool shadows,
-  bool faceSlope, bool apart)
+std::string LightTermSource(size_t i, LightKind kind, const std::string& specular, bool attenuation,
+  bool shadows, bool faceSlope, bool apart)
 {
   const std::string index = std::to_string(i);
   std::string s = "  // light " + index + ": " + ToString(kind) + "\n" +
@@ -360,16 +388,7 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenu
     D += Il * (NdotL * shadelabKd); // shadelab: diffuse
 )glsl",
       guard);
-    if (specular)
-    {
-      s += R"glsl(    d = shadelabSpecularD(N, L, V); // shadelab: specular
-    if (d >= 0.0)
-    {
-      S += Il * (shadelabSpecularFalloff(d, shadelabNs) * shadelabKs); // shadelab: specular
-    }
-)glsl";
-    }
-    return s + "  }\n";
+    return s + specular + "  }\n";
   }
   s += FillGlsl(R"glsl(  NdotL = dot(N, L);
   if ($)
@@ -377,16 +396,7 @@ std::string LightTermSource(size_t i, LightKind kind, bool specular, bool attenu
     vec3 term = NdotL * shadelabKd; // shadelab: diffuse
 )glsl",
     guard);
-  if (specular)
-  {
-    s += R"glsl(    d = shadelabSpecularD(N, L, V); // shadelab: specular
-    if (d >= 0.0)
-    {
-      term += shadelabSpecularFalloff(d, shadelabNs) * shadelabKs; // shadelab: specular
-    }
-)glsl";
-  }
-  return s + R"glsl(    I += Il * term; // shadelab: diffuse, specular
+  return s + specular + R"glsl(    I += Il * term; // shadelab: diffuse, specular
   }
 )glsl";
 }
@@ -417,7 +427,7 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   vec3 Il;
   float NdotL;
 )glsl";
-    if (f.Specular)
+    if (f.Specular && f.Form == SpecularForm::Stable)
     {
       s += "  float d;\n";
     }
@@ -428,9 +438,10 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
 )glsl";
     }
   }
+  const std::string specular = f.Specular ? SpecularTermSource(f, apart) : "";
   for (size_t i = 0; i < f.Lights.size(); ++i)
   {
-    s += LightTermSource(i, f.Lights[i], f.Specular, f.Attenuation,
+    s += LightTermSource(i, f.Lights[i], specular, f.Attenuation,
       i < f.Shadows.size() && f.Shadows[i], f.SlopesByFace(), apart);
   }
   return s + (apart ? "}\n" : R"glsl(  return I;
@@ -446,7 +457,7 @@ std::string IlluminateSource(const ShaderFeatures& f)
     return AllFeaturesIlluminateSource(f.VertexKd);
   }
   std::string s = DeclarationsSource(f);
-  if (f.Specular)
+  if (f.Specular && f.Form == SpecularForm::Stable)
   {
     s += SpecularFalloffSource + std::string(SpecularDHeadSource) +
       (UsesHalfVector(f.Model) ? BlinnPhongSpecularDBody : PhongSpecularDBody);

@@ -56,6 +56,24 @@ struct NameTable<Reflection>
   };
 };
 
+/**
+ * How the shaders write the specular term (the oracle computes it in
+ * double either way): stable, or literally as the lecture writes it.
+ */
+enum class SpecularForm
+{
+  Stable,
+  Literal
+};
+
+template <>
+struct NameTable<SpecularForm>
+{
+  static constexpr std::array<std::pair<SpecularForm, const char*>, 2> Entries{
+    { { SpecularForm::Stable, "stable" }, { SpecularForm::Literal, "literal" } }
+  };
+};
+
 struct Material
 {
   std::string Name;

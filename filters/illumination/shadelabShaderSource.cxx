@@ -23,7 +23,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines &&
-    this->Shadows == o.Shadows;
+    this->Shadows == o.Shadows && this->Form == o.Form;
 }
 
 namespace

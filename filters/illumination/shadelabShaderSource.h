@@ -27,6 +27,10 @@ struct ShaderFeatures
   Reflection Model = Reflection::BlinnPhong;
   std::vector<LightKind> Lights;
   bool Specular = true; // false when ks is zero: no specular code at all
+  // How the specular term is written: stable (1 - cos without cancellation,
+  // its power by a falloff that holds up to ns = 1e6) or the lecture's
+  // expressions as written, pow(max(N.H, 0), ns), for reading beside the slide.
+  SpecularForm Form = SpecularForm::Stable;
   // A point or spot light falls off with distance (Attenuated): every such
   // light's Il is divided by C0 + C1*d + C2*d^2 from its uniform
   // (1, 0, 0 for those that do not, which divides exactly by 1).

@@ -228,6 +228,12 @@ void vtkShadelabShading::SetBehindLines(bool behind)
   this->Modified();
 }
 
+void vtkShadelabShading::SetSpecularForm(SpecularForm form)
+{
+  this->Features.Form = form;
+  this->Modified();
+}
+
 void vtkShadelabShading::SetAllFeatures(bool all)
 {
   this->Features.AllFeatures = all;

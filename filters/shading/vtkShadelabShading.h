@@ -129,6 +129,9 @@ public:
    */
   VTK_WRAPEXCLUDE void SetShadows(std::shared_ptr<shadelab::ShadowCasters> casters);
 
+  /** How the specular term is written (ShaderFeatures::Form). Default stable. */
+  VTK_WRAPEXCLUDE void SetSpecularForm(shadelab::SpecularForm form);
+
   /**
    * Stages of one's own that replace the generated ones on the actor's
    * mapper (vtkShadelabPolyDataMapper::SetOwnStages). Default none.

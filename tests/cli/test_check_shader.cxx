@@ -184,3 +184,22 @@ TEST(CheckShader, WithoutStagesIsAUsageError)
   EXPECT_EQ(r.ExitCode, 2);
   EXPECT_NE(r.Stderr.find("--fragment-shader FILE"), std::string::npos) << r.Stderr;
 }
+
+// --specular-form literal writes the lecture's pow(max(N.H, 0), ns): float
+// holds it to the oracle at a low shininess, and at ns = 1e4 its rounding
+// of N.H near 1 (the largest float below 1 is 1 - 2^-24) bands the
+// highlight beyond the bound, where the stable form stays within it.
+TEST(CheckShader, TheLiteralSpecularFormPartsFromTheOracleAtHighShininess)
+{
+  TempDir dir;
+  const std::string literal = Dumped(dir, { "--specular-form", "literal" });
+  EXPECT_NE(literal.find("pow(max(dot(N, H), 0.0), shadelabNs)"), std::string::npos);
+  EXPECT_EQ(literal.find("shadelabSpecularFalloff"), std::string::npos);
+  const Checked low = Check(dir, literal, { "--ns", "10" });
+  EXPECT_EQ(low.ExitCode, 0);
+  const Checked high = Check(dir, literal, { "--ns", "10000" });
+  EXPECT_EQ(high.ExitCode, 1);
+  EXPECT_GT(high.Result.at("own").at("beyond_bound").get<long long>(), 0);
+  EXPECT_EQ(high.Result.at("generated").at("beyond_bound").get<long long>(), 0);
+  EXPECT_GT(LargestSpecular(high.Result.at("worst_probe")), 0.01);
+}

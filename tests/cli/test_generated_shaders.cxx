@@ -181,3 +181,21 @@ TEST(GeneratedShaders, AnEightBitFileEndsWithTheCapturesQuantisation)
   ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
   EXPECT_FALSE(Contains(Slurp(dir / "glsl" / "phong-blinn.frag"), step)) << "floats: no step";
 }
+
+// --specular-form literal: the lecture's expressions as written, under
+// either model and in either stage, and no stable falloff compiled in.
+TEST(GeneratedShaders, TheLiteralSpecularFormReadsAsTheLecture)
+{
+  TempDir dir;
+  const Dumped phong =
+    Render(dir, "phong-phong", { "--reflection", "phong", "--specular-form", "literal" });
+  EXPECT_TRUE(Contains(phong.Fragment, "vec3 R = reflect(-L, N); // shadelab: specular"));
+  EXPECT_TRUE(Contains(phong.Fragment,
+    "term += pow(max(dot(V, R), 0.0), shadelabNs) * shadelabKs; // shadelab: specular"));
+  EXPECT_FALSE(Contains(phong.Fragment, "shadelabSpecularFalloff"));
+  const Dumped gouraud =
+    Render(dir, "gouraud-blinn", { "--shading", "gouraud", "--specular-form", "literal" });
+  EXPECT_TRUE(Contains(gouraud.Vertex, "vec3 H = normalize(L + V); // shadelab: specular"));
+  EXPECT_TRUE(Contains(gouraud.Vertex, "if (dot(N, H) > 0.0)"));
+  EXPECT_FALSE(Contains(gouraud.Vertex, "shadelabSpecularD("));
+}

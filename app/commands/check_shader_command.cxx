@@ -11,6 +11,7 @@
 #include "probe/probe_text.h"
 #include "scene/camera.h"
 #include "scene/mesh_cache.h"
+#include "scene/own_stage_files.h"
 #include "scene/scene_cache.h"
 #include "settings/command_line.h"
 #include "shadelabJsonProblem.h"
@@ -77,6 +78,16 @@ struct Errors
     }
     this->At[static_cast<std::size_t>(at.Y) * width + at.X] = static_cast<float>(pixel);
   }
+
+  std::array<double, 3> Mean(long long compared) const
+  {
+    std::array<double, 3> mean{};
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] = compared ? this->Sum[c] / compared : 0;
+    }
+    return mean;
+  }
 };
 
 std::string Triple(const std::array<double, 3>& v, double scale = 1)
@@ -90,12 +101,7 @@ nlohmann::ordered_json ErrorsJson(const Errors& e, long long compared)
 {
   nlohmann::ordered_json j;
   j["largest"] = e.Largest;
-  std::array<double, 3> mean{};
-  for (int c = 0; c < 3; ++c)
-  {
-    mean[c] = compared ? e.Sum[c] / compared : 0;
-  }
-  j["mean"] = mean;
+  j["mean"] = e.Mean(compared);
   j["beyond_bound"] = e.Beyond;
   j["worst_pixel"] = { e.WorstAt.X, e.WorstAt.Y };
   return j;
@@ -127,15 +133,6 @@ Difference HeatOf(const Errors& e, int width, int height, long long compared)
   return d;
 }
 
-std::string OwnLabel(const SceneOptions& s)
-{
-  std::string files = s.VertexShader;
-  if (!s.FragmentShader.empty())
-  {
-    files += (files.empty() ? "" : " + ") + s.FragmentShader;
-  }
-  return files;
-}
 }
 
 CLI::App* AddCheckShaderCommand(CLI::App& program, CheckShaderOptions& o)
@@ -229,7 +226,7 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
     worst.Rendered = PixelRgb(theirs.Picture, worst.At.X, worst.At.Y);
     worst.RenderedFrom = "the generated stages' float render at the pixel";
   }
-  const std::string label = OwnLabel(own);
+  const std::string label = OwnStageFiles(own);
   if (o.Json)
   {
     nlohmann::ordered_json j;
@@ -250,15 +247,6 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
   }
   else
   {
-    const auto mean = [compared](const Errors& e)
-    {
-      std::array<double, 3> m{};
-      for (int c = 0; c < 3; ++c)
-      {
-        m[c] = compared ? e.Sum[c] / compared : 0;
-      }
-      return m;
-    };
     std::cout << "check-shader: " << label << " against the oracle, " << own.Mesh << ", "
               << ToString(own.ShadingRule) << " " << ToString(own.ReflectionModel) << ", " << width
               << "x" << height << "\n"
@@ -266,10 +254,11 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
               << " pixels or more from a triangle's edge); a channel's bound is 1e-4 * "
                  "max(|oracle|, 0.01)\n"
               << "  yours:     largest error (R, G, B) " << Triple(ownErrors.Largest) << ", mean "
-              << Triple(mean(ownErrors)) << ", " << ownErrors.Beyond << " pixels beyond the bound\n"
+              << Triple(ownErrors.Mean(compared)) << ", " << ownErrors.Beyond
+              << " pixels beyond the bound\n"
               << "  generated: largest error (R, G, B) " << Triple(generatedErrors.Largest)
-              << ", mean " << Triple(mean(generatedErrors)) << ", " << generatedErrors.Beyond
-              << " pixels beyond the bound\n";
+              << ", mean " << Triple(generatedErrors.Mean(compared)) << ", "
+              << generatedErrors.Beyond << " pixels beyond the bound\n";
     if (compared > 0)
     {
       const Rgb at = PixelRgb(mine.Picture, worst.At.X, worst.At.Y);

@@ -54,6 +54,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   , Engine(inspector)
   , Rule(NamesBox<Shading>(this, static_cast<std::size_t>(Shading::Raytrace))) // the raster's
   , Model(new QComboBox(this))
+  , Form(new QComboBox(this))
   , Drawn(new RepresentationEdit(this))
   , MaterialRow(new QComboBox(this))
   , Ns(new SliderEdit(SliderEdit::Shininess(), this))
@@ -72,6 +73,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   // Named for the tests (findChild).
   this->Rule->setObjectName("rule");
   this->Model->setObjectName("reflection");
+  this->Form->setObjectName("specular form");
   this->MaterialRow->setObjectName("material");
   this->Ns->setObjectName("ns");
   this->Opacity->setObjectName("a");
@@ -94,6 +96,10 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   shading->addRow("Rule", this->Rule);
   this->Model->addItems({ "Blinn-Phong", "Phong" }); // Reflection's order
   shading->addRow("Reflection", this->Model);
+  this->Form->addItems({ "stable", "literal (the slide's pow)" }); // SpecularForm's order
+  this->Form->setToolTip("How the shaders write the specular term: stable up to ns = 1e6, or "
+                         "pow(max(N.H, 0), ns) as the lecture writes it (see the Shader dock)");
+  shading->addRow("Specular form", this->Form);
   shading->addRow("Drawn", this->Drawn);
   this->Drawn->setToolTip("The surface, or its edges or points lit by the same rule");
   this->Drawn->Edited = [this](Representation drawn, int lineWidth, int pointSize)
@@ -115,6 +121,10 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
     {
       this->Engine.Edit(
         [model](ViewState& s) { s.Scene.ReflectionModel = static_cast<Reflection>(model); });
+    });
+  QObject::connect(this->Form, QOverload<int>::of(&QComboBox::activated), this,
+    [this](int form) {
+      this->Engine.Edit([form](ViewState& s) { s.Scene.Form = static_cast<SpecularForm>(form); });
     });
 
   QFormLayout* material = group("Material");
@@ -338,12 +348,13 @@ void ControlPanel::Show()
   const SceneOptions& s = state.Scene;
   const Material m = s.EffectiveMaterial();
   const QSignalBlocker quiet[] = { QSignalBlocker(this->Rule), QSignalBlocker(this->Model),
-    QSignalBlocker(this->MaterialRow), QSignalBlocker(this->LightChoice),
-    QSignalBlocker(this->NormalsChoice), QSignalBlocker(this->FeatureAngle),
-    QSignalBlocker(this->Peels), QSignalBlocker(this->Shadows),
+    QSignalBlocker(this->Form), QSignalBlocker(this->MaterialRow),
+    QSignalBlocker(this->LightChoice), QSignalBlocker(this->NormalsChoice),
+    QSignalBlocker(this->FeatureAngle), QSignalBlocker(this->Peels), QSignalBlocker(this->Shadows),
     QSignalBlocker(this->ShadowMapSize) };
   this->Rule->setCurrentIndex(static_cast<int>(s.ShadingRule));
   this->Model->setCurrentIndex(static_cast<int>(s.ReflectionModel));
+  this->Form->setCurrentIndex(static_cast<int>(s.Form));
   this->Drawn->Set(s.Drawn, s.LineWidth, s.PointSize);
   const auto& table = LectureMaterials();
   const auto row = std::find_if(

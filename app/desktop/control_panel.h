@@ -40,6 +40,7 @@ private:
   Inspector& Engine;
   QComboBox* Rule;
   QComboBox* Model;
+  QComboBox* Form; // the specular term's, SpecularForm's order
   RepresentationEdit* Drawn;
   QComboBox* MaterialRow;
   std::array<ColorEdit*, 3> Coefficients; // ka, kd, ks

@@ -36,16 +36,21 @@ InputProblem ReadOwnStages(const SceneOptions& options, OwnStages& stages)
   return {};
 }
 
+std::string OwnStageFiles(const SceneOptions& options)
+{
+  if (options.VertexShader.empty() || options.FragmentShader.empty())
+  {
+    return options.VertexShader + options.FragmentShader;
+  }
+  return options.VertexShader + " + " + options.FragmentShader;
+}
+
 std::vector<InputProblem> StageErrorLines(
   const SceneOptions& options, const std::vector<StageError>& errors)
 {
   // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
   static const std::regex located(R"(^\s*\d+(?::(\d+)\(\d+\)|\((\d+)\))\s*:\s*(.*)$)");
-  std::string both = options.VertexShader;
-  if (!options.FragmentShader.empty())
-  {
-    both += (both.empty() ? "" : " + ") + options.FragmentShader;
-  }
+  const std::string both = OwnStageFiles(options);
   std::vector<InputProblem> lines;
   for (const StageError& error : errors)
   {

@@ -20,6 +20,9 @@ constexpr std::uint64_t MaxShaderFileBytes = 1 << 20;
 /** options' stage files, read into stages; on failure the file and why (else two ""). */
 InputProblem ReadOwnStages(const SceneOptions& options, OwnStages& stages);
 
+/** The files of the stages options give, as one name: "V.vert + F.frag", or the one given. */
+std::string OwnStageFiles(const SceneOptions& options);
+
 /**
  * errors (of the stages options name) one line each: the file and the
  * line where the driver gives one (Mesa's `0:LINE(COL): ...`, NVIDIA's

@@ -239,6 +239,8 @@ TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
     { "reflection", [&] { QTest::keyClick(find("reflection"), Qt::Key_Down); },
       { "--reflection" } },
     { "material", [&] { QTest::keyClick(find("material"), Qt::Key_Down); }, { "--material" } },
+    { "specular form", [&] { QTest::keyClick(find("specular form"), Qt::Key_Down); },
+      { "--specular-form" } },
     { "ka", [&] { Type(window.findChild<QDoubleSpinBox*>("ka red"), "0.5"); }, { "--ka" } },
     { "kd", [&] { Type(window.findChild<QDoubleSpinBox*>("kd blue"), "0.125"); }, { "--kd" } },
     { "ks", [&] { Type(window.findChild<QDoubleSpinBox*>("ks green"), "0.75"); }, { "--ks" } },

@@ -30,6 +30,7 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   s.Size = size;
   s.Rule = options.ShadingRule;
   s.Model = options.ReflectionModel;
+  s.Form = options.Form;
   s.Surface = options.EffectiveMaterial();
   s.Ia = options.Ambient;
   s.Lights = EffectiveLights(options, eye); // as BuildScene lights it, or the ray tracer

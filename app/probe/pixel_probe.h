@@ -37,6 +37,9 @@ struct PixelProbe
   ImageSize Size;
   Shading Rule = Shading::Phong;
   Reflection Model = Reflection::BlinnPhong;
+  // How the rendered program wrote the specular term; the oracle computes
+  // the same equation in double either way.
+  SpecularForm Form = SpecularForm::Stable;
   Material Surface; // the hit triangle's part's, after the overrides
   Rgb Ia{};
   std::vector<Light> Lights; // as lit, in world coordinates

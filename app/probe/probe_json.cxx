@@ -110,6 +110,10 @@ ordered_json ProbeJson(const PixelProbe& p)
   j["hit"] = p.Hit;
   j["shading"] = ToString(p.Rule);
   j["reflection"] = ToString(p.Model);
+  if (p.Form != SpecularForm::Stable)
+  {
+    j["specular_form"] = ToString(p.Form);
+  }
   j["rendered"] = p.Rendered;
   j["stored"] = { static_cast<int>(Quantised(p.Rendered[0], 255)),
     static_cast<int>(Quantised(p.Rendered[1], 255)),

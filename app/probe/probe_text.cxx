@@ -288,9 +288,10 @@ std::string ProbeText(const PixelProbe& p)
   }
   out.Add("",
     std::string("shading ") + ToString(p.Rule) + ", reflection " +
-      (UsesHalfVector(p.Model) ? "Blinn-Phong" : "Phong") + "; material " + m.Name + ": ka " +
-      ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " + ProbeTriple(m.Ks) + ", ns " +
-      ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
+      (UsesHalfVector(p.Model) ? "Blinn-Phong" : "Phong") +
+      (p.Form == SpecularForm::Literal ? " written literally (pow of the clamped base)" : "") +
+      "; material " + m.Name + ": ka " + ProbeTriple(m.Ka) + ", kd " + ProbeTriple(m.Kd) + ", ks " +
+      ProbeTriple(m.Ks) + ", ns " + ProbeNumber(m.Ns) + "; Ia " + ProbeTriple(p.Ia));
   out.Add("", "part " + std::to_string(p.Part) + " \"" + p.PartName + "\"", SourceText(p.Source));
   if (p.VertexKd)
   {

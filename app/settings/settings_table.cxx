@@ -79,8 +79,7 @@ std::vector<Setting> MakeSettings()
     Plain({ "--specular-form", "specular_form", "",
             "How the shaders write the specular term: stable, 1 - cos without cancellation and a "
             "power that holds up to ns = 1e6; literal, the lecture's pow(max(N.H, 0), ns) as "
-            "written, which float rounds into bands at high ns",
-            StageCommands },
+            "written, which float rounds into bands at high ns" },
       Choice<SpecularForm>{ "specular form" }, SHADELAB_FIELD(Form)),
     Plain({ "--vertex-shader", "vertex_shader", "FILE",
             "The vertex stage's complete GLSL, as --dump-shaders writes it, possibly edited: it "

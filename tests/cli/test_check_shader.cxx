@@ -203,3 +203,43 @@ TEST(CheckShader, TheLiteralSpecularFormPartsFromTheOracleAtHighShininess)
   EXPECT_EQ(high.Result.at("generated").at("beyond_bound").get<long long>(), 0);
   EXPECT_GT(LargestSpecular(high.Result.at("worst_probe")), 0.01);
 }
+
+// probe renders with the form it is given and says so: at the literal
+// form's worst pixel its rendered value parts from the oracle, where the
+// stable form's agrees.
+TEST(CheckShader, ProbeExplainsTheLiteralFormsPixel)
+{
+  TempDir dir;
+  const Checked high =
+    Check(dir, Dumped(dir, { "--specular-form", "literal" }), { "--ns", "10000" });
+  const json& at = high.Result.at("own").at("worst_pixel");
+  const std::string pixel =
+    std::to_string(at.at(0).get<int>()) + "," + std::to_string(at.at(1).get<int>());
+  const auto probe = [&](const std::string& form)
+  {
+    const RunResult r = RunShadelab(With(
+      With({ "probe", TestMesh("torus.obj").string(), "--json", "--pixel", pixel, "--ns", "10000" },
+        Scene),
+      { "--specular-form", form }));
+    EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+    return json::parse(r.Stdout);
+  };
+  const auto largestError = [](const json& p)
+  {
+    double most = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      most = std::max(
+        most, std::abs(p.at("rendered").at(c).get<double>() - p.at("oracle").at(c).get<double>()));
+    }
+    return most;
+  };
+  const json literal = probe("literal");
+  const json stable = probe("stable");
+  EXPECT_EQ(literal.at("specular_form"), "literal");
+  EXPECT_FALSE(stable.contains("specular_form"));
+  EXPECT_EQ(literal.at("oracle"), stable.at("oracle"));
+  EXPECT_GT(largestError(literal), 1e-4 * std::abs(literal.at("oracle").at(0).get<double>()));
+  EXPECT_LT(
+    largestError(stable), 1e-4 * std::max(std::abs(stable.at("oracle").at(0).get<double>()), 0.01));
+}

@@ -54,7 +54,7 @@ struct Errors
   std::array<double, 3> Largest{};
   std::array<double, 3> Sum{};
   long long Beyond = 0;  // pixels with a channel beyond its bound
-  double Worst = -1;     // the largest error over the channels
+  double Worst = -1;     // the largest error over the channels (-1: no pixel yet)
   Pixel WorstAt;         // where it is
   std::vector<float> At; // per pixel (top row first): the largest channel's error
 
@@ -90,10 +90,10 @@ struct Errors
   }
 };
 
-std::string Triple(const std::array<double, 3>& v, double scale = 1)
+std::string Triple(const std::array<double, 3>& v)
 {
   std::ostringstream out;
-  out << std::setprecision(3) << v[0] * scale << ", " << v[1] * scale << ", " << v[2] * scale;
+  out << std::setprecision(3) << v[0] << ", " << v[1] << ", " << v[2];
   return out.str();
 }
 
@@ -109,27 +109,24 @@ nlohmann::ordered_json ErrorsJson(const Errors& e, long long compared)
 
 // The heat map of one's own errors: black where the picture agrees, through
 // red and yellow to white at the largest error; uncompared pixels black.
-Difference HeatOf(const Errors& e, int width, int height, long long compared)
+// Its colour bar reads Largest alone.
+Difference HeatOf(const Errors& e, int width, int height)
 {
   Difference d;
   d.Largest = std::max(e.Worst, 0.0);
   d.Heat.Width = width;
   d.Heat.Height = height;
   d.Heat.Rgba.assign(static_cast<std::size_t>(width) * height * 4, 1.0f);
-  double sum = 0;
   for (int y = 0; y < height; ++y)
   {
     for (int x = 0; x < width; ++x)
     {
       const double error = e.At[static_cast<std::size_t>(y) * width + x];
-      sum += error;
-      d.Differing += error > 0;
       const Rgb colour = HeatColour(d.Largest > 0 ? error / d.Largest : 0);
       float* p = d.Heat.Rgba.data() + (static_cast<std::size_t>(height - 1 - y) * width + x) * 4;
       std::copy(colour.begin(), colour.end(), p);
     }
   }
-  d.Mean = compared ? sum / compared : 0;
   return d;
 }
 
@@ -272,7 +269,7 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
   }
   if (!o.Output.empty())
   {
-    const Difference heat = HeatOf(ownErrors, width, height, compared);
+    const Difference heat = HeatOf(ownErrors, width, height);
     const std::string heatLabel = "|yours - oracle|";
     const FloatImage picture = ComposeComparison(
       { { &mine.Picture, "yours" }, { &theirs.Picture, "generated" }, { &heat.Heat, heatLabel } },

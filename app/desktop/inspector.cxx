@@ -96,10 +96,6 @@ void Inspector::Show(bool layout)
   }
   this->Reprobe();
   this->Window->Render();
-  if (this->ReportStageErrors())
-  {
-    this->Window->Render();
-  }
   this->RefreshDifference();
   if (this->Changed)
   {

@@ -200,11 +200,11 @@ private:
   void Apply();
   void MakeSlots(std::size_t count, int columns, bool difference);
   void ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* shown);
-  // After a frame: stages of one's own that the driver refused (the
-  // generated ones drew instead), their errors on stderr when they change
-  // and the first in the HUD; true when they changed. A program is built
-  // at its first draw, which Qt's first paint may make: every frame asks.
-  bool ReportStageErrors();
+  // At each frame's end (a program is built at its first draw, which Qt's
+  // first paint may make): stages of one's own that the driver refused
+  // (the generated ones drew instead), their errors on stderr when they
+  // change and the first in the HUD, which shows it from the next frame.
+  void ReportStageErrors();
   vtkActor* GlyphsOf(Slot& slot, vtkPolyData* mesh);
   vtkActor* EdgesOf(Slot& slot, vtkPolyData* mesh);
 

@@ -66,18 +66,21 @@ void Inspector::Apply()
   this->UpdateHud();
 }
 
-bool Inspector::ReportStageErrors()
+void Inspector::ReportStageErrors()
 {
   std::vector<InputProblem> problems;
   for (Slot& slot : this->Slots)
   {
-    if (const BuiltScene* shown = slot.Scenes.GetShown(); shown && problems.empty())
+    if (const BuiltScene* shown = slot.Scenes.GetShown())
     {
-      problems = StageErrorLines(this->Options.Scene, StageErrors(*shown));
+      problems = StageErrorLines(this->Options.Scene, *shown);
+    }
+    if (!problems.empty())
+    {
+      break;
     }
   }
-  const bool changed = problems != this->StageProblems;
-  if (changed && !problems.empty())
+  if (problems != this->StageProblems && !problems.empty())
   {
     ReportErrors(problems);
   }
@@ -88,7 +91,6 @@ bool Inspector::ReportStageErrors()
       problems.front().first + ": " + problems.front().second + " (the generated stages draw)";
     this->UpdateHud();
   }
-  return changed;
 }
 
 // The glyphs and edges that are on, over the panel's mesh `shown`.

@@ -258,8 +258,7 @@ private:
       return false;
     }
     // Stages of one's own that the driver refused drew nothing: no picture.
-    if (const std::vector<InputProblem> refused = StageErrorLines(options, StageErrors(scene));
-        !refused.empty())
+    if (const std::vector<InputProblem> refused = StageErrorLines(options, scene); !refused.empty())
     {
       this->FailFrame(shot, frame, refused);
       return false;

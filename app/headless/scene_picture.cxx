@@ -33,7 +33,7 @@ ScenePicture RenderScenePicture(
     picture.Errors = { { "render", error } };
   }
   // Stages of one's own that the driver refused drew nothing.
-  else if (std::vector<InputProblem> refused = StageErrorLines(options, StageErrors(*shown.Scene));
+  else if (std::vector<InputProblem> refused = StageErrorLines(options, *shown.Scene);
            !refused.empty())
   {
     picture.Errors = std::move(refused);

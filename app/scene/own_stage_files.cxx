@@ -2,6 +2,9 @@
 
 #include "shadelabCheckedFile.h"
 #include "shadelabMeshReadError.h"
+#include "vtkShadelabPolyDataMapper.h"
+
+#include <vtkActor.h>
 
 #include <regex>
 #include <sstream>
@@ -45,14 +48,30 @@ std::string OwnStageFiles(const SceneOptions& options)
   return options.VertexShader + " + " + options.FragmentShader;
 }
 
-std::vector<InputProblem> StageErrorLines(
-  const SceneOptions& options, const std::vector<StageError>& errors)
+namespace
+{
+// Every part draws the same stages: the first that failed says why.
+std::vector<StageError> StageErrors(const BuiltScene& scene)
+{
+  for (const DrawnParts& drawn : scene.Drawn)
+  {
+    if (auto* mapper = vtkShadelabPolyDataMapper::SafeDownCast(drawn.Actor->GetMapper());
+        mapper && !mapper->GetOwnStageErrors().empty())
+    {
+      return mapper->GetOwnStageErrors();
+    }
+  }
+  return {};
+}
+}
+
+std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const BuiltScene& scene)
 {
   // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
   static const std::regex located(R"(^\s*\d+(?::(\d+)\(\d+\)|\((\d+)\))\s*:\s*(.*)$)");
   const std::string both = OwnStageFiles(options);
   std::vector<InputProblem> lines;
-  for (const StageError& error : errors)
+  for (const StageError& error : StageErrors(scene))
   {
     const std::string& own = error.Where == StageError::Stage::Vertex ? options.VertexShader
       : error.Where == StageError::Stage::Fragment                    ? options.FragmentShader

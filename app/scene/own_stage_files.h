@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/options.h"
+#include "scene/scene.h"
 #include "shadelabOwnStages.h"
 
 #include <cstdint>
@@ -24,12 +25,12 @@ InputProblem ReadOwnStages(const SceneOptions& options, OwnStages& stages);
 std::string OwnStageFiles(const SceneOptions& options);
 
 /**
- * errors (of the stages options name) one line each: the file and the
- * line where the driver gives one (Mesa's `0:LINE(COL): ...`, NVIDIA's
- * `0(LINE) : ...`), and the driver's message.
+ * The errors of the stages of one's own (those options name) that the
+ * driver refused when scene was last drawn, one line each: the file and
+ * the line where the driver gives one (Mesa's `0:LINE(COL): ...`,
+ * NVIDIA's `0(LINE) : ...`), and the driver's message; none when they drew.
  */
-std::vector<InputProblem> StageErrorLines(
-  const SceneOptions& options, const std::vector<StageError>& errors);
+std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const BuiltScene& scene);
 }
 
 #endif

@@ -208,18 +208,4 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   }
   return scene;
 }
-
-std::vector<StageError> StageErrors(const BuiltScene& scene)
-{
-  for (const DrawnParts& drawn : scene.Drawn)
-  {
-    // Every part draws the same stages: the first that failed says why.
-    if (auto* mapper = vtkShadelabPolyDataMapper::SafeDownCast(drawn.Actor->GetMapper());
-        mapper && !mapper->GetOwnStageErrors().empty())
-    {
-      return mapper->GetOwnStageErrors();
-    }
-  }
-  return {};
-}
 }

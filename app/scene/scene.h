@@ -74,9 +74,6 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
   vtkPolyData* mesh, vtkRenderer* renderer, const BuiltScene* reuse = nullptr,
   const SceneImages& images = {}, const OwnStages& stages = {});
 
-/** The errors of the stages of one's own that the scene's last draw built, or none. */
-std::vector<StageError> StageErrors(const BuiltScene& scene);
-
 /**
  * Whether mesh's vertex colours are its kd: it has them ("Colors") and
  * options do not override kd (--material, --kd).

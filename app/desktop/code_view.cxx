@@ -29,7 +29,6 @@ CodeView::CodeView(QWidget* parent)
   : QPlainTextEdit(parent)
   , Numbers(new LineNumbers(this))
 {
-  this->setReadOnly(true);
   this->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   this->setLineWrapMode(QPlainTextEdit::NoWrap);
   const auto fit = [this] { this->setViewportMargins(this->NumbersWidth(), 0, 0, 0); };

@@ -1,4 +1,4 @@
-// A read-only, monospace view of source code with its line numbers in a
+// A monospace editor of source code with its line numbers in a
 // margin (numbered from 1, as the compiler's messages and the dumped
 // files' lines are). Qt's own "Code Editor" example, without moc.
 #ifndef shadelab_code_view_h

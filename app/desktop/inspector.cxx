@@ -126,6 +126,12 @@ int Inspector::Load()
   this->Triangles = loaded.Mesh->GetNumberOfPolys();
   this->FileNormals = loaded.NormalsFromFile;
   this->State.Lights = scene.Lights.empty() ? LightMode::PointAtCamera : LightMode::Given;
+  if (auto [input, error] = ReadOwnStages(scene, this->State.Stages); !error.empty())
+  {
+    return ReportError(input, error);
+  }
+  this->State.StagesRule = scene.ShadingRule;
+  this->Saved = this->State.Stages;
   if (const std::string error = ApplyCamera(scene, this->Points,
         static_cast<double>(scene.Size.Width) / scene.Size.Height, this->Camera);
       !error.empty())

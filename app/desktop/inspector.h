@@ -21,6 +21,7 @@
 #include "probe/pixel_probe.h"
 #include "raytrace/ray_tracer.h"
 #include "scene/mesh_cache.h"
+#include "scene/own_stage_files.h"
 #include "scene/scene_cache.h"
 #include "scene/shader_sources.h"
 
@@ -85,6 +86,11 @@ struct ViewState
   LightMode Lights = LightMode::PointAtCamera;
   bool Ambient = true, Diffuse = true, Specular = true;
   bool Glyphs = false, Edges = false, Compare = false, Help = false;
+  // The stages of one's own (empty: the generated stage) and the rule they
+  // draw: the files --vertex-shader and --fragment-shader name, then as the
+  // shader panel applies them. Panels of other rules draw their own.
+  OwnStages Stages;
+  Shading StagesRule = Shading::Phong;
 };
 
 class Inspector
@@ -129,8 +135,24 @@ public:
   /** ShownScene as a `shadelab render` command line, quoted for a shell. */
   std::string RenderCommand() const;
   /** ShownScene as a scene file at path (its output MESHSTEM.png); says
-   * where, or reports why not. */
-  void SaveScene(const std::string& path) const;
+   * where, or reports why not. Both save the stages first (SaveStages). */
+  void SaveScene(const std::string& path);
+
+  // The stages of one's own (inspector_stages.cxx): the shader panel's.
+  /**
+   * Draws `edits` for the view's rule (an empty stage: the one that draws
+   * now) and gives the driver's errors, none when they draw; refused, the
+   * stages that drew before draw again.
+   */
+  std::vector<StageErrorLine> ApplyStages(const OwnStages& edits);
+  /** The generated stages again; the files given are named no more. */
+  void RevertStages();
+  /**
+   * Writes the stages of one's own not written yet, to the files they came
+   * from or to new ones (shadelab-MESHSTEM-001.vert, .frag), which Copy
+   * command and Save scene then name; whether all were (else reported).
+   */
+  bool SaveStages();
 
   // The probe: one pixel of the single view explained (probe/pixel_probe.h),
   // its N, L and H or R drawn as arrows at the surface point, explained
@@ -228,6 +250,9 @@ private:
   // inspector_command.cxx: the picture as a command.
   void CopyCommand();
 
+  // inspector_stages.cxx: the scene's stage files, named for the driver's errors.
+  SceneOptions StageNames() const;
+
   // inspector_tracing.cxx: the raytrace panels.
   void ShowTracing(Slot& slot, const Panel& panel);
   std::vector<double> TracedView(const Slot& slot) const;
@@ -245,7 +270,8 @@ private:
   bool Dragging = false;
   bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
   std::string Problem;      // the last thing that went wrong, shown in the HUD
-  std::vector<InputProblem> StageProblems;           // the refused stages' errors, as reported last
+  std::vector<InputProblem> StageProblems; // the refused stages' errors, as reported last
+  OwnStages Saved;                         // what the stage files State names hold (SaveStages)
   MeshCache Meshes{ DecodingThrough(this->Writer) }; // Writer: declared below, started when used
   double Bounds[6] = {};
   vtkPoints* Points = nullptr; // the mesh's, which the camera is fitted to (held by Meshes)

@@ -46,6 +46,18 @@ SceneOptions Inspector::ShownScene() const
   const int* size = this->Window->GetSize();
   s.Size = { size[0], size[1] };
   s.Mesh = std::filesystem::absolute(s.Mesh).string();
+  // The stages of one's own are the rule's they were applied under.
+  for (std::string* stage : { &s.VertexShader, &s.FragmentShader })
+  {
+    if (this->State.StagesRule != s.ShadingRule)
+    {
+      stage->clear();
+    }
+    else if (!stage->empty())
+    {
+      *stage = std::filesystem::absolute(*stage).string();
+    }
+  }
   return s;
 }
 
@@ -74,6 +86,10 @@ std::string Inspector::RenderCommand() const
 
 void Inspector::CopyCommand()
 {
+  if (!this->SaveStages())
+  {
+    return;
+  }
   const std::string command = this->RenderCommand();
   std::cout << "shadelab: render command: " << command << std::endl;
   if (this->Copy)
@@ -82,8 +98,12 @@ void Inspector::CopyCommand()
   }
 }
 
-void Inspector::SaveScene(const std::string& path) const
+void Inspector::SaveScene(const std::string& path)
 {
+  if (!this->SaveStages())
+  {
+    return;
+  }
   const SceneOptions s = this->ShownScene();
   if (const std::string error = WriteFile(path, WriteSceneText(s, PictureName(s))); !error.empty())
   {

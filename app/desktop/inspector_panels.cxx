@@ -46,7 +46,15 @@ void Inspector::Apply()
     this->ShowTracing(slot, panels[i]);
     const SceneOptions scene = TracingPreview(panels[i].Scene);
     const std::vector<Light> lights = CameraLights(scene);
-    const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights);
+    // The state's stages draw its rule's panels that take the view's
+    // stages (a comparison mode may name files of its own); others, none.
+    const OwnStages none;
+    const bool viewStages =
+      scene.VertexShader == base.VertexShader && scene.FragmentShader == base.FragmentShader;
+    const OwnStages* stages = !viewStages           ? nullptr
+      : scene.ShadingRule == this->State.StagesRule ? &this->State.Stages
+                                                    : &none;
+    const SceneCache::Shown shown = slot.Scenes.Show(scene, slot.Renderer, &lights, stages);
     slot.Peeling->SetMaximumNumberOfPeels(scene.Peels);
     if (!shown.Scene)
     {
@@ -73,7 +81,7 @@ void Inspector::ReportStageErrors()
   {
     if (const BuiltScene* shown = slot.Scenes.GetShown())
     {
-      problems = StageErrorLines(this->Options.Scene, *shown);
+      problems = StageErrorLines(this->StageNames(), *shown);
     }
     if (!problems.empty())
     {

@@ -78,6 +78,10 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
     probe->raise();
   };
   this->Readout->TermPicked = [this](Terms term) { this->Shaders->HighlightTerm(term); };
+  this->Shaders->ApplyEdits = [&inspector](const OwnStages& edits)
+  { return inspector.ApplyStages(edits); };
+  this->Shaders->Revert = [&inspector] { inspector.RevertStages(); };
+  this->Shaders->Save = [&inspector] { inspector.SaveStages(); };
   inspector.Changed = [this]
   {
     this->Panel->Show();

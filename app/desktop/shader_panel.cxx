@@ -5,6 +5,8 @@
 
 #include <QButtonGroup>
 #include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QTabWidget>
@@ -104,6 +106,25 @@ QPushButton* AllMarksButton(QWidget* parent)
   return button;
 }
 
+// A line the driver refused: red, over any term's colour.
+const QColor ErrorColour(0xff, 0xa8, 0xa8);
+
+// The stage's tab a driver's error is in (a link error: none).
+int StageOf(const StageErrorLine& error)
+{
+  return error.Where == StageError::Stage::Vertex ? 0
+    : error.Where == StageError::Stage::Fragment  ? 1
+                                                  : -1;
+}
+
+QString Describe(const StageErrorLine& error)
+{
+  const int stage = StageOf(error);
+  const QString where = stage < 0 ? "link" : stage == 0 ? "vertex" : "fragment";
+  return where + (error.Line ? ", line " + QString::number(error.Line) : QString()) + ": " +
+    QString::fromStdString(error.Message);
+}
+
 QPushButton* MarkButton(const Mark& mark, QWidget* parent)
 {
   const QString name = mark.Name;
@@ -151,17 +172,85 @@ ShaderPanel::ShaderPanel(QWidget* parent)
   effects->addStretch();
   column->addLayout(effects);
   column->addWidget(this->Tabs);
+
+  // The hands-on's editing: apply, revert, save, and the driver's errors.
+  auto* edits = new QHBoxLayout;
+  const auto button = [this, edits](const QString& text, const char* name, const QString& tip,
+                        const std::function<void()>& act)
+  {
+    auto* b = new QPushButton(text, this);
+    b->setObjectName(name);
+    b->setToolTip(tip);
+    edits->addWidget(b);
+    QObject::connect(b, &QPushButton::clicked, this, act);
+  };
+  button("Apply", "apply stages",
+    "Draw the edited stages (Ctrl+Return); where the driver refuses them, the program that drew "
+    "before keeps drawing",
+    [this] { this->Apply(); });
+  button("Revert", "revert stages", "The generated stages again",
+    [this]
+    {
+      this->ShowErrors({});
+      for (QPlainTextEdit* edit : this->Stages)
+      {
+        edit->document()->setModified(false);
+      }
+      if (this->Revert)
+      {
+        this->Revert();
+      }
+    });
+  button("Save", "save stages",
+    "Write the stages of one's own to their files (new ones: shadelab-MESH-001.vert, .frag "
+    "in the current folder); Copy command and Save scene name them",
+    [this]
+    {
+      if (this->Save)
+      {
+        this->Save();
+      }
+    });
+  edits->addStretch();
+  column->addLayout(edits);
+  // Ctrl+Return where the edit is typed: a shortcut would wait for the
+  // window to be the active one, which a window without a manager never is.
+  for (QPlainTextEdit* edit : this->Stages)
+  {
+    edit->installEventFilter(this);
+  }
+  this->ErrorList = new QListWidget(this);
+  this->ErrorList->setObjectName("stage errors");
+  // Always there and of one height: errors coming and going never resize
+  // the window, and with it the 3D view.
+  this->ErrorList->setFixedHeight(3 * this->ErrorList->fontMetrics().height());
+  this->ErrorList->setToolTip("The driver's errors of the last Apply; click one to go to its line");
+  QObject::connect(this->ErrorList, &QListWidget::currentRowChanged, this,
+    [this](int row) { this->GoToError(row); });
+  column->addWidget(this->ErrorList);
 }
 
 void ShaderPanel::Show(const ShaderSources& sources)
 {
-  if (sources.Vertex == this->Sources.Vertex && sources.Fragment == this->Sources.Fragment)
+  const bool same =
+    sources.Vertex == this->Sources.Vertex && sources.Fragment == this->Sources.Fragment;
+  this->Sources = sources;
+  // The user's edit is kept until applied or reverted; text that is
+  // already shown is not set again (the cursor and the scroll stay).
+  bool set = false;
+  for (std::size_t i = 0; i < this->Stages.size(); ++i)
+  {
+    const QString text = QString::fromStdString(i == 0 ? sources.Vertex : sources.Fragment);
+    if (!this->Stages[i]->document()->isModified() && this->Stages[i]->toPlainText() != text)
+    {
+      this->Stages[i]->setPlainText(text);
+      set = true;
+    }
+  }
+  if (same && !set)
   {
     return;
   }
-  this->Sources = sources;
-  this->Stages[0]->setPlainText(QString::fromStdString(sources.Vertex));
-  this->Stages[1]->setPlainText(QString::fromStdString(sources.Fragment));
   // An effect's button enabled only where the program has its lines.
   for (std::size_t i = 0; i < Marks().size(); ++i)
   {
@@ -180,6 +269,84 @@ void ShaderPanel::Show(const ShaderSources& sources)
   this->Highlight();
 }
 
+bool ShaderPanel::eventFilter(QObject* watched, QEvent* event)
+{
+  if (event->type() == QEvent::KeyPress)
+  {
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if ((key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter) &&
+      (key->modifiers() & Qt::ControlModifier))
+    {
+      this->Apply();
+      return true;
+    }
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+void ShaderPanel::Apply()
+{
+  OwnStages edits;
+  for (std::size_t i = 0; i < this->Stages.size(); ++i)
+  {
+    if (this->Stages[i]->document()->isModified())
+    {
+      (i == 0 ? edits.Vertex : edits.Fragment) = this->Stages[i]->toPlainText().toStdString();
+    }
+  }
+  if (edits.Empty() || !this->ApplyEdits)
+  {
+    return;
+  }
+  const std::vector<StageErrorLine> errors = this->ApplyEdits(edits);
+  if (errors.empty())
+  {
+    for (QPlainTextEdit* edit : this->Stages)
+    {
+      edit->document()->setModified(false);
+    }
+    this->Show(this->Sources); // what runs now: the edit, with what the render passes add
+  }
+  this->ShowErrors(errors);
+}
+
+void ShaderPanel::ShowErrors(const std::vector<StageErrorLine>& errors)
+{
+  this->Errors = errors;
+  this->ErrorList->clear();
+  for (const StageErrorLine& error : errors)
+  {
+    this->ErrorList->addItem(Describe(error));
+  }
+  this->Highlight();
+  if (!errors.empty())
+  {
+    this->ErrorList->setCurrentRow(0); // the first error's line shown
+  }
+}
+
+void ShaderPanel::GoToError(int row)
+{
+  if (row < 0 || row >= static_cast<int>(this->Errors.size()))
+  {
+    return;
+  }
+  const StageErrorLine& error = this->Errors[row];
+  const int stage = StageOf(error);
+  if (stage < 0 || error.Line < 1)
+  {
+    return;
+  }
+  QPlainTextEdit* edit = this->Stages[stage];
+  const QTextBlock block = edit->document()->findBlockByNumber(error.Line - 1);
+  if (block.isValid())
+  {
+    this->Tabs->setCurrentWidget(edit);
+    edit->setTextCursor(QTextCursor(block));
+    edit->centerCursor();
+  }
+}
+
 void ShaderPanel::HighlightTerm(Terms term)
 {
   this->HighlightMark(static_cast<std::size_t>(term)); // Terms' order is the buttons'
@@ -192,17 +359,23 @@ void ShaderPanel::HighlightMark(std::size_t mark)
   this->Highlight();
 }
 
-// Colours the marked lines of both stages, and shows the first highlighted
-// line of the first stage that has one (the stage that lights).
+// Colours the marked lines of both stages and the refused ones, and shows
+// the first highlighted line of the first stage that has one (the stage
+// that lights).
 void ShaderPanel::Highlight()
 {
   bool shown = false;
-  for (QPlainTextEdit* edit : this->Stages)
+  for (std::size_t stage = 0; stage < this->Stages.size(); ++stage)
   {
+    QPlainTextEdit* edit = this->Stages[stage];
     QList<QTextEdit::ExtraSelection> lines;
     for (QTextBlock block = edit->document()->begin(); block.isValid(); block = block.next())
     {
-      const QColor background = Background(MarksOf(block.text()), this->Shown);
+      const bool refused = std::any_of(this->Errors.begin(), this->Errors.end(),
+        [&](const StageErrorLine& e)
+        { return StageOf(e) == static_cast<int>(stage) && e.Line == block.blockNumber() + 1; });
+      const QColor background =
+        refused ? ErrorColour : Background(MarksOf(block.text()), this->Shown);
       if (!background.isValid())
       {
         continue;

@@ -65,21 +65,13 @@ std::vector<StageError> StageErrors(const BuiltScene& scene)
 }
 }
 
-std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const BuiltScene& scene)
+std::vector<StageErrorLine> LocateStageErrors(const BuiltScene& scene)
 {
   // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
   static const std::regex located(R"(^\s*\d+(?::(\d+)\(\d+\)|\((\d+)\))\s*:\s*(.*)$)");
-  const std::string both = OwnStageFiles(options);
-  std::vector<InputProblem> lines;
+  std::vector<StageErrorLine> lines;
   for (const StageError& error : StageErrors(scene))
   {
-    const std::string& own = error.Where == StageError::Stage::Vertex ? options.VertexShader
-      : error.Where == StageError::Stage::Fragment                    ? options.FragmentShader
-                                                                      : both;
-    const std::string file = own.empty()
-      ? std::string(error.Where == StageError::Stage::Vertex ? "the generated vertex stage"
-                                                             : "the generated fragment stage")
-      : own;
     const std::size_t before = lines.size();
     std::istringstream log(error.Log);
     std::string line;
@@ -88,18 +80,36 @@ std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const Bui
       std::smatch m;
       if (std::regex_match(line, m, located))
       {
-        lines.push_back({ file + ":" + (m[1].matched ? m[1].str() : m[2].str()), m[3].str() });
+        lines.push_back({ error.Where, std::stoi(m[1].matched ? m[1].str() : m[2].str()), m[3] });
       }
       else if (line.find_first_not_of(" \t\r") != std::string::npos)
       {
         lines.push_back(
-          { file, error.Where == StageError::Stage::Link ? "linking: " + line : line });
+          { error.Where, 0, error.Where == StageError::Stage::Link ? "linking: " + line : line });
       }
     }
     if (lines.size() == before)
     {
-      lines.push_back({ file, "the driver rejected it and said nothing more" });
+      lines.push_back({ error.Where, 0, "the driver rejected it and said nothing more" });
     }
+  }
+  return lines;
+}
+
+std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const BuiltScene& scene)
+{
+  const std::string both = OwnStageFiles(options);
+  std::vector<InputProblem> lines;
+  for (const StageErrorLine& error : LocateStageErrors(scene))
+  {
+    const std::string& own = error.Where == StageError::Stage::Vertex ? options.VertexShader
+      : error.Where == StageError::Stage::Fragment                    ? options.FragmentShader
+                                                                      : both;
+    const std::string file = own.empty()
+      ? std::string(error.Where == StageError::Stage::Vertex ? "the generated vertex stage"
+                                                             : "the generated fragment stage")
+      : own;
+    lines.push_back({ error.Line ? file + ":" + std::to_string(error.Line) : file, error.Message });
   }
   return lines;
 }

@@ -24,11 +24,25 @@ InputProblem ReadOwnStages(const SceneOptions& options, OwnStages& stages);
 /** The files of the stages options give, as one name: "V.vert + F.frag", or the one given. */
 std::string OwnStageFiles(const SceneOptions& options);
 
+/** One line of the driver's log of a refused stage. */
+struct StageErrorLine
+{
+  StageError::Stage Where = StageError::Stage::Link;
+  int Line = 0; // in that stage's text, from 1; 0 where the driver gives none
+  std::string Message;
+};
+
 /**
- * The errors of the stages of one's own (those options name) that the
- * driver refused when scene was last drawn, one line each: the file and
- * the line where the driver gives one (Mesa's `0:LINE(COL): ...`,
- * NVIDIA's `0(LINE) : ...`), and the driver's message; none when they drew.
+ * The driver's errors of the stages of one's own that it refused when
+ * scene was last drawn, one per line of its log, with the stage's line
+ * where the driver gives one (Mesa's `0:LINE(COL): ...`, NVIDIA's
+ * `0(LINE) : ...`); none when they drew.
+ */
+std::vector<StageErrorLine> LocateStageErrors(const BuiltScene& scene);
+
+/**
+ * LocateStageErrors as a compiler reports them: `FILE:LINE` (the files
+ * options name) and the driver's message.
  */
 std::vector<InputProblem> StageErrorLines(const SceneOptions& options, const BuiltScene& scene);
 }

@@ -16,8 +16,8 @@
 
 namespace shadelab
 {
-SceneCache::Shown SceneCache::Show(
-  const SceneOptions& options, vtkRenderer* renderer, const std::vector<Light>* lights)
+SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* renderer,
+  const std::vector<Light>* lights, const OwnStages* given)
 {
   Shown shown;
   const LoadedMesh& loaded = this->Meshes->Get(options);
@@ -65,7 +65,11 @@ SceneCache::Shown SceneCache::Show(
     }
   }
   OwnStages stages;
-  if (auto [input, error] = ReadOwnStages(options, stages); !error.empty())
+  if (given)
+  {
+    stages = *given;
+  }
+  else if (auto [input, error] = ReadOwnStages(options, stages); !error.empty())
   {
     shown.Input = input;
     shown.Error = error;

@@ -40,10 +40,12 @@ public:
    * Shows options' scene in renderer and hides every other actor of this
    * cache there. Without lights, the camera is set up as options say
    * (BuildScene); with them, the renderer's camera is used as it is and
-   * the actor lit by them (BuildActor).
+   * the actor lit by them (BuildActor). The stages of one's own are
+   * `stages` where given (the window's edited ones), else the files
+   * options name.
    */
-  Shown Show(
-    const SceneOptions& options, vtkRenderer* renderer, const std::vector<Light>* lights = nullptr);
+  Shown Show(const SceneOptions& options, vtkRenderer* renderer,
+    const std::vector<Light>* lights = nullptr, const OwnStages* stages = nullptr);
 
   /** The scene shown last, or null. */
   const BuiltScene* GetShown() const;

@@ -2,9 +2,9 @@
 // test's own, viewer.cxx): each control changes its own setting of the
 // picture and nothing else, as the picture's render command (Copy command)
 // says it; a key moves the controls that show what it changed; closing the
-// window ends it. The shader panel shows the GLSL that runs, and highlights
-// the lines that the generator marked for each term.
+// window ends it.
 #include "desktop/inspector_window.h"
+#include "in_process.h"
 #include "settings/command_line.h"
 #include "viewer.h"
 
@@ -78,66 +78,6 @@ std::set<std::string> Changed(
   return changed;
 }
 
-// The inspector's window on spot.obj at 240x180, from the given settings.
-ViewOptions SpotView(Shading rule)
-{
-  ViewOptions options;
-  options.Scene.Mesh = TestMesh("teapot.obj").string();
-  options.Scene.Size = { 240, 180 };
-  options.Scene.CameraPosition = Vec3{ 5, 5, 9 };
-  options.Scene.ShadingRule = rule;
-  return options;
-}
-
-// Qt's application, made as RunView makes it (the widget's format first).
-std::unique_ptr<QApplication> MakeApplication()
-{
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  static int argc = 1;
-  static char name[] = "test_view_controls";
-  static char* argv[] = { name, nullptr };
-  return std::make_unique<QApplication>(argc, argv);
-}
-
-// The lines (0-based) of source that end in the generator's marker naming
-// term ("": any term).
-std::set<int> MarkedLines(const std::string& source, const std::string& term)
-{
-  static const std::regex marker(
-    "// shadelab: ((ambient|diffuse|specular)(, (ambient|diffuse|specular))*)$");
-  std::set<int> lines;
-  std::istringstream in(source);
-  std::string line;
-  std::smatch match;
-  for (int n = 0; std::getline(in, line); ++n)
-  {
-    if (std::regex_search(line, match, marker) && match[1].str().find(term) != std::string::npos)
-    {
-      lines.insert(n);
-    }
-  }
-  return lines;
-}
-
-// The lines of source that hold any of codes.
-std::set<int> LinesWith(const std::string& source, const std::vector<std::string>& codes)
-{
-  std::set<int> lines;
-  std::istringstream in(source);
-  std::string line;
-  for (int n = 0; std::getline(in, line); ++n)
-  {
-    for (const std::string& code : codes)
-    {
-      if (line.find(code) != std::string::npos)
-      {
-        lines.insert(n);
-      }
-    }
-  }
-  return lines;
-}
-
 // Where the picture of the scene the view shows is brightest, rendered
 // headless (no light handle in it): the mean position of the pixels within
 // 10% of its brightest value, the specular highlight.
@@ -180,24 +120,6 @@ std::array<double, 2> Highlight(const Inspector& inspector, const TempDir& dir)
   return { x / n, y / n };
 }
 
-// The lines that edit shows highlighted.
-std::set<int> Highlighted(const QPlainTextEdit* edit)
-{
-  std::set<int> lines;
-  for (const QTextEdit::ExtraSelection& selection : edit->extraSelections())
-  {
-    lines.insert(selection.cursor.blockNumber());
-  }
-  return lines;
-}
-
-void Type(QAbstractSpinBox* box, const QString& text)
-{
-  box->setFocus();
-  box->selectAll();
-  QTest::keyClicks(box, text);
-  QTest::keyClick(box, Qt::Key_Return);
-}
 }
 
 TEST(Controls, EachChangesItsSettingAndNothingElseKeysMoveThemAndClosingEnds)
@@ -439,129 +361,4 @@ TEST(Controls, ChoosingTheDefaultsRowStillReplacesEveryPartsMaterial)
   emit material->activated(material->currentIndex());
   EXPECT_TRUE(inspector.GetState().Scene.MaterialGiven);
   EXPECT_EQ(Settings(inspector)["--material"], "chrome;");
-}
-
-TEST(ShaderPanel, ShowsTheGlslThatRunsAndHighlightsTheLinesOfEachTerm)
-{
-  Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");
-  ASSERT_EQ(inspector.Load(), 0);
-  const auto application = MakeApplication();
-  InspectorWindow window(inspector);
-  ASSERT_TRUE(window.Open({ 240, 180 }));
-  const auto* vertex = window.findChild<QPlainTextEdit*>("vertex source");
-  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
-  const auto* tabs = window.findChild<QTabWidget*>();
-  ASSERT_TRUE(vertex && fragment && tabs);
-  // The code that computes each term: its lines are the marked ones.
-  const std::map<std::string, std::vector<std::string>> computes{
-    { "ambient", { "shadelabKa * shadelabIa" } },
-    { "diffuse", { "NdotL * shadelabKd", "Il * term" } },
-    { "specular", { "d = shadelabSpecularD(", "* shadelabKs", "Il * term" } },
-  };
-  const TempDir dir;
-  for (const Shading rule : { Shading::Gouraud, Shading::Phong })
-  {
-    SCOPED_TRACE(ToString(rule));
-    if (rule == Shading::Phong)
-    {
-      QTest::keyClick(window.findChild<QComboBox*>("rule"), Qt::Key_Down); // gouraud, phong
-    }
-    ASSERT_EQ(inspector.GetState().Scene.ShadingRule, rule);
-    // What `render --dump-shaders` writes for the picture the view shows
-    // (in floats: an 8-bit file's program ends with the capture's
-    // quantisation step, which the window leaves to its framebuffer).
-    std::vector<std::string> args{ "render", TestMesh("teapot.obj").string(), "-o",
-      (dir / "picture.exr").string(), "--dump-shaders", dir.path().string() };
-    const std::vector<std::string> scene = SceneArguments(inspector.ShownScene());
-    args.insert(args.end(), scene.begin(), scene.end());
-    const RunResult run = RunShadelab(args);
-    ASSERT_EQ(run.ExitCode, 0) << run.Stderr;
-    const std::string dumped = dir / (std::string(ToString(rule)) + "-blinn");
-    EXPECT_EQ(vertex->toPlainText().toStdString(), Slurp(dumped + ".vert"));
-    EXPECT_EQ(fragment->toPlainText().toStdString(), Slurp(dumped + ".frag"));
-
-    // Gouraud lights in the vertex stage, phong in the fragment stage.
-    const bool perVertex = rule == Shading::Gouraud;
-    const auto* lit = perVertex ? vertex : fragment;
-    const auto* unlit = perVertex ? fragment : vertex;
-    const std::string source = lit->toPlainText().toStdString();
-    EXPECT_NE(source.find("shadelabIlluminate("), std::string::npos);
-    EXPECT_EQ(unlit->toPlainText().toStdString().find("shadelabIlluminate("), std::string::npos);
-    for (const char* term : { "ambient", "diffuse", "specular", "total" })
-    {
-      window.findChild<QPushButton*>(QString("highlight ") + term)->click();
-      const bool all = std::string(term) == "total";
-      const std::set<int> marked = MarkedLines(source, all ? "" : term);
-      ASSERT_FALSE(marked.empty()) << term;
-      if (!all)
-      {
-        EXPECT_EQ(marked, LinesWith(source, computes.at(term)))
-          << term << ": marked where computed";
-        EXPECT_EQ(tabs->currentWidget(), lit) << term;
-        EXPECT_EQ(lit->textCursor().blockNumber(), *marked.begin()) << term << ": shown first";
-      }
-      EXPECT_EQ(Highlighted(lit), marked) << term;
-      EXPECT_TRUE(Highlighted(unlit).empty()) << term;
-    }
-  }
-}
-
-// An effect's lines are marked, and its button enabled, only where the
-// program has them: none before `on`, `count` in the fragment stage after
-// it, highlighted by the button, and none again after `off`.
-void ExpectMarkedOnlyWhenUsed(InspectorWindow& window, const std::string& effect,
-  const std::function<void()>& on, std::size_t count, const std::function<void()>& off)
-{
-  SCOPED_TRACE(effect);
-  const auto* fragment = window.findChild<QPlainTextEdit*>("fragment source");
-  auto* button = window.findChild<QPushButton*>(QString::fromStdString("highlight " + effect));
-  ASSERT_TRUE(fragment && button);
-  const auto marked = [fragment, &effect]
-  { return LinesWith(fragment->toPlainText().toStdString(), { "// shadelab: " + effect }); };
-  EXPECT_TRUE(marked().empty());
-  EXPECT_FALSE(button->isEnabled());
-  on();
-  const std::set<int> lines = marked();
-  EXPECT_EQ(lines.size(), count);
-  EXPECT_TRUE(button->isEnabled());
-  button->click();
-  EXPECT_EQ(Highlighted(fragment), lines);
-  off();
-  EXPECT_TRUE(marked().empty()) << "switched off, it compiles to no code";
-  EXPECT_FALSE(button->isEnabled());
-}
-
-// Attenuation's line is in the stage that lights, once per point or spot
-// light (phong: the fragment stage); 1, 0, 0 is none.
-TEST(ShaderPanel, MarksTheAttenuationOnlyWhereTheSceneHasIt)
-{
-  Inspector inspector(SpotView(Shading::Phong), "shadelab view");
-  ASSERT_EQ(inspector.Load(), 0);
-  const auto application = MakeApplication();
-  InspectorWindow window(inspector);
-  ASSERT_TRUE(window.Open({ 240, 180 }));
-  auto* c1 = window.findChild<QDoubleSpinBox*>("attenuation c1");
-  ExpectMarkedOnlyWhenUsed(
-    window, "attenuation", [c1] { Type(c1, "0.25"); }, 1, [c1] { Type(c1, "0"); });
-}
-
-// Fog's lines are the fragment stage's last under every rule: the depth,
-// the factor, the colour.
-TEST(ShaderPanel, MarksTheFogOnlyWhereTheSceneHasIt)
-{
-  Inspector inspector(SpotView(Shading::Gouraud), "shadelab view");
-  ASSERT_EQ(inspector.Load(), 0);
-  const auto application = MakeApplication();
-  InspectorWindow window(inspector);
-  ASSERT_TRUE(window.Open({ 240, 180 }));
-  auto* mode = window.findChild<QComboBox*>("fog");
-  ExpectMarkedOnlyWhenUsed(
-    window, "fog",
-    [&]
-    {
-      QTest::keyClick(mode, Qt::Key_End); // exp2
-      ASSERT_EQ(inspector.GetState().Scene.Fogging.Mode, FogMode::Exp2);
-      EXPECT_GT(inspector.GetState().Scene.Fogging.Density, 0) << "seeded from the camera";
-    },
-    3, [mode] { QTest::keyClick(mode, Qt::Key_Home); }); // none
 }

@@ -6,6 +6,7 @@
 #include "commands/compare_command.h"
 #include "commands/normals_command.h"
 #include "commands/probe_command.h"
+#include "commands/profile_command.h"
 #include "commands/render_command.h"
 #include "commands/view_command.h"
 #include "core/errors.h"
@@ -111,6 +112,7 @@ int main(int argc, char** argv)
   shadelab::AdviseOptions advise;
   shadelab::ProbeOptions probe;
   shadelab::CheckShaderOptions checkShader;
+  shadelab::ProfileOptions profile;
   std::string commandLine; // set once parsed
   const Command commands[] = {
     { [&](CLI::App& p) { return shadelab::AddRenderCommand(p, render); }, &render.Quiet,
@@ -137,6 +139,8 @@ int main(int argc, char** argv)
       [&] { return shadelab::RunProbe(probe); } },
     { [&](CLI::App& p) { return shadelab::AddCheckShaderCommand(p, checkShader); },
       &checkShader.Quiet, [&] { return shadelab::RunCheckShader(checkShader, commandLine); } },
+    { [&](CLI::App& p) { return shadelab::AddProfileCommand(p, profile); }, &profile.Quiet,
+      [&] { return shadelab::RunProfile(profile, commandLine); } },
   };
   std::vector<CLI::App*> added;
   for (const Command& command : commands)

@@ -119,9 +119,6 @@ std::string SizeText(const std::vector<SpeedAccuracyRow>& rows, int largest)
 void AddLine(vtkChartXY* chart, PointLabels* labels, const std::pair<std::string, std::string>& key,
   const Line& points, std::vector<double>& msValues, std::vector<double>& rmseValues)
 {
-  static const std::map<std::string, std::array<unsigned char, 3>> colors{
-    { "flat", { 214, 39, 40 } }, { "gouraud", { 44, 160, 44 } }, { "phong", { 31, 119, 180 } }
-  };
   auto table = vtkSmartPointer<vtkTable>::New();
   auto ms = vtkSmartPointer<vtkDoubleArray>::New();
   ms->SetName("ms per frame");
@@ -140,7 +137,7 @@ void AddLine(vtkChartXY* chart, PointLabels* labels, const std::pair<std::string
   table->AddColumn(rmse);
   auto* line = vtkPlotLine::SafeDownCast(chart->AddPlot(vtkChart::LINE));
   line->SetInputData(table, 0, 1);
-  const auto& c = colors.count(key.second) ? colors.at(key.second) : colors.at("flat");
+  const auto c = RuleColour(key.second);
   line->SetColor(c[0], c[1], c[2], 255);
   line->SetWidth(2.5);
   line->SetMarkerStyle(key.first == "sphere" ? vtkPlotPoints::CIRCLE : vtkPlotPoints::SQUARE);

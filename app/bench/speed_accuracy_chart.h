@@ -4,19 +4,12 @@
 #define shadelab_speed_accuracy_chart_h
 
 #include "bench/speed_accuracy.h"
-#include "image/image_pixels.h"
+#include "headless/chart_style.h"
 
-#include <string>
 #include <vector>
 
 namespace shadelab
 {
-struct ChartImage
-{
-  FloatImage Image;
-  std::string Error; // no OpenGL context, else empty
-};
-
 /**
  * RMSE against median ms/frame on log-log axes: a line per surface and rule
  * (angle weighting for gouraud and phong, at the largest picture size

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -71,6 +72,13 @@ CLI::App* AddViewCommand(CLI::App& program, ViewOptions& o)
 int ExecViewer(int argc, char** argv)
 {
   const std::string viewer = SiblingExecutable("shadelab-view");
+  // The window runs shadelab itself (the profile's chart): this one.
+  std::error_code error;
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  if (!error)
+  {
+    setenv("SHADELAB_EXECUTABLE", self.c_str(), 1);
+  }
   std::vector<char*> args(argv, argv + argc);
   args[0] = const_cast<char*>(viewer.c_str());
   args.push_back(nullptr);

@@ -26,6 +26,7 @@
 #include "scene/shader_sources.h"
 
 #include <vtkActor.h>
+#include <vtkActor2D.h>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
@@ -169,6 +170,16 @@ public:
   };
   const std::vector<ProbeArrow>& GetProbeArrows() const { return this->Arrows; }
 
+  /**
+   * The words after `shadelab` that profile the single view's picture along
+   * the line from `from` to `to` (pixels from the top left): the scene Copy
+   * command writes (the stages of one's own saved first), the comparison's
+   * modes. Empty when the stages could not be saved (reported).
+   */
+  std::vector<std::string> ProfileArguments(Pixel from, Pixel to);
+  /** A profile's line drawn (the k key, then a drag), its ends from the top left. */
+  std::function<void(Pixel from, Pixel to)> ProfileLine;
+
   std::function<void()> Changed;                // after a key or SetState changed the state
   std::function<void()> ProbeChanged;           // after a probe, its update or its clearing
   std::function<void()> Quit;                   // the quit key
@@ -259,6 +270,10 @@ private:
   void FollowTracing();
   void TraceStep();
 
+  // inspector_profile.cxx: the profile's line, drawn over the view.
+  void ArmProfileLine();
+  void DrawProfileLine(const int from[2], const int to[2], bool released);
+
   // inspector_pictures.cxx: the window's pixels read back.
   FloatImage GrabWindow();
   void RefreshDifference();
@@ -303,7 +318,8 @@ private:
   std::vector<ProbeArrow> Arrows;
   int PressAt[2] = {};
   bool PressControl = false;
-  int TraceTimer = -1; // the timer that will call TraceStep, if any
+  int TraceTimer = -1;     // the timer that will call TraceStep, if any
+  vtkNew<vtkActor2D> Line; // the profile's, until the next or a change of the view
 };
 }
 

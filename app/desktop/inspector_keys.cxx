@@ -100,6 +100,9 @@ bool Inspector::Act(ViewAction action, int which)
     case ViewAction::SaveScene:
       this->SaveScene(NumberedName(this->Options.Scene.Mesh, ".json"));
       return false;
+    case ViewAction::ProfileLine:
+      this->ArmProfileLine();
+      return false;
     case ViewAction::Help:
       this->State.Help = !this->State.Help;
       return true;

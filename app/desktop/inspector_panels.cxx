@@ -71,6 +71,7 @@ void Inspector::Apply()
     slot.Label->SetVisibility(this->State.Compare);
   }
   this->Help->SetVisibility(this->State.Help);
+  this->Line->VisibilityOff(); // the profile's line is of the picture before
   this->UpdateHud();
 }
 

@@ -77,6 +77,10 @@ void Inspector::ObserveClicks()
 
 void Inspector::OnPress()
 {
+  if (!this->Style->LineDrag)
+  {
+    this->Line->VisibilityOff(); // the profile's line is of the picture before the drag
+  }
   const int* at = this->Interactor->GetEventPosition();
   this->PressAt[0] = at[0];
   this->PressAt[1] = at[1];

@@ -2,6 +2,7 @@
 #include "desktop/inspector_window.h"
 
 #include "core/errors.h"
+#include "core/sibling_executable.h"
 #include "desktop/control_panel.h"
 #include "desktop/probe_panel.h"
 #include "desktop/shader_panel.h"
@@ -14,13 +15,16 @@
 #include <QClipboard>
 #include <QDockWidget>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QProcess>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSurfaceFormat>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -70,6 +74,20 @@ InspectorWindow::InspectorWindow(Inspector& inspector)
   probe->setWidget(this->Readout);
   this->addDockWidget(Qt::RightDockWidgetArea, probe);
   this->tabifyDockWidget(shaderDock, probe);
+  this->ProfileDock = new QDockWidget("Profile", this);
+  this->ProfileDock->setObjectName("profile dock");
+  this->ProfileChart = new QLabel("Press k and drag a line across the view: its intensity per rule "
+                                  "(flat, gouraud, phong), as shadelab profile draws it.",
+    this->ProfileDock);
+  this->ProfileChart->setObjectName("profile chart");
+  this->ProfileChart->setWordWrap(true);
+  this->ProfileChart->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  // The chart never widens the dock, and with it the window and the view.
+  this->ProfileChart->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+  this->ProfileDock->setWidget(this->ProfileChart);
+  this->addDockWidget(Qt::RightDockWidgetArea, this->ProfileDock);
+  this->tabifyDockWidget(probe, this->ProfileDock);
+  inspector.ProfileLine = [this](Pixel from, Pixel to) { this->RunProfile(from, to); };
   this->Controls = dock;
   // A probed pixel brings its readout to the front.
   inspector.ProbeChanged = [this, probe]
@@ -117,6 +135,76 @@ bool InspectorWindow::Open(const ImageSize& size, bool sizeGiven)
   return this->isVisible();
 }
 
+// `shadelab profile` of the view's scene along the line, in the background
+// (the window keeps answering); its chart shown in the Profile dock, its
+// command line in the chart's tooltip and on stdout.
+void InspectorWindow::RunProfile(Pixel from, Pixel to)
+{
+  const std::vector<std::string> words = this->Engine.ProfileArguments(from, to);
+  if (words.empty())
+  {
+    return;
+  }
+  if (this->Profiler)
+  {
+    this->Profiler->kill(); // a line drawn since: only the last one's chart
+    this->Profiler->deleteLater();
+  }
+  const QString chart = this->ProfileFolder.filePath("profile.png");
+  QStringList arguments;
+  for (const std::string& word : words)
+  {
+    arguments << QString::fromStdString(word);
+  }
+  arguments << "-o" << chart << "--quiet";
+  // `shadelab view` names itself (ExecViewer); a test, or shadelab-view
+  // run alone, finds shadelab beside it.
+  const char* given = std::getenv("SHADELAB_EXECUTABLE");
+  const QString program = given ? given : QString::fromStdString(SiblingExecutable("shadelab"));
+  QStringList shown{ "shadelab" };
+  shown << arguments.mid(0, arguments.size() - 3);
+  const QString command = shown.join(' ');
+  std::cout << "shadelab: profile command: " << command.toStdString() << std::endl;
+  this->ProfileChart->setText("Profiling...\n" + command);
+  this->ProfileDock->raise();
+  auto* process = new QProcess(this);
+  this->Profiler = process;
+  QObject::connect(process, QOverload<int, QProcess::ExitStatus>::of(&QProcess::finished), this,
+    [this, process, chart, command](int code, QProcess::ExitStatus status)
+    {
+      if (process != this->Profiler)
+      {
+        return; // killed for a newer line
+      }
+      const QPixmap picture(chart);
+      if (status != QProcess::NormalExit || code != 0 || picture.isNull())
+      {
+        this->ProfilePicture = QPixmap();
+        this->ProfileChart->setText(
+          "shadelab profile failed:\n" + QString::fromLocal8Bit(process->readAllStandardError()));
+      }
+      else
+      {
+        this->ProfilePicture = picture;
+        this->FitProfileChart();
+      }
+      this->ProfileChart->setToolTip(command);
+      this->Profiler = nullptr;
+      process->deleteLater();
+    });
+  process->start(program, arguments);
+}
+
+// The chart as large as the dock shows it whole.
+void InspectorWindow::FitProfileChart()
+{
+  if (!this->ProfilePicture.isNull())
+  {
+    this->ProfileChart->setPixmap(this->ProfilePicture.scaled(
+      this->ProfileChart->size(), Qt::KeepAspectRatio, Qt::SmoothTransformation));
+  }
+}
+
 void InspectorWindow::FitScreen(const QSize& view, bool sizeGiven)
 {
   const QRect screen = this->screen()->availableGeometry();
@@ -157,6 +245,11 @@ void InspectorWindow::FitScreen(const QSize& view, bool sizeGiven)
 
 bool InspectorWindow::eventFilter(QObject* watched, QEvent* event)
 {
+  if (watched == this->ProfileChart && event->type() == QEvent::Resize)
+  {
+    this->FitProfileChart();
+    return false;
+  }
   auto* widget = qobject_cast<QWidget*>(watched);
   if (event->type() != QEvent::KeyPress || !widget || widget->window() != this)
   {

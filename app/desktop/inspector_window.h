@@ -1,7 +1,7 @@
 // shadelab-view's Qt window: the inspector's 3D view (VTK's
 // QVTKOpenGLNativeWidget showing the Inspector's render window) with the
 // control panel in a dock beside it, the running shader's panel and the
-// probe's readout in docks tabbed with it. Every key of the key table
+// probe's readout in docks tabbed with it, and the profile's chart. Every key of the key table
 // (desktop/view_keys.h) works wherever the focus is, but in a field being
 // typed into.
 #ifndef shadelab_inspector_window_h
@@ -10,11 +10,15 @@
 #include "desktop/inspector.h"
 
 #include <QMainWindow>
+#include <QPixmap>
+#include <QTemporaryDir>
 
 #include <string>
 #include <vector>
 
 class QDockWidget;
+class QLabel;
+class QProcess;
 class QVTKOpenGLNativeWidget;
 
 namespace shadelab
@@ -42,6 +46,8 @@ protected:
 
 private:
   void FitScreen(const QSize& view, bool sizeGiven);
+  void RunProfile(Pixel from, Pixel to);
+  void FitProfileChart();
 
   Inspector& Engine;
   QVTKOpenGLNativeWidget* View;
@@ -49,6 +55,11 @@ private:
   ShaderPanel* Shaders;
   ProbePanel* Readout;
   QDockWidget* Controls = nullptr; // the controls' dock, in front at start
+  QDockWidget* ProfileDock = nullptr;
+  QLabel* ProfileChart = nullptr; // the chart; its tooltip the command that made it
+  QPixmap ProfilePicture;         // the chart as written
+  QProcess* Profiler = nullptr;   // `shadelab profile`, while it runs
+  QTemporaryDir ProfileFolder;    // where it writes the chart
   bool Started = false;
   std::vector<std::string> EarlyKeys; // pressed before the inspector started
 };

@@ -34,6 +34,7 @@ enum class ViewAction
   Screenshot,  // into the current folder
   CopyCommand, // the render command of the picture: clipboard and stdout
   SaveScene,   // the scene file of the picture, into the current folder
+  ProfileLine, // the next drag draws the profile's line
   Help,        // the overlay on / off
   Quit
 };
@@ -62,6 +63,8 @@ inline constexpr ViewKey ViewKeys[] = {
     ViewAction::CopyCommand },
   { "j", "save the scene file that makes this picture (its name is printed)",
     ViewAction::SaveScene },
+  { "k", "profile: drag a line; its intensity per rule in the Profile dock (Mach bands)",
+    ViewAction::ProfileLine },
   { "h", "this help", ViewAction::Help },
   { "q Esc", "quit", ViewAction::Quit },
 };

@@ -44,6 +44,9 @@ struct Panel
  */
 std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base);
 
+/** --modes's help: the modes' syntax (compare, view, profile). */
+extern const char* const ModesHelp;
+
 /**
  * Leaves only the chosen terms of the illumination in scene, by zeroing the
  * others' coefficients: the shaders then hold no code for them (doc/design.md,

@@ -32,16 +32,17 @@ enum class Command
   Probe,
   Normals,
   Advise,
-  CheckShader
+  CheckShader,
+  Profile
 };
 
 template <>
 struct NameTable<Command>
 {
-  static constexpr std::array<std::pair<Command, const char*>, 7> Entries{
+  static constexpr std::array<std::pair<Command, const char*>, 8> Entries{
     { { Command::Render, "render" }, { Command::Compare, "compare" }, { Command::View, "view" },
       { Command::Probe, "probe" }, { Command::Normals, "normals" }, { Command::Advise, "advise" },
-      { Command::CheckShader, "check-shader" } }
+      { Command::CheckShader, "check-shader" }, { Command::Profile, "profile" } }
   };
 };
 
@@ -55,7 +56,7 @@ constexpr CommandSet Of(Command c)
 
 /** The commands that make or explain a picture of a scene. */
 constexpr CommandSet PictureCommands = Of(Command::Render) | Of(Command::Compare) |
-  Of(Command::View) | Of(Command::Probe) | Of(Command::CheckShader);
+  Of(Command::View) | Of(Command::Probe) | Of(Command::CheckShader) | Of(Command::Profile);
 
 struct Setting
 {

@@ -25,8 +25,8 @@ using namespace settings;
   }
 
 // The commands that draw with a rule's shaders (probe explains the generated ones).
-constexpr CommandSet StageCommands =
-  Of(Command::Render) | Of(Command::Compare) | Of(Command::View) | Of(Command::CheckShader);
+constexpr CommandSet StageCommands = Of(Command::Render) | Of(Command::Compare) |
+  Of(Command::View) | Of(Command::CheckShader) | Of(Command::Profile);
 constexpr CommandSet ComputedNormals = PictureCommands | Of(Command::Normals) | Of(Command::Advise);
 
 std::vector<Setting> MakeSettings()

@@ -44,7 +44,7 @@ expect() {
   }
 }
 
-expect "--help --version advise bench check-shader compare normals probe render view" shadelab ""
+expect "--help --version advise bench check-shader compare normals probe profile render view" shadelab ""
 expect "render" shadelab re
 expect "--shading --shadow-map-size --shadows --shard" shadelab render --sh
 expect "--modes" shadelab compare --mo

@@ -13,6 +13,7 @@
 #include "scene/mesh_cache.h"
 #include "scene/own_stage_files.h"
 #include "scene/scene_cache.h"
+#include "scene/scene_file.h"
 #include "settings/command_line.h"
 #include "shadelabJsonProblem.h"
 
@@ -140,41 +141,44 @@ CLI::App* AddCheckShaderCommand(CLI::App& program, CheckShaderOptions& o)
     "double-precision oracle pixel by pixel, and say where they part; exit 0 when the "
     "stages agree with the oracle within the oracle tests' bound, 1 when not");
   o.Scene.Size = { 320, 240 };
-  check->add_option("MESH", o.Scene.Mesh, MeshFileHelp())->required();
+  check->add_option("MESH", o.Scene.Mesh, MeshFileHelp());
   AddSettings(*check, o.Scene, Command::CheckShader);
   check->get_option("--size")->description("Image size in pixels (default 320x240)");
+  // With a scene file, its shots say all that these say.
+  std::vector<CLI::Option*> sceneSettings =
+    check->get_options([](const CLI::Option* option) { return option->get_name() != "--help"; });
+  CLI::Option* scene = check
+                         ->add_option("--scene", o.SceneFile,
+                           "Check every shot of a scene file (several lights, rules and "
+                           "materials, each shot naming its vertex_shader and fragment_shader); "
+                           "exit 0 when every shot agrees")
+                         ->option_text("FILE.json");
+  for (CLI::Option* setting : sceneSettings)
+  {
+    setting->excludes(scene);
+  }
   check->add_option("-o,--output", o.Output,
     "A picture of the stages' render, the generated one's, and the heat map of the stages' "
-    "error against the oracle");
+    "error against the oracle; with --scene, a name template for every shot's (as render's, "
+    "{index} {name} ...), none without it");
   check->add_flag("--json", o.Json, "One JSON object instead of the text");
   check->add_flag("-q,--quiet", o.Quiet, "No warnings");
   check->footer(CameraHelp);
   return check;
 }
 
-int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
+namespace
 {
-  const SceneOptions& own = o.Scene;
-  if (own.VertexShader.empty() && own.FragmentShader.empty())
-  {
-    ReportError("check-shader",
-      "give the stages to check: --fragment-shader FILE and/or --vertex-shader FILE (as "
-      "render --dump-shaders writes them)");
-    return ExitUsage;
-  }
-  if (!o.Output.empty())
-  {
-    if (const std::string error = ImageWriterProcess::CheckFolder(o.Output); !error.empty())
-    {
-      return ReportError(o.Output, error);
-    }
-  }
+// Checks one scene's stages: prints the text (or fills json), writes the
+// picture to output where given, and says whether they agree; 0, or the
+// exit code of an error (reported).
+int CheckShot(const SceneOptions& own, const std::string& output, nlohmann::ordered_json* json,
+  const std::string& commandLine, MeshCache& meshes, std::unique_ptr<ImageWriterProcess>& writer,
+  bool& agrees)
+{
   SceneOptions generated = own;
   generated.VertexShader.clear();
   generated.FragmentShader.clear();
-
-  std::unique_ptr<ImageWriterProcess> writer; // started for a texture's image or the picture
-  MeshCache meshes(DecodingThrough(writer));
   HeadlessRenderer renderer;
   const int width = own.Size.Width, height = own.Size.Height;
   if (const std::string error = renderer.Start(width, height); !error.empty())
@@ -215,7 +219,7 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
       generatedErrors.Add(PixelRgb(theirs.Picture, x, y), oracle, { x, y }, width);
     }
   }
-  const bool agrees = ownErrors.Beyond == 0;
+  agrees = ownErrors.Beyond == 0;
   PixelProbe worst;
   if (compared > 0)
   {
@@ -224,9 +228,9 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
     worst.RenderedFrom = "the generated stages' float render at the pixel";
   }
   const std::string label = OwnStageFiles(own);
-  if (o.Json)
+  if (json)
   {
-    nlohmann::ordered_json j;
+    nlohmann::ordered_json& j = *json;
     j["mesh"] = own.Mesh;
     j["stages"] = label;
     j["size"] = { width, height };
@@ -240,7 +244,6 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
       j["worst_probe"] = ProbeJson(worst);
     }
     j["agrees"] = agrees;
-    std::cout << JsonText(j) << std::endl;
   }
   else
   {
@@ -267,7 +270,7 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
     std::cout << (agrees ? "agrees with the oracle" : "does not agree with the oracle")
               << std::endl;
   }
-  if (!o.Output.empty())
+  if (!output.empty())
   {
     const Difference heat = HeatOf(ownErrors, width, height);
     const std::string heatLabel = "|yours - oracle|";
@@ -281,12 +284,130 @@ int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
     {
       writer = std::make_unique<ImageWriterProcess>();
     }
-    if (const std::string error = writer->Write(o.Output, picture, PixelType::Auto, metadata);
+    if (const std::string error = writer->Write(output, picture, PixelType::Auto, metadata);
         !error.empty())
     {
-      return ReportError(o.Output, error);
+      return ReportError(output, error);
     }
   }
-  return agrees ? 0 : ExitFailure;
+  return 0;
+}
+
+// The shots to check: the scene file's, or the command line's one; each
+// names its stages and its output's folder is there. 0, or the exit code
+// (reported).
+int ShotsToCheck(const CheckShaderOptions& o, std::vector<Shot>& shots)
+{
+  if (o.SceneFile.empty())
+  {
+    if (o.Scene.Mesh.empty())
+    {
+      std::cerr << "shadelab: error: check-shader: MESH is required unless --scene gives the "
+                   "shots (see shadelab check-shader --help)"
+                << std::endl;
+      return ExitUsage;
+    }
+    shots.push_back({ o.Scene, o.Output, "", false, false });
+  }
+  else
+  {
+    // Shots need no output here: a template stands in for the file's, and
+    // the names it makes are dropped below when -o gives none.
+    const std::string outputs = o.Output.empty() ? "{index}.png" : o.Output;
+    if (const std::string error = ReadSceneFile(o.SceneFile, outputs, shots); !error.empty())
+    {
+      return ReportError(o.SceneFile, error);
+    }
+  }
+  for (Shot& shot : shots)
+  {
+    if (o.Output.empty())
+    {
+      shot.Output.clear(); // a scene file's outputs are its renders', not these pictures'
+    }
+    const SceneOptions& s = shot.Scene;
+    if (s.VertexShader.empty() && s.FragmentShader.empty())
+    {
+      if (shot.Label.empty())
+      {
+        ReportError("check-shader",
+          "give the stages to check: --fragment-shader FILE and/or --vertex-shader FILE (as "
+          "render --dump-shaders writes them)");
+        return ExitUsage;
+      }
+      return ReportError(
+        shot.Label, "names no stage to check: give it vertex_shader and/or fragment_shader");
+    }
+    OwnStages stages;
+    if (auto [input, error] = ReadOwnStages(s, stages); !error.empty())
+    {
+      return ReportError(input, error);
+    }
+    if (!shot.Output.empty())
+    {
+      if (const std::string error = ImageWriterProcess::CheckFolder(shot.Output); !error.empty())
+      {
+        return ReportError(shot.Output, error);
+      }
+    }
+  }
+  return 0;
+}
+}
+
+int RunCheckShader(const CheckShaderOptions& o, const std::string& commandLine)
+{
+  std::vector<Shot> shots;
+  if (const int status = ShotsToCheck(o, shots); status != 0)
+  {
+    return status;
+  }
+  std::unique_ptr<ImageWriterProcess> writer; // started for a texture's image or a picture
+  MeshCache meshes(DecodingThrough(writer));
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  bool agree = true;
+  for (const Shot& shot : shots)
+  {
+    if (!shot.Label.empty() && !o.Json)
+    {
+      std::cout << shot.Label << ":\n";
+    }
+    nlohmann::ordered_json one;
+    if (!shot.Label.empty())
+    {
+      one["shot"] = shot.Label;
+    }
+    bool agrees = false;
+    if (const int status = CheckShot(
+          shot.Scene, shot.Output, o.Json ? &one : nullptr, commandLine, meshes, writer, agrees);
+        status != 0)
+    {
+      return status;
+    }
+    agree = agree && agrees;
+    all.push_back(one);
+  }
+  if (o.Json)
+  {
+    // One object for one check, as before scene files; {"shots": [...], "agrees"} for a file's.
+    nlohmann::ordered_json j;
+    if (o.SceneFile.empty())
+    {
+      j = all.front();
+    }
+    else
+    {
+      j["scene"] = o.SceneFile;
+      j["shots"] = all;
+      j["agrees"] = agree;
+    }
+    std::cout << JsonText(j) << std::endl;
+  }
+  else if (shots.size() > 1)
+  {
+    std::cout << (agree ? "every shot agrees with the oracle" : "not every shot agrees")
+              << std::endl;
+  }
+  return agree ? 0 : ExitFailure;
 }
 }

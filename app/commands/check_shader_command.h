@@ -1,5 +1,6 @@
 // `shadelab check-shader MESH --fragment-shader FILE [--vertex-shader FILE]
-// [options] [-o OUT] [--json]`: stages of one's own checked against the
+// [options] [-o OUT] [--json]`, or `--scene FILE.json` for every shot of a
+// scene file: stages of one's own checked against the
 // lecture's equation. The scene is rendered with them and with the
 // generated stages, both are compared with the double-precision oracle
 // pixel by pixel, and the exit status says whether one's own agree with it
@@ -21,9 +22,10 @@ namespace shadelab
 struct CheckShaderOptions
 {
   SceneOptions Scene;
-  std::string Output; // the heat map of the difference, or "" for none
-  bool Json = false;  // one JSON object instead of the text
-  bool Quiet = false; // no warnings
+  std::string SceneFile; // check its shots instead (--scene)
+  std::string Output;    // the heat map of the difference (with SceneFile a template), or ""
+  bool Json = false;     // one JSON object instead of the text
+  bool Quiet = false;    // no warnings
 };
 
 /** Declares the check-shader command and its options on the program. */

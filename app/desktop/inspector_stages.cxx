@@ -16,13 +16,17 @@ std::vector<StageErrorLine> Inspector::ApplyStages(const OwnStages& edits)
 {
   const ViewState before = this->State;
   ViewState next = before;
-  if (next.StagesRule != next.Scene.ShadingRule)
+  // The rule of the program the panel shows: the first panel's.
+  const Shading rule = this->State.Compare && !this->Plan.Panels.empty()
+    ? this->Plan.Panels.front().Scene.ShadingRule
+    : this->State.Scene.ShadingRule;
+  if (next.StagesRule != rule)
   {
     // One rule's stages at a time: another rule's are dropped with their files.
     next.Stages = {};
     next.Scene.VertexShader.clear();
     next.Scene.FragmentShader.clear();
-    next.StagesRule = next.Scene.ShadingRule;
+    next.StagesRule = rule;
   }
   if (!edits.Vertex.empty())
   {

@@ -243,3 +243,63 @@ TEST(CheckShader, ProbeExplainsTheLiteralFormsPixel)
   EXPECT_LT(
     largestError(stable), 1e-4 * std::max(std::abs(stable.at("oracle").at(0).get<double>()), 0.01));
 }
+
+// A scene file checks several scenes in one call, each shot with its own
+// stages: two lighting setups and two materials whose dumped stages agree,
+// and one whose N.L is unclamped, which fails alone and fails the file.
+TEST(CheckShader, AScenesShotsAreCheckedInOneCall)
+{
+  const TempDir dir;
+  const std::string two = Dumped(dir, {}); // Scene's two lights
+  WriteText(dir / "two.frag", two);
+  WriteText(dir / "unclamped.frag", Edited(two, "NdotL > shadelabGrazingLimit", "NdotL > -2.0"));
+  const RunResult one =
+    RunShadelab({ "render", TestMesh("torus.obj").string(), "-o", (dir / "one.png").string(),
+      "--size", "160x120", "--light", "point:3,0,1", "--dump-shaders", (dir / "one").string() });
+  ASSERT_EQ(one.ExitCode, 0) << one.Stderr;
+  const std::string lights =
+    R"("lights": [{"kind": "point", "position": [3, 2, 5]}, {"kind": "directional", "direction": [1, 1, -1]}])";
+  const auto shot = [&](const std::string& stage, const std::string& more)
+  { return R"({"fragment_shader": ")" + (dir / stage).string() + "\", " + more + "}"; };
+  const auto write = [&](bool withMistake)
+  {
+    WriteText(dir / "scene.json",
+      R"({"mesh": ")" + TestMesh("torus.obj").string() + R"(", "size": [160, 120], "shots": [)" +
+        shot("one/phong-blinn.frag", R"("lights": [{"kind": "point", "position": [3, 0, 1]}])") +
+        ", " + shot("two.frag", lights) + ", " +
+        shot("two.frag", lights + R"(, "material": "gold")") +
+        (withMistake ? ", " + shot("unclamped.frag", lights) : "") + "]}");
+  };
+  write(false);
+  RunResult r = RunShadelab({ "check-shader", "--scene", (dir / "scene.json").string(), "--json" });
+  EXPECT_EQ(r.ExitCode, 0) << r.Stderr;
+  json result = json::parse(r.Stdout, nullptr, false);
+  ASSERT_FALSE(result.is_discarded()) << r.Stdout;
+  ASSERT_EQ(result.at("shots").size(), 3u);
+  EXPECT_TRUE(result.at("agrees").get<bool>());
+  for (const json& s : result.at("shots"))
+  {
+    EXPECT_TRUE(s.at("agrees").get<bool>()) << s.at("shot");
+    EXPECT_GT(s.at("compared").get<long long>(), 1000);
+  }
+
+  write(true);
+  r = RunShadelab({ "check-shader", "--scene", (dir / "scene.json").string(), "--json" });
+  EXPECT_EQ(r.ExitCode, 1) << r.Stderr;
+  result = json::parse(r.Stdout, nullptr, false);
+  ASSERT_FALSE(result.is_discarded()) << r.Stdout;
+  ASSERT_EQ(result.at("shots").size(), 4u);
+  EXPECT_FALSE(result.at("agrees").get<bool>());
+  EXPECT_TRUE(result.at("shots")[2].at("agrees").get<bool>());
+  EXPECT_FALSE(result.at("shots")[3].at("agrees").get<bool>());
+  EXPECT_NE(
+    result.at("shots")[3].at("shot").get<std::string>().find("shots[3]"), std::string::npos);
+
+  // A shot that names no stage is refused before anything is checked.
+  WriteText(
+    dir / "scene.json", R"({"mesh": ")" + TestMesh("torus.obj").string() + R"(", "shots": [{}]})");
+  r = RunShadelab({ "check-shader", "--scene", (dir / "scene.json").string() });
+  EXPECT_EQ(r.ExitCode, 1);
+  EXPECT_NE(r.Stderr.find("shots[0]: names no stage to check"), std::string::npos) << r.Stderr;
+  EXPECT_TRUE(r.Stdout.empty()) << r.Stdout;
+}

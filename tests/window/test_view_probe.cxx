@@ -6,20 +6,19 @@
 // Ctrl+drag probe nothing. A term's line picked in the readout highlights
 // the shader lines that compute that term.
 #include "desktop/inspector_window.h"
+#include "in_process.h"
 #include "probe/probe_json.h"
 #include "probe/probe_text.h"
 #include "settings/command_line.h"
 #include "shadelabShaderSource.h"
 #include "viewer.h"
 
-#include <QVTKOpenGLNativeWidget.h>
 #include <vtkCommand.h>
 #include <vtkMatrix4x4.h>
 #include <vtkRenderWindowInteractor.h>
 
 #include <QApplication>
 #include <QPlainTextEdit>
-#include <QSurfaceFormat>
 #include <QTabWidget>
 #include <QTextBlock>
 
@@ -68,16 +67,6 @@ std::set<int> MarkedFor(const QPlainTextEdit* edit, const std::string& term)
     {
       lines.insert(n);
     }
-  }
-  return lines;
-}
-
-std::set<int> Highlighted(const QPlainTextEdit* edit)
-{
-  std::set<int> lines;
-  for (const QTextEdit::ExtraSelection& selection : edit->extraSelections())
-  {
-    lines.insert(selection.cursor.blockNumber());
   }
   return lines;
 }
@@ -158,21 +147,14 @@ void Click(vtkRenderWindowInteractor* mouse, int x, int y, bool control, int dx 
 
 TEST(Probe, CtrlClickExplainsThePixelAsTheCommandLineDoesWithArrowsAlongNLH)
 {
-  ViewOptions options;
-  options.Scene.Mesh = TestMesh("teapot.obj").string();
-  options.Scene.Size = { 240, 180 };
-  options.Scene.CameraPosition = Vec3{ 5, 5, 9 };
+  ViewOptions options = SpotView(Shading::Phong);
   // A light away from the camera, so that L, H and N point three ways.
   Light light;
   light.Position = { 3, 4, 1 };
   options.Scene.Lights = { light };
   Inspector inspector(options, "shadelab view");
   ASSERT_EQ(inspector.Load(), 0);
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  int argc = 1;
-  char name[] = "test_view_probe";
-  char* argv[] = { name, nullptr };
-  QApplication application(argc, argv);
+  const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open(options.Scene.Size));
   vtkRenderWindowInteractor* mouse = inspector.GetWindow()->GetInteractor();

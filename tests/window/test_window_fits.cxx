@@ -6,15 +6,13 @@
 // size's shape; a given --size larger than the screen is kept, with one
 // warning; the controls are in front at start.
 #include "desktop/inspector_window.h"
+#include "in_process.h"
 #include "viewer.h"
-
-#include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
 #include <QDockWidget>
 #include <QGuiApplication>
 #include <QScreen>
-#include <QSurfaceFormat>
 
 #include <gtest/gtest.h>
 
@@ -27,15 +25,6 @@ using namespace shadelab_test;
 
 namespace
 {
-std::unique_ptr<QApplication> MakeApplication()
-{
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  static int argc = 1;
-  static char name[] = "test_window_fits";
-  static char* argv[] = { name, nullptr };
-  return std::make_unique<QApplication>(argc, argv);
-}
-
 ViewOptions SpotView()
 {
   ViewOptions options;

@@ -26,6 +26,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <regex>
 
 namespace shadelab
@@ -34,8 +35,7 @@ namespace
 {
 bool IsCsv(const std::string& path)
 {
-  static const std::regex csv(R"(.*\.[cC][sS][vV])");
-  return std::regex_match(path, csv);
+  return LowerExtension(path) == ".csv";
 }
 
 // "X0,Y0,X1,Y1" inside a picture of size; on failure why.
@@ -79,16 +79,10 @@ double LargestAbs(const std::vector<double>& values)
 // the mesh: what the chart shows, as numbers.
 void PrintSummary(const LineProfile& profile)
 {
-  std::size_t edges = 0;
-  for (std::size_t i = 0; i + 1 < profile.Triangles.size(); ++i)
-  {
-    edges += profile.Triangles[i] >= 0 && profile.Triangles[i + 1] >= 0 &&
-      profile.Triangles[i] != profile.Triangles[i + 1];
-  }
   std::cout << "profile: " << profile.Samples.size() << " samples, "
             << std::count_if(profile.Triangles.begin(), profile.Triangles.end(),
                  [](vtkIdType t) { return t >= 0; })
-            << " on the mesh, " << edges << " triangle edges crossed\n"
+            << " on the mesh, " << EdgeCrossings(profile).size() << " triangle edges crossed\n"
             << std::setprecision(3);
   for (const ProfileCurve& c : profile.Curves)
   {
@@ -215,6 +209,7 @@ int RunProfile(const ProfileOptions& o, const std::string& commandLine)
   PrintSummary(profile);
 
   int status = 0;
+  std::optional<ChartImage> chart; // drawn once, for the first image asked for
   for (const std::string& output : o.Outputs)
   {
     std::string error;
@@ -224,17 +219,20 @@ int RunProfile(const ProfileOptions& o, const std::string& commandLine)
     }
     else
     {
-      const ChartImage chart = DrawProfileChart(profile, reference.Picture,
-        "shadelab profile: " + std::filesystem::path(o.Scene.Mesh).filename().string() + ", " +
-          o.Modes + " along " + o.Line);
-      error = chart.Error;
+      if (!chart)
+      {
+        chart = DrawProfileChart(profile, reference.Picture,
+          "shadelab profile: " + std::filesystem::path(o.Scene.Mesh).filename().string() + ", " +
+            o.Modes + " along " + o.Line);
+      }
+      error = chart->Error;
       if (error.empty())
       {
         if (!writer)
         {
           writer = std::make_unique<ImageWriterProcess>();
         }
-        error = writer->Write(output, chart.Image, PixelType::UInt8,
+        error = writer->Write(output, chart->Image, PixelType::UInt8,
           { { "ImageDescription", "shadelab profile: " + commandLine } });
       }
     }

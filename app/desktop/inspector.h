@@ -238,6 +238,8 @@ private:
   // (the generated ones drew instead), their errors on stderr when they
   // change and the first in the HUD, which shows it from the next frame.
   void ReportStageErrors();
+  // The first panel's scene whose stages of one's own the driver refused, or null.
+  const BuiltScene* RefusingScene() const;
   vtkActor* GlyphsOf(Slot& slot, vtkPolyData* mesh);
   vtkActor* EdgesOf(Slot& slot, vtkPolyData* mesh);
 

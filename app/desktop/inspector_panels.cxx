@@ -75,20 +75,24 @@ void Inspector::Apply()
   this->UpdateHud();
 }
 
-void Inspector::ReportStageErrors()
+const BuiltScene* Inspector::RefusingScene() const
 {
-  std::vector<InputProblem> problems;
-  for (Slot& slot : this->Slots)
+  for (const Slot& slot : this->Slots)
   {
-    if (const BuiltScene* shown = slot.Scenes.GetShown())
+    if (const BuiltScene* shown = slot.Scenes.GetShown();
+        shown && !LocateStageErrors(*shown).empty())
     {
-      problems = StageErrorLines(this->StageNames(), *shown);
-    }
-    if (!problems.empty())
-    {
-      break;
+      return shown;
     }
   }
+  return nullptr;
+}
+
+void Inspector::ReportStageErrors()
+{
+  const BuiltScene* refusing = this->RefusingScene();
+  const std::vector<InputProblem> problems =
+    refusing ? StageErrorLines(this->StageNames(), *refusing) : std::vector<InputProblem>{};
   if (problems != this->StageProblems && !problems.empty())
   {
     ReportErrors(problems);

@@ -37,18 +37,13 @@ std::vector<StageErrorLine> Inspector::ApplyStages(const OwnStages& edits)
     next.Stages.Fragment = edits.Fragment;
   }
   this->SetState(next); // drawn: the program is built and checked
-  std::vector<StageErrorLine> errors;
-  for (const Slot& slot : this->Slots)
+  const BuiltScene* refusing = this->RefusingScene();
+  if (!refusing)
   {
-    if (const BuiltScene* shown = slot.Scenes.GetShown(); shown && errors.empty())
-    {
-      errors = LocateStageErrors(*shown);
-    }
+    return {};
   }
-  if (!errors.empty())
-  {
-    this->SetState(before);
-  }
+  std::vector<StageErrorLine> errors = LocateStageErrors(*refusing);
+  this->SetState(before);
   return errors;
 }
 

@@ -7,6 +7,7 @@
 #include "desktop/probe_panel.h"
 #include "desktop/shader_panel.h"
 #include "desktop/x_display.h"
+#include "image/metadata.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -161,9 +162,14 @@ void InspectorWindow::RunProfile(Pixel from, Pixel to)
   // run alone, finds shadelab beside it.
   const char* given = std::getenv("SHADELAB_EXECUTABLE");
   const QString program = given ? given : QString::fromStdString(SiblingExecutable("shadelab"));
-  QStringList shown{ "shadelab" };
-  shown << arguments.mid(0, arguments.size() - 3);
-  const QString command = shown.join(' ');
+  // What a user runs again headless: quoted for a shell, as Copy command's.
+  std::vector<const char*> shown{ "shadelab" };
+  for (const std::string& word : words)
+  {
+    shown.push_back(word.c_str());
+  }
+  const QString command =
+    QString::fromStdString(QuoteCommandLine(static_cast<int>(shown.size()), shown.data()));
   std::cout << "shadelab: profile command: " << command.toStdString() << std::endl;
   this->ProfileChart->setText("Profiling...\n" + command);
   this->ProfileDock->raise();

@@ -28,6 +28,20 @@ double Luminance(const Rgb& c)
   return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
 }
 
+std::vector<std::size_t> EdgeCrossings(const LineProfile& profile)
+{
+  const std::vector<vtkIdType>& t = profile.Triangles;
+  std::vector<std::size_t> crossings;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i)
+  {
+    if (t[i] >= 0 && t[i + 1] >= 0 && t[i] != t[i + 1])
+    {
+      crossings.push_back(i);
+    }
+  }
+  return crossings;
+}
+
 ProfileCurve MakeCurve(
   const std::string& label, std::vector<Rgb> values, const std::vector<vtkIdType>& triangles)
 {

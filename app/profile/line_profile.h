@@ -50,6 +50,9 @@ struct LineProfile
   ProfileCurve Oracle;               // the double-precision oracle's phong
 };
 
+/** The samples i whose triangle differs from sample i + 1's, both on the mesh: an edge between. */
+std::vector<std::size_t> EdgeCrossings(const LineProfile& profile);
+
 /** label's curve read from picture at the profile's samples, with its differences. */
 ProfileCurve ReadCurve(
   const std::string& label, const FloatImage& picture, const LineProfile& profile);

@@ -274,13 +274,9 @@ ChartImage DrawProfileChart(const LineProfile& profile, const FloatImage& pictur
     scene->AddItem(chart);
     marks->Charts.push_back(chart);
   }
-  for (std::size_t i = 0; i + 1 < profile.Triangles.size(); ++i)
+  for (std::size_t i : EdgeCrossings(profile))
   {
-    if (profile.Triangles[i] >= 0 && profile.Triangles[i + 1] >= 0 &&
-      profile.Triangles[i] != profile.Triangles[i + 1])
-    {
-      marks->Edges.push_back(static_cast<double>(i) + 0.5);
-    }
+    marks->Edges.push_back(static_cast<double>(i) + 0.5);
   }
   auto inset = vtkSmartPointer<vtkImageItem>::New();
   vtkSmartPointer<vtkImageData> image = Inset(picture, profile, room);

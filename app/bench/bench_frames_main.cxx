@@ -292,7 +292,7 @@ int main(int argc, char** argv)
     // One actor but with --parts, where only ours run.
     const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr,
       SceneImages{
-        checker, {} }).Drawn.front();
+        checker, {}, {} }).Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

@@ -150,6 +150,10 @@ struct SceneOptions
   std::string Texture;
   TextureWrap TextureWrapping = TextureWrap::Repeat;
   TextureFilter TextureFiltering = TextureFilter::Bilinear;
+  // --environment: an equirectangular image of the surroundings, which the
+  // surface reflects as ks * E(R) (shadelabEnvironment.h), looked up with
+  // TextureFiltering; its up is Up.
+  std::string Environment;
   // How the shaders write the specular term: stable, or the lecture's expressions as written.
   SpecularForm Form = SpecularForm::Stable;
   // --vertex-shader, --fragment-shader: files of complete GLSL that replace

@@ -28,6 +28,11 @@ std::pair<std::string, std::string> RayTraceProblem(const SceneOptions& options)
   {
     return refused("--normal-glyphs");
   }
+  if (!options.Environment.empty())
+  {
+    return { options.Environment,
+      "--shading raytrace reflects the mesh by its rays, not an environment map" };
+  }
   for (const std::string* stage : { &options.VertexShader, &options.FragmentShader })
   {
     if (!stage->empty())

@@ -76,6 +76,12 @@ void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
     lights.push_back(LightJson(p, l, t.Lights[l]));
   }
   j["lights"] = lights;
+  if (t.Environment)
+  {
+    const EnvironmentTerm& e = *t.Environment;
+    j["environment"] = { { "R", e.R }, { "direction", e.Direction }, { "texcoord", e.TexCoord },
+      { "texel", e.Texel }, { "term", e.Term } };
+  }
 }
 
 ordered_json VertexJson(const PixelProbe& p, int k)

@@ -222,6 +222,18 @@ void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
   {
     AddLight(out, indent, p, l, t.Lights[l]);
   }
+  if (t.Environment)
+  {
+    const EnvironmentTerm& e = *t.Environment;
+    out.Add(indent, "environment");
+    const std::string in = indent + "  ";
+    out.Add(in, "R = " + ProbeTriple(e.R), "2(N.V)N - V, what the mirror direction sees");
+    out.Add(in, "direction = " + ProbeTriple(e.Direction), "R in the environment's frame, y up");
+    out.Add(in, "(s, t) = (" + ProbeNumber(e.TexCoord[0]) + ", " + ProbeNumber(e.TexCoord[1]) + ")",
+      "(0.5 + atan2(x, -z)/2pi, 0.5 + asin(y)/pi)");
+    out.Add(in, "E(R) = " + ProbeTriple(e.Texel), "the environment's texel there");
+    out.Add(in, "ks*E(R) = " + ProbeTriple(e.Term), "environment");
+  }
 }
 
 std::string Point(vtkIdType id)
@@ -312,7 +324,8 @@ std::string ProbeText(const PixelProbe& p)
   out.Add("", "weights = " + ProbeTriple(p.Fragment.Weights),
     "barycentric, perspective-correct, of the triangle's vertices");
   const IlluminationTerms& t = p.Shaded.Terms;
-  std::string oracle = "I = ka*Ia + sum of the lights' terms";
+  std::string oracle =
+    std::string("I = ka*Ia + sum of the lights' terms") + (t.Environment ? " + ks*E(R)" : "");
   switch (p.Rule)
   {
     case Shading::None:

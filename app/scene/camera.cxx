@@ -37,18 +37,11 @@ double Distance(const double a[3], const double b[3])
 {
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
 }
+}
 
-// The right-handed frame of an up axis: Up, Front (from the focal point
-// towards a camera that sees the front: +Z for up +Y, -Y for up +Z) and
-// Right = Up x Front, which is +X for every up axis but the X ones.
-struct Frame
+UpFrame FrameOf(UpAxis axis)
 {
-  Vec3 Up, Front, Right;
-};
-
-Frame FrameOf(UpAxis axis)
-{
-  Frame f;
+  UpFrame f;
   switch (axis)
   {
     case UpAxis::PlusX:
@@ -74,6 +67,9 @@ Frame FrameOf(UpAxis axis)
   return f;
 }
 
+namespace
+{
+
 Vec3 Scaled(const Vec3& v, double s)
 {
   return { s * v[0], s * v[1], s * v[2] };
@@ -82,7 +78,7 @@ Vec3 Scaled(const Vec3& v, double s)
 // Where a fitted camera sits, as a unit direction from the focal point, and
 // its view-up: --view about the frame. From above the front is at the bottom
 // of the picture, from below at the top.
-void Preset(ViewPreset view, const Frame& f, Vec3& eye, Vec3& up)
+void Preset(ViewPreset view, const UpFrame& f, Vec3& eye, Vec3& up)
 {
   up = f.Up;
   switch (view)
@@ -163,7 +159,7 @@ std::string ApplyCamera(const SceneOptions& o, vtkPoints* points, double aspect,
   const double halfAngle = vtkMath::RadiansFromDegrees(o.ViewAngle) / 2;
   const double narrowHalfAngle = aspect >= 1 ? halfAngle : std::atan(std::tan(halfAngle) * aspect);
 
-  const Frame frame = FrameOf(o.Up);
+  const UpFrame frame = FrameOf(o.Up);
   Vec3 eye, presetUp;
   Preset(o.View, frame, eye, presetUp);
   double position[3] = { 0, 0, 0 };

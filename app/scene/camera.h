@@ -27,6 +27,18 @@ std::string ApplyCamera(
  */
 SceneOptions OrbitFrame(const SceneOptions& options, int k);
 
+/**
+ * The right-handed frame of an up axis: Up, Front (from the focal point
+ * towards a camera that sees the front: +Z for up +Y, -Y for up +Z) and
+ * Right = Up x Front, which is +X for every up axis but the X ones. A fitted
+ * camera's and the environment's (Right, Up, Front its x, y, z).
+ */
+struct UpFrame
+{
+  Vec3 Up, Front, Right;
+};
+UpFrame FrameOf(UpAxis axis);
+
 /** The conventions above, for --help. */
 extern const char* const CameraHelp;
 }

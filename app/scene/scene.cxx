@@ -178,6 +178,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
       parts[drawn.Parts.front()].Surface, options.Ambient, resolved);
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
+    drawn.Shading->SetEnvironment(SceneEnvironment(options, images));
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
     drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);

@@ -46,6 +46,17 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
     }
     images.Option = image.Image;
   }
+  if (!options.Environment.empty())
+  {
+    const LoadedTexture& image = this->Meshes->GetTexture(options.Environment);
+    if (!image.Image)
+    {
+      shown.Input = options.Environment;
+      shown.Error = image.Error;
+      return shown;
+    }
+    images.Environment = image.Image;
+  }
   // The images of the file's textures that its parts draw, each decoded once.
   const std::vector<Texture> textures = MeshTextures(loaded.Mesh);
   images.File.resize(textures.size());

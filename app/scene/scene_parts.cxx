@@ -1,5 +1,7 @@
 #include "scene/scene_parts.h"
 
+#include "scene/camera.h"
+
 #include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 
@@ -201,5 +203,27 @@ vtkSmartPointer<vtkPolyData> TrianglesOfParts(vtkPolyData* mesh, const std::vect
   result->GetPointData()->ShallowCopy(mesh->GetPointData());
   result->SetPolys(polys);
   return result;
+}
+
+std::optional<EnvironmentMap> SceneEnvironment(
+  const SceneOptions& options, const SceneImages& images)
+{
+  if (!images.Environment)
+  {
+    return std::nullopt;
+  }
+  EnvironmentMap e;
+  e.Map.Image = images.Environment;
+  e.Map.WrapS = TextureWrap::Repeat; // the longitude goes round
+  e.Map.WrapT = TextureWrap::Clamp;  // the latitude ends at the poles
+  e.Map.Filter = options.TextureFiltering;
+  const UpFrame axes = FrameOf(options.Up);
+  for (int j = 0; j < 3; ++j)
+  {
+    e.Frame[0][j] = axes.Right[j];
+    e.Frame[1][j] = axes.Up[j];
+    e.Frame[2][j] = axes.Front[j];
+  }
+  return e;
 }
 }

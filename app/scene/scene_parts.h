@@ -10,11 +10,13 @@
 #define shadelab_scene_parts_h
 
 #include "core/options.h"
+#include "shadelabEnvironment.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,7 +65,16 @@ struct SceneImages
 {
   std::shared_ptr<const TextureImage> Option;
   std::vector<std::shared_ptr<const TextureImage>> File;
+  std::shared_ptr<const TextureImage> Environment; // --environment's
 };
+
+/**
+ * --environment's map as the scene draws it, in world coordinates: its
+ * image, its longitude repeating and its latitude clamped, the textures'
+ * filter, and its frame --up's (FrameOf); none without one.
+ */
+std::optional<EnvironmentMap> SceneEnvironment(
+  const SceneOptions& options, const SceneImages& images);
 
 /**
  * mesh's parts as options draw them, by index: one for a mesh without parts

@@ -15,6 +15,7 @@ SceneSurface::SceneSurface(
   const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images)
   : Parts(SceneParts(options, mesh, images))
   , CellParts(PartOfCells(mesh))
+  , Environment(SceneEnvironment(options, images))
 {
   if (UsesVertexKd(options, mesh))
   {
@@ -79,6 +80,7 @@ IlluminationInputs SceneSurface::InputsOf(IlluminationInputs in, std::int64_t t)
   const ScenePart& part = this->PartOf(t);
   in.Surface = part.Surface;
   in.Texture = part.Texture;
+  in.Environment = this->Environment;
   return in;
 }
 }

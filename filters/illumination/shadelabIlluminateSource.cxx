@@ -131,6 +131,21 @@ const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
   }
 )glsl";
 
+// ShaderFeatures::Environment: E(R), the environment seen along R in view
+// coordinates (the oracle's EnvironmentAt, shadelabEnvironment.cxx); no
+// derivatives, so that a vertex stage and branches may look it up.
+const char* const EnvironmentSource = R"glsl(uniform sampler2D shadelabEnvironment;
+uniform mat3 shadelabEnvironmentFrame; // view coordinates to the environment's, its y up
+vec3 shadelabEnvironmentAt(vec3 R)
+{
+  vec3 d = shadelabEnvironmentFrame * R;
+  float len = length(d);
+  float y = len > 0.0 ? clamp(d.y / len, -1.0, 1.0) : 0.0;
+  vec2 st = vec2(0.5 + atan(d.x, -d.z) * 0.15915494309189535, 0.5 + asin(y) * 0.3183098861837907);
+  return textureLod(shadelabEnvironment, st, 0.0).rgb; // shadelab: environment
+}
+)glsl";
+
 // The material's uniforms: ks and ns only where there is specular code; kd
 // per vertex is a variable that the stage sets before lighting, and so are
 // kd and ka where this stage multiplies them by a texel (phong's), each
@@ -270,6 +285,10 @@ std::string DeclarationsSource(const ShaderFeatures& f)
     {
       s += FaceSlopeSource;
     }
+  }
+  if (f.Reflects())
+  {
+    s += EnvironmentSource;
   }
   for (std::size_t i = 0; i < f.Shadows.size(); ++i)
   {
@@ -420,9 +439,12 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   std::string s = apart ? std::string(IlluminateApartHeadSource)
                         : "\n// I = ka*Ia + sum_l Il*[kd*max(N.L, 0) + S_l], N unit.\n" +
       std::string(IlluminateHeadSource);
-  if (!f.Lights.empty())
+  if (!f.Lights.empty() || f.Reflects())
   {
     s += ViewDirectionSource;
+  }
+  if (!f.Lights.empty())
+  {
     s += R"glsl(  vec3 L;
   vec3 Il;
   float NdotL;
@@ -443,6 +465,12 @@ std::string IlluminateFunctionSource(const ShaderFeatures& f, bool apart)
   {
     s += LightTermSource(i, f.Lights[i], specular, f.Attenuation,
       i < f.Shadows.size() && f.Shadows[i], f.SlopesByFace(), apart);
+  }
+  if (f.Reflects())
+  {
+    s += std::string("  ") + (apart ? "S" : "I") +
+      " += shadelabKs * shadelabEnvironmentAt((2.0 * dot(N, V)) * N - V); // shadelab: "
+      "environment\n";
   }
   return s + (apart ? "}\n" : R"glsl(  return I;
 }

@@ -14,6 +14,8 @@ const char* const TermMarker = "// shadelab: ";
 const char* const ShadowMapSamplerName = "shadelabShadowMap";
 const char* const ShadowFrameName = "shadelabShadowFrame";
 const char* const ShadowBiasName = "shadelabShadowBias";
+const char* const EnvironmentSamplerName = "shadelabEnvironment";
+const char* const EnvironmentFrameName = "shadelabEnvironmentFrame";
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
@@ -23,7 +25,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines &&
-    this->Shadows == o.Shadows && this->Form == o.Form;
+    this->Shadows == o.Shadows && this->Form == o.Form && this->Environment == o.Environment;
 }
 
 namespace

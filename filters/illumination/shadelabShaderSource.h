@@ -84,6 +84,10 @@ struct ShaderFeatures
   // rule lights (per fragment, per vertex, at the provoking vertex). Point
   // and spot lights read a cube map, directional ones an orthographic map.
   std::vector<bool> Shadows;
+  // An environment map (EnvironmentSamplerName, EnvironmentFrameName):
+  // the equation adds ks * E(R) where the rule lights (shadelabEnvironment.h),
+  // only with Specular (ks zero reflects nothing) and a rule that lights.
+  bool Environment = false;
 
   bool Textured() const
   {
@@ -106,6 +110,11 @@ struct ShaderFeatures
   {
     return this->Rule == Shading::Phong && this->Drawn == Representation::Surface &&
       this->CastsShadows();
+  }
+  /** The environment's term is compiled in. */
+  bool Reflects() const
+  {
+    return this->Environment && this->Specular && !this->AllFeatures && this->Rule != Shading::None;
   }
   /** A light casts shadows. */
   bool CastsShadows() const
@@ -144,6 +153,12 @@ extern const char* const TextureSamplerName;
 extern const char* const ShadowMapSamplerName;
 extern const char* const ShadowFrameName;
 extern const char* const ShadowBiasName;
+/**
+ * The environment's sampler (equirectangular) and the rotation from view
+ * coordinates to its frame (ShaderFeatures::Environment).
+ */
+extern const char* const EnvironmentSamplerName;
+extern const char* const EnvironmentFrameName;
 /**
  * The comment that ends each generated line computing a term of the
  * equation, followed by the terms' names, comma-separated ("ambient",

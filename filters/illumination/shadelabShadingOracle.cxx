@@ -165,6 +165,10 @@ Rgb IlluminationTerms::Total() const
   {
     I = I + (light.DiffuseTerm + light.SpecularTerm);
   }
+  if (this->Environment)
+  {
+    I = I + this->Environment->Term;
+  }
   return I;
 }
 
@@ -184,6 +188,11 @@ IlluminationTerms IlluminateTerms(const IlluminationInputs& in, const Vec3& P, c
   for (std::size_t l = 0; l < in.Lights.size(); ++l)
   {
     terms.Lights.push_back(LightTermsAt(in, l, P, N, terms.V));
+  }
+  // N = 0 lights as ambient only (ShadeVertex): nothing is reflected.
+  if (in.Environment && length(N) > 0)
+  {
+    terms.Environment = EnvironmentAt(*in.Environment, N, terms.V, in.Surface.Ks);
   }
   return terms;
 }

@@ -9,11 +9,13 @@
 #ifndef shadelabShadingOracle_h
 #define shadelabShadingOracle_h
 
+#include "shadelabEnvironment.h"
 #include "shadelabIllumination.h"
 #include "shadelabTexture.h"
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace shadelab
@@ -38,6 +40,9 @@ struct IlluminationInputs
   // kd and/or ka times a texel, looked up per fragment under every rule
   // (ShadeTriangleFragment): Surface's are the factors.
   SurfaceTexture Texture;
+  // Environment reflections: ks * E(R) added where the rule lights, its
+  // Frame from the computation's frame (shadelabEnvironment.h).
+  std::optional<EnvironmentMap> Environment;
   Rgb Ambient{}; // Ia
   std::vector<FrameLight> Lights;
   Reflection Model = Reflection::BlinnPhong;
@@ -101,8 +106,10 @@ struct IlluminationTerms
   Vec3 V{};                       // unit, towards the viewer
   Rgb Ambient{};                  // ka*Ia
   std::vector<LightTerms> Lights; // in the order of IlluminationInputs::Lights
+  // With an environment, where N is a normal (not 0): ks * E(R).
+  std::optional<EnvironmentTerm> Environment;
 
-  /** I = ka*Ia + sum_l (diffuse_l + specular_l). */
+  /** I = ka*Ia + sum_l (diffuse_l + specular_l) + ks*E(R). */
   Rgb Total() const;
 };
 

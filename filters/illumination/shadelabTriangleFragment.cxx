@@ -33,6 +33,10 @@ void MultiplyByTexel(
       light.SpecularTerm = light.SpecularTerm * ks;
     }
   }
+  if (texture.Ks && terms.Environment)
+  {
+    terms.Environment->Term = terms.Environment->Term * ks;
+  }
 }
 }
 
@@ -63,6 +67,20 @@ IlluminationTerms MixTerms(
     m.Base = Mix<double>(w, [&](int k) { return light(k).Base; });
     m.Power = Mix<double>(w, [&](int k) { return light(k).Power; });
     mixed.Lights.push_back(m);
+  }
+  // The environment's term where any vertex has one (0 at a vertex with no
+  // normal, which lights ambient only).
+  if (t[0].Environment || t[1].Environment || t[2].Environment)
+  {
+    const auto reflected = [&](int k) { return t[k].Environment.value_or(EnvironmentTerm{}); };
+    EnvironmentTerm e;
+    e.R = Mix<Vec3>(w, [&](int k) { return reflected(k).R; });
+    e.Direction = Mix<Vec3>(w, [&](int k) { return reflected(k).Direction; });
+    e.TexCoord = { Mix<double>(w, [&](int k) { return reflected(k).TexCoord[0]; }),
+      Mix<double>(w, [&](int k) { return reflected(k).TexCoord[1]; }) };
+    e.Texel = Mix<Rgb>(w, [&](int k) { return reflected(k).Texel; });
+    e.Term = Mix<Rgb>(w, [&](int k) { return reflected(k).Term; });
+    mixed.Environment = e;
   }
   return mixed;
 }

@@ -66,7 +66,10 @@ struct ShadedFragment
  * likewise: phong lights with the texel's ks (SurfaceTexture::TexelKs),
  * flat and gouraud light with ks = 1 and multiply the specular terms by
  * it. The equation is linear in kd, ka and ks, so that is the equation with kd and ka textured
- * where the rule evaluates it, the texture itself seen per fragment.
+ * where the rule evaluates it, the texture itself seen per fragment. An
+ * environment's ks*E(R) goes with the specular terms: E(R) where the rule
+ * lights (gouraud's mixed from its vertices, flat's at the provoking
+ * vertex), times the ks that lights.
  */
 ShadedFragment ShadeTriangleFragment(
   const IlluminationInputs& in, Shading rule, const TriangleFragment& f);

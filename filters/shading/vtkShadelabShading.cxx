@@ -205,6 +205,13 @@ void vtkShadelabShading::SetTexture(const SurfaceTexture& texture)
   this->Modified();
 }
 
+void vtkShadelabShading::SetEnvironment(const std::optional<EnvironmentMap>& environment)
+{
+  this->Environment = environment;
+  this->Features.Environment = environment.has_value();
+  this->Modified();
+}
+
 void vtkShadelabShading::SetFog(const Fog& fog, const std::optional<Rgb>& background)
 {
   this->Features.Fog = fog.Mode;
@@ -310,6 +317,12 @@ void vtkShadelabShading::Attach(
   {
     this->TextureObject = previous->TextureObject;
   }
+  if (previous && previous->EnvironmentObject && this->Environment && previous->Environment &&
+    previous->Environment->Map.Image == this->Environment->Map.Image &&
+    previous->EnvironmentObject->GetContext() == renderer->GetRenderWindow())
+  {
+    this->EnvironmentObject = previous->EnvironmentObject;
+  }
   if (previous && previous->Actor == actor)
   {
     // The actor's uniforms are this shading's now; other observers of the
@@ -408,6 +421,10 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
         "shadelabLightAttenuation", n, reinterpret_cast<Triple>(attenuations.data()));
     }
   }
+  if (this->Features.Reflects())
+  {
+    this->BindEnvironment(program, rotation);
+  }
   if (!this->Features.Shadows.empty())
   {
     this->BindShadowMaps(program, view);
@@ -465,4 +482,5 @@ void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KdTexture: " << this->Features.KdTexture << "\n";
   os << indent << "KaTexture: " << this->Features.KaTexture << "\n";
   os << indent << "KsTexture: " << this->Features.KsTexture << "\n";
+  os << indent << "Environment: " << this->Features.Environment << "\n";
 }

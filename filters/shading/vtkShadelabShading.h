@@ -23,6 +23,7 @@
 #include "shadelabShadingOracle.h"
 
 #include <memory>
+#include <optional>
 
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
@@ -74,6 +75,13 @@ public:
    * to OpenGL as a float texture with the map's wrap and filter, once per image and render window.
    */
   void SetTexture(const shadelab::SurfaceTexture& texture);
+
+  /**
+   * Environment reflections (ShaderFeatures::Environment): ks * E(R) added
+   * where the rule lights; the map's Frame takes world coordinates to the
+   * environment's. None (the default): the code has none. Not wrapped.
+   */
+  VTK_WRAPEXCLUDE void SetEnvironment(const std::optional<shadelab::EnvironmentMap>& environment);
 
   ///@{
   /**
@@ -173,6 +181,7 @@ private:
 
   void SetUniforms(vtkShaderProgram* program);
   void BindTexture(vtkShaderProgram* program);
+  void BindEnvironment(vtkShaderProgram* program, const double viewRotation[3][3]);
   void BindFaceNormals(vtkShaderProgram* program);
   void AddLight(const shadelab::Light& light);
   void BindShadowMaps(vtkShaderProgram* program, vtkMatrix4x4* view);
@@ -192,6 +201,9 @@ private:
   // Texture.Map in OpenGL, made at the first draw; a shading that takes over
   // an actor takes this over too when its image and window are the same.
   vtkSmartPointer<vtkTextureObject> TextureObject;
+  std::optional<shadelab::EnvironmentMap> Environment;
+  // Environment->Map in OpenGL, made and taken over as TextureObject is.
+  vtkSmartPointer<vtkTextureObject> EnvironmentObject;
   // Flat's face normals in OpenGL, made at the first draw of
   // FaceNormalsMesh (not owned) for its window.
   shadelab::FaceNormalTexture FaceNormals;

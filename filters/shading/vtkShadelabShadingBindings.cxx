@@ -1,5 +1,5 @@
 // vtkShadelabShading's OpenGL resources bound for a draw: the texture, the
-// face normals and the shadow maps, each made (or remade) for the window
+// environment, the face normals and the shadow maps, each made (or remade) for the window
 // that draws and kept active, its unit reserved, while the shading draws.
 #include "vtkShadelabShading.h"
 
@@ -7,6 +7,7 @@
 #include "shadelabTriangleMesh.h"
 
 #include <vtkActor.h>
+#include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPolyData.h>
@@ -106,28 +107,59 @@ void vtkShadelabShading::BindFaceNormals(vtkShaderProgram* program)
   program->SetUniformi(FaceNormalSamplerName, this->FaceNormals.Texture->GetTextureUnit());
 }
 
-void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
+namespace
 {
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow());
-  const TextureMap& map = this->Texture.Map;
-  if (!this->TextureObject || this->TextureObject->GetContext() != window)
+// map in OpenGL as `object` (made for window where it is not yet), its
+// sampler's settings sent at every draw (an object taken over from the
+// shading before, the same image, may have had others), kept active (its
+// unit reserved) while the shading draws, and named to the program's `sampler`.
+void BindMap(vtkShaderProgram* program, vtkOpenGLRenderWindow* window, const TextureMap& map,
+  vtkSmartPointer<vtkTextureObject>& object, const char* sampler)
+{
+  if (!object || object->GetContext() != window)
   {
-    this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
-    this->TextureObject->SetContext(window);
+    object = vtkSmartPointer<vtkTextureObject>::New();
+    object->SetContext(window);
     // 32-bit float texels: the decoded image as it is, no 8-bit rounding.
-    this->TextureObject->SetInternalFormat(GL_RGB32F);
-    this->TextureObject->Create2DFromRaw(map.Image->Width, map.Image->Height, 3, VTK_FLOAT,
+    object->SetInternalFormat(GL_RGB32F);
+    object->Create2DFromRaw(map.Image->Width, map.Image->Height, 3, VTK_FLOAT,
       const_cast<float*>(map.Image->Pixels.data()));
   }
-  // The sampler's settings at every draw: a texture taken over from the
-  // shading before (the same image) may have had others. The object sends
-  // them to OpenGL when they changed.
   const int filter = FilterMode(map.Filter);
-  this->TextureObject->SetWrapS(WrapMode(map.WrapS));
-  this->TextureObject->SetWrapT(WrapMode(map.WrapT));
-  this->TextureObject->SetMinificationFilter(filter);
-  this->TextureObject->SetMagnificationFilter(filter);
-  // Kept active (its unit reserved) while the shading draws.
-  this->TextureObject->Activate();
-  program->SetUniformi(TextureSamplerName, this->TextureObject->GetTextureUnit());
+  object->SetWrapS(WrapMode(map.WrapS));
+  object->SetWrapT(WrapMode(map.WrapT));
+  object->SetMinificationFilter(filter);
+  object->SetMagnificationFilter(filter);
+  object->Activate();
+  program->SetUniformi(sampler, object->GetTextureUnit());
+}
+}
+
+void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
+{
+  BindMap(program, vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow()),
+    this->Texture.Map, this->TextureObject, TextureSamplerName);
+}
+
+void vtkShadelabShading::BindEnvironment(vtkShaderProgram* program, const double viewRotation[3][3])
+{
+  BindMap(program, vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow()),
+    this->Environment->Map, this->EnvironmentObject, EnvironmentSamplerName);
+  // View coordinates to the environment's: its Frame (from the world's)
+  // times the view's rotation transposed (view to world). GLSL receives
+  // the transpose of what SetUniformMatrix is given: it is given that.
+  auto frame = vtkSmartPointer<vtkMatrix3x3>::New();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double e = 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        e += this->Environment->Frame[i][k] * viewRotation[j][k];
+      }
+      frame->SetElement(j, i, e);
+    }
+  }
+  program->SetUniformMatrix(EnvironmentFrameName, frame);
 }

@@ -1,0 +1,35 @@
+#include "shadelabEnvironment.h"
+
+#include "shadelabVec3.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+}
+
+std::array<double, 2> EnvironmentTexCoord(const Vec3& d)
+{
+  const double len = length(d);
+  const double y = len > 0 ? std::clamp(d[1] / len, -1.0, 1.0) : 0.0;
+  return { 0.5 + std::atan2(d[0], -d[2]) / (2 * Pi), 0.5 + std::asin(y) / Pi };
+}
+
+EnvironmentTerm EnvironmentAt(const EnvironmentMap& e, const Vec3& N, const Vec3& V, const Rgb& ks)
+{
+  EnvironmentTerm t;
+  t.R = (2 * dot(N, V)) * N - V;
+  const auto& f = e.Frame;
+  t.Direction = { f[0][0] * t.R[0] + f[0][1] * t.R[1] + f[0][2] * t.R[2],
+    f[1][0] * t.R[0] + f[1][1] * t.R[1] + f[1][2] * t.R[2],
+    f[2][0] * t.R[0] + f[2][1] * t.R[1] + f[2][2] * t.R[2] };
+  t.TexCoord = EnvironmentTexCoord(t.Direction);
+  t.Texel = SampleTexture(e.Map, t.TexCoord[0], t.TexCoord[1]);
+  t.Term = ks * t.Texel;
+  return t;
+}
+}

@@ -2,7 +2,6 @@
 
 #include "shadelabVec3.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace shadelab
@@ -14,9 +13,8 @@ constexpr double Pi = 3.14159265358979323846;
 
 std::array<double, 2> EnvironmentTexCoord(const Vec3& d)
 {
-  const double len = length(d);
-  const double y = len > 0 ? std::clamp(d[1] / len, -1.0, 1.0) : 0.0;
-  return { 0.5 + std::atan2(d[0], -d[2]) / (2 * Pi), 0.5 + std::asin(y) / Pi };
+  return { 0.5 + std::atan2(d[0], -d[2]) / (2 * Pi),
+    0.5 + std::atan2(d[1], std::hypot(d[0], d[2])) / Pi };
 }
 
 EnvironmentTerm EnvironmentAt(const EnvironmentMap& e, const Vec3& N, const Vec3& V, const Rgb& ks)

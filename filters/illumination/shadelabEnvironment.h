@@ -37,7 +37,9 @@ struct EnvironmentTerm
 
 /**
  * (s, t) of direction d (any length) in the environment's frame:
- * s = 0.5 + atan2(d.x, -d.z) / 2pi, t = 0.5 + asin(d.y / |d|) / pi.
+ * s = 0.5 + atan2(d.x, -d.z) / 2pi, t = 0.5 + asin(d.y / |d|) / pi, the
+ * latitude taken as atan2(d.y, |(d.x, d.z)|), which keeps its precision
+ * near the poles.
  */
 std::array<double, 2> EnvironmentTexCoord(const Vec3& d);
 

@@ -206,6 +206,67 @@ inline shadelab::TextureImage ExpectedTexture()
   return image;
 }
 
+// The test's environments (--environment), 8-bit RGB, top row first:
+// Single one colour; Horizon its top row one colour and its bottom row
+// another, so that with the nearest texel the picture splits where R
+// crosses the horizon; Pattern 8 x 4 texels, no two alike, so that a
+// flipped, turned or shifted lookup shows.
+enum class EnvironmentKind
+{
+  None,
+  Single,
+  Horizon,
+  Pattern
+};
+
+struct EnvironmentImage
+{
+  int Width = 0, Height = 0;
+  std::vector<unsigned char> Bytes;
+
+  // What the program should make of it, as ExpectedTexture.
+  shadelab::TextureImage Decoded() const
+  {
+    shadelab::TextureImage image;
+    image.Width = this->Width;
+    image.Height = this->Height;
+    for (int row = this->Height - 1; row >= 0; --row)
+    {
+      for (int i = 0; i < 3 * this->Width; ++i)
+      {
+        image.Pixels.push_back(static_cast<float>(this->Bytes[3 * this->Width * row + i] / 255.0));
+      }
+    }
+    return image;
+  }
+};
+
+constexpr unsigned char SingleEnvironment[3] = { 51, 153, 102 };
+constexpr unsigned char Sky[3] = { 200, 180, 40 }, Ground[3] = { 20, 60, 220 };
+
+inline EnvironmentImage EnvironmentOf(EnvironmentKind kind)
+{
+  EnvironmentImage e;
+  e.Width = kind == EnvironmentKind::Pattern ? 8 : 4;
+  e.Height = kind == EnvironmentKind::Pattern ? 4 : 2;
+  for (int row = 0; row < e.Height; ++row)
+  {
+    for (int column = 0; column < e.Width; ++column)
+    {
+      const unsigned char* c = kind == EnvironmentKind::Single ? SingleEnvironment
+        : row == 0                                             ? Sky
+                                                               : Ground;
+      for (int channel = 0; channel < 3; ++channel)
+      {
+        e.Bytes.push_back(kind == EnvironmentKind::Pattern
+            ? static_cast<unsigned char>((37 * column + 71 * row + 97 * channel) % 251)
+            : c[channel]);
+      }
+    }
+  }
+  return e;
+}
+
 // The vertex normal at (x, y), before rounding to float.
 inline Vec3 GridNormal(const GridSpec& g, double x, double y)
 {
@@ -572,6 +633,10 @@ struct Scene
   bool Textured = false;
   shadelab::TextureWrap Wrap = shadelab::TextureWrap::Repeat;
   shadelab::TextureFilter Filter = shadelab::TextureFilter::Bilinear;
+  // --environment: EnvironmentOf(Environment) as an 8-bit PNG, looked up
+  // with Filter; ZUp gives --up +Z, the environment's y the world's z.
+  EnvironmentKind Environment = EnvironmentKind::None;
+  bool ZUp = false;
   // --shadows, --shadow-map-size: the oracle casts shadow rays.
   bool Shadows = false;
   int ShadowMapSize = 2048;
@@ -883,6 +948,21 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
           ToString(s.Filter) });
     }
   }
+  if (s.Environment != EnvironmentKind::None)
+  {
+    const auto environment = dir / "environment.png";
+    const EnvironmentImage e = EnvironmentOf(s.Environment);
+    WriteImage8(environment, e.Width, e.Height, e.Bytes);
+    args.insert(args.end(), { "--environment", environment.string() });
+    if (!off)
+    {
+      args.insert(args.end(), { "--texture-filter", ToString(s.Filter) });
+    }
+    if (s.ZUp)
+    {
+      args.insert(args.end(), { "--up", "+Z" });
+    }
+  }
   for (const Light& l : WorldLights(s))
   {
     args.push_back("--light");
@@ -1012,6 +1092,21 @@ public:
       t.Map.WrapS = t.Map.WrapT = s.Wrap;
       t.Map.Filter = s.Filter;
       t.Kd = t.Ka = true;
+    }
+    if (s.Environment != EnvironmentKind::None)
+    {
+      // The environment's frame, stated here on its own: x right, y up, z
+      // towards the front view's camera (+Z; -Y for up +Z).
+      shadelab::EnvironmentMap& e = this->In.Environment.emplace();
+      e.Map.Image = std::make_shared<shadelab::TextureImage>(EnvironmentOf(s.Environment).Decoded());
+      e.Map.WrapS = shadelab::TextureWrap::Repeat;
+      e.Map.WrapT = shadelab::TextureWrap::Clamp;
+      e.Map.Filter = s.Filter;
+      if (s.ZUp)
+      {
+        const double zUp[3][3] = { { 1, 0, 0 }, { 0, 0, 1 }, { 0, -1, 0 } };
+        std::copy(&zUp[0][0], &zUp[0][0] + 9, &e.Frame[0][0]);
+      }
     }
   }
 
@@ -1167,6 +1262,13 @@ private:
     {
       on.push_back(static_cast<long long>(std::floor(at.TexCoord[0] * TextureSide)));
       on.push_back(static_cast<long long>(std::floor(at.TexCoord[1] * TextureSide)));
+    }
+    if (at.Terms.Environment && this->S.Filter == shadelab::TextureFilter::Nearest)
+    {
+      const shadelab::TextureImage& image = *this->In.Environment->Map.Image;
+      on.push_back(static_cast<long long>(
+        std::floor(at.Terms.Environment->TexCoord[0] * image.Width) + image.Width) % image.Width);
+      on.push_back(static_cast<long long>(std::floor(at.Terms.Environment->TexCoord[1] * image.Height)));
     }
     return on;
   }

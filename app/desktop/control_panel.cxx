@@ -257,6 +257,10 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   terms->addRow(this->Toggle("ambient  ka Ia", &ViewState::Ambient));
   terms->addRow(this->Toggle("diffuse  kd Il (N.L)", &ViewState::Diffuse));
   terms->addRow(this->Toggle("specular  ks Il (base)^ns", &ViewState::Specular));
+  if (!inspector.GetState().Scene.Environment.empty())
+  {
+    terms->addRow(this->Toggle("environment  ks E(R)", &ViewState::Reflected));
+  }
 
   QFormLayout* normals = group("Normals");
   if (inspector.HasFileNormals())

@@ -19,7 +19,8 @@ SceneOptions Inspector::ShownScene() const
 {
   const SceneOptions defaults;
   SceneOptions s = this->State.Scene;
-  ShowTerms(s, this->State.Ambient, this->State.Diffuse, this->State.Specular);
+  ShowTerms(
+    s, this->State.Ambient, this->State.Diffuse, this->State.Specular, this->State.Reflected);
   s.Edges = this->State.Edges;
   s.NormalGlyphs = this->State.Glyphs;
   // The lecture's default light at the camera is render's default too.

@@ -135,7 +135,7 @@ void Inspector::UpdateHud()
                                                                  : s.Computed.Weighting.c_str())
       << " | terms:" << (this->State.Ambient ? " ambient" : "")
       << (this->State.Diffuse ? " diffuse" : "") << (this->State.Specular ? " specular" : "")
-      << "\n";
+      << (!s.Environment.empty() && this->State.Reflected ? " environment" : "") << "\n";
   double mean = 0;
   for (double ms : this->FrameMs)
   {

@@ -42,6 +42,7 @@ const std::array<Mark, ShaderPanel::MarkCount>& Marks()
     { "fog", QColor(0xdc, 0xdc, 0xdc), "f*C+(1-f)*fog", true },
     { "translucency", QColor(0xff, 0xf5, 0xb4), "a*I+(1-a)*behind", true },
     { "shadow", QColor(0xd2, 0xe6, 0xe6), "d <= map + bias", true },
+    { "environment", QColor(0xe6, 0xf0, 0xc8), "ks*E(R)", true },
   } };
   return marks;
 }

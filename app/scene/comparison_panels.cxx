@@ -132,12 +132,16 @@ std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base)
   return panels;
 }
 
-void ShowTerms(SceneOptions& s, bool ambient, bool diffuse, bool specular)
+void ShowTerms(SceneOptions& s, bool ambient, bool diffuse, bool specular, bool environment)
 {
   constexpr Rgb Zero{ 0, 0, 0 };
   s.Ka = ambient ? s.Ka : Zero;
   s.Kd = diffuse ? s.Kd : Zero;
   s.Ks = specular ? s.Ks : Zero;
+  if (!environment)
+  {
+    s.Environment.clear();
+  }
 }
 
 std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels)

@@ -528,6 +528,33 @@ const BadCase Cases[] = {
       return WithMesh(d, "st.off", TexturedQuad, { "--texture-filter", "trilinear" });
     },
     2, { "--texture-filter", "trilinear" } },
+  // --environment: the image named with its problem (it needs no texture
+  // coordinates); the ray tracer, which reflects by its rays, refuses it.
+  { "EnvironmentMissing",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--environment", (d / "nope.png").string() });
+    },
+    1, { "nope.png", "No such file" } },
+  { "EnvironmentIsAFolder",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--environment", d.path().string() });
+    },
+    1, { "Is a directory" } },
+  { "EnvironmentUnreadable",
+    [](const TempDir& d)
+    {
+      WriteText(d / "text.png", "not a picture\n");
+      return WithMesh(d, "t.obj", Tetrahedron, { "--environment", (d / "text.png").string() });
+    },
+    1, { "text.png", "not an image OpenImageIO can read" } },
+  { "EnvironmentUnderRaytrace",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "sky.png", 1, 1, { 255, 128, 0 });
+      return WithMesh(d, "t.obj", Tetrahedron,
+        { "--shading", "raytrace", "--environment", (d / "sky.png").string() });
+    },
+    1, { "sky.png", "reflects the mesh by its rays" } },
   // Files that are no regular files: read forever (/dev/zero) or block in
   // open() (a FIFO) unless refused first.
   { "MeshIsALinkToDevZero",

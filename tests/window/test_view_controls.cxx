@@ -362,3 +362,33 @@ TEST(Controls, ChoosingTheDefaultsRowStillReplacesEveryPartsMaterial)
   EXPECT_TRUE(inspector.GetState().Scene.MaterialGiven);
   EXPECT_EQ(Settings(inspector)["--material"], "chrome;");
 }
+
+// An environment is one of the terms: its toggle, shown where the scene has
+// one, takes it out of the scene the view shows (its render command), and
+// nothing else, and puts it back. That the code and picture follow the
+// scene is the render tests' (test_environment_oracle.cxx).
+TEST(Controls, TheEnvironmentsToggleTakesItsTermOutAndBack)
+{
+  TempDir dir;
+  WriteImage8(dir / "sky.png", 2, 1, { 200, 180, 40, 20, 60, 220 });
+  ViewOptions options = SpotView(Shading::Phong);
+  options.Scene.Environment = (dir / "sky.png").string();
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+  QCheckBox* toggle = nullptr;
+  for (QCheckBox* box : window.findChildren<QCheckBox*>())
+  {
+    toggle = box->text().startsWith("environment") ? box : toggle;
+  }
+  ASSERT_NE(toggle, nullptr);
+  const auto with = Settings(inspector);
+  EXPECT_EQ(with.at("--environment"), (dir / "sky.png").string() + ";");
+  toggle->click();
+  EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ "--environment" });
+  EXPECT_TRUE(inspector.ShownScene().Environment.empty());
+  toggle->click();
+  EXPECT_EQ(Settings(inspector), with);
+}

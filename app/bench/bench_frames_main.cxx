@@ -73,6 +73,7 @@ struct Variant
   bool Attenuated = false; // ours with distance attenuation: its cost against the same rule's
   bool Fogged = false;     // ours with fog: the same
   Representation Drawn = Representation::Surface;
+  bool Reflecting = false; // ours with an environment (a 1024 checker): the same
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -242,6 +243,7 @@ int main(int argc, char** argv)
     checker = Checker(1024);
   }
 
+  const std::shared_ptr<const TextureImage> environment = Checker(1024);
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
     { "vtk-gouraud", Shading::Gouraud, true }, { "vtk-phong", Shading::Phong, true },
     { "vtk-unlit", Shading::Phong, true, false, true }, { "flat", Shading::Flat },
@@ -263,7 +265,13 @@ int main(int argc, char** argv)
       Representation::Wireframe },
     { "phong-wireframe", Shading::Phong, false, false, false, false, false,
       Representation::Wireframe },
-    { "phong-points", Shading::Phong, false, false, false, false, false, Representation::Points } };
+    { "phong-points", Shading::Phong, false, false, false, false, false, Representation::Points },
+    { "flat-environment", Shading::Flat, false, false, false, false, false, Representation::Surface,
+      true },
+    { "gouraud-environment", Shading::Gouraud, false, false, false, false, false,
+      Representation::Surface, true },
+    { "phong-environment", Shading::Phong, false, false, false, false, false,
+      Representation::Surface, true } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -284,6 +292,10 @@ int main(int argc, char** argv)
       scene.Fogging = ParseFog("exp2:0.1");
     }
     scene.Drawn = v.Drawn;
+    if (v.Reflecting)
+    {
+      scene.Environment = "checker"; // decoded already: environment below
+    }
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
     {
@@ -291,8 +303,8 @@ int main(int argc, char** argv)
     }
     // One actor but with --parts, where only ours run.
     const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr,
-      SceneImages{
-        checker, {}, {} }).Drawn.front();
+      SceneImages{ checker, {}, v.Reflecting ? environment : nullptr })
+                               .Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

@@ -114,13 +114,17 @@ inline Rgb Vec(const json& v)
   return { v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>() };
 }
 
-// ambient + the lights' diffuse and specular terms.
+// ambient + the lights' diffuse and specular terms (+ the environment's).
 inline Rgb TermsSum(const json& at)
 {
   Rgb sum = Vec(at.at("ambient"));
   for (const json& light : at.at("lights"))
   {
     sum = sum + Vec(light.at("diffuse")) + Vec(light.at("specular"));
+  }
+  if (at.contains("environment"))
+  {
+    sum = sum + Vec(at.at("environment").at("term"));
   }
   return sum;
 }

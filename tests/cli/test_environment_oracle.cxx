@@ -12,7 +12,7 @@
 // about 1e-7, some 1e-6 of a texel of these small images. With the nearest
 // texel, pixels within the oracle's edge margin of a switch to another
 // texel are left out (Oracle::Switches), as for textures.
-#include "oracle_scene.h"
+#include "probe_support.h"
 
 #include <gtest/gtest.h>
 
@@ -53,6 +53,10 @@ std::vector<Case> Cases()
     s.Model = Reflection::Phong;
     s.Textured = true;
     add("textured_phong_model_" + std::string(ToString(r)), s);
+    s.Textured = false;
+    s.Model = Reflection::BlinnPhong;
+    s.Drawn = shadelab::Representation::Wireframe;
+    add("wireframe_" + std::string(ToString(r)), s);
     s = ColouredLights();
     s.Rule = r;
     s.Environment = EnvironmentKind::Pattern;
@@ -150,6 +154,99 @@ TEST(Environment, AddsKsTimesWhatItSees)
       {
         EXPECT_GT(ground, 500u);
       }
+    }
+  }
+}
+
+// A batch keeps a rule's actor from shot to shot (SceneCache), and with it
+// the uploaded environment when the image is the same: the next shot's
+// filter must still apply, and another image must replace it. Each shot of
+// a scene file equals its own render.
+TEST(EnvironmentBatch, EachShotReflectsAsItsOwnRender)
+{
+  TempDir dir;
+  Scene s;
+  const std::string mesh = SceneArguments(s, dir).front();
+  for (const auto& [name, kind] :
+    { std::pair{ "pattern.png", EnvironmentKind::Pattern }, { "horizon.png", EnvironmentKind::Horizon } })
+  {
+    const EnvironmentImage e = EnvironmentOf(kind);
+    WriteImage8(dir / name, e.Width, e.Height, e.Bytes);
+  }
+  WriteText(dir / "scene.json",
+    R"({ "mesh": ")" + mesh + R"(", "environment": "pattern.png", "size": [64, 64],
+         "material": "chrome",
+         "shots": [ { "texture_filter": "nearest" }, { "texture_filter": "bilinear" },
+                    { "environment": "horizon.png" } ] })");
+  const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "shot{index}.exr").string() });
+  ASSERT_EQ(batch.ExitCode, 0) << batch.Stderr;
+  const char* settings[][2] = { { "pattern.png", "nearest" }, { "pattern.png", "bilinear" },
+    { "horizon.png", "bilinear" } };
+  for (int shot = 0; shot < 3; ++shot)
+  {
+    SCOPED_TRACE(std::to_string(shot));
+    const auto alone = dir / ("alone" + std::to_string(shot) + ".exr");
+    const RunResult r = RunShadelab({ "render", mesh, "-o", alone.string(), "--size", "64x64",
+      "--material", "chrome", "--environment", (dir / settings[shot][0]).string(),
+      "--texture-filter", settings[shot][1] });
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    EXPECT_EQ(
+      ReadImage(dir / ("shot" + std::to_string(shot) + ".exr")).Pixels, ReadImage(alone).Pixels);
+  }
+  EXPECT_NE(ReadImage(dir / "shot0.exr").Pixels, ReadImage(dir / "shot1.exr").Pixels);
+  EXPECT_NE(ReadImage(dir / "shot1.exr").Pixels, ReadImage(dir / "shot2.exr").Pixels);
+}
+
+// probe explains the environment's term where it lights: R, (s, t), the
+// texel and ks*E(R) as the oracle has them, adding up with the other terms
+// to the oracle (gouraud's at each vertex, mixed by the weights), and the
+// render within the oracle tests' bound of it.
+TEST(EnvironmentProbe, ItsTermAddsUpToTheOracle)
+{
+  for (Shading r : LitRules)
+  {
+    SCOPED_TRACE(ToString(r));
+    Scene s;
+    s.Rule = r;
+    s.Environment = EnvironmentKind::Pattern;
+    TempDir dir;
+    const Oracle oracle(s);
+    const std::vector<std::array<int, 2>> pixels = ComparedPixels(s, oracle);
+    std::string error;
+    const std::vector<json> probes = Probe(SceneArguments(s, dir), pixels, error);
+    ASSERT_EQ(error, "");
+    ASSERT_EQ(probes.size(), pixels.size());
+    ASSERT_GT(probes.size(), 100u);
+    for (std::size_t i = 0; i < probes.size(); ++i)
+    {
+      const json& p = probes[i];
+      const Rgb total = Vec(p.at("oracle"));
+      if (r == Shading::Gouraud)
+      {
+        Rgb mixed{};
+        for (const json& v : p.at("vertices"))
+        {
+          ASSERT_TRUE(v.contains("environment"));
+          mixed = mixed + v.at("weight").get<double>() * TermsSum(v);
+        }
+        ExpectNear(mixed, total, 1e-12, "the vertices' terms mixed");
+      }
+      else
+      {
+        const shadelab::IlluminationTerms expected =
+          oracle.At(pixels[i][0], pixels[i][1]).Terms;
+        ASSERT_TRUE(expected.Environment);
+        const json& e = p.at("environment");
+        // The probe lights the mesh as read (float normals, 3e-8 off the
+        // grid's), the harness the grid in double: R and E(R) agree to
+        // that; the probe's own terms add up exactly.
+        ExpectNear(Vec(e.at("R")), expected.Environment->R, 1e-6, "R");
+        ExpectNear(Vec(e.at("texel")), expected.Environment->Texel, 1e-6, "E(R)");
+        ExpectNear(Vec(e.at("term")), s.Surface.Ks * Vec(e.at("texel")), 1e-12, "ks*E(R)");
+        ExpectNear(TermsSum(p), total, 1e-12, "the terms' sum");
+      }
+      ExpectWithinTheBound(Vec(p.at("rendered")), total);
     }
   }
 }

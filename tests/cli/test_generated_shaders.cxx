@@ -199,3 +199,36 @@ TEST(GeneratedShaders, TheLiteralSpecularFormReadsAsTheLecture)
   EXPECT_TRUE(Contains(gouraud.Vertex, "if (dot(N, H) > 0.0)"));
   EXPECT_FALSE(Contains(gouraud.Vertex, "shadelabSpecularD("));
 }
+
+// An environment's code only where it reflects something: in the stage
+// that lights (gouraud's vertex stage, flat's and phong's fragment stage),
+// marked for the shader panel; none without one, with ks zero, or under
+// none, which does not light.
+TEST(GeneratedShaders, EnvironmentCodeOnlyWhereItReflects)
+{
+  TempDir dir;
+  WriteImage8(dir / "sky.png", 2, 1, { 200, 180, 40, 20, 60, 220 });
+  const std::vector<std::string> sky{ "--environment", (dir / "sky.png").string() };
+  for (const char* rule : { "none", "flat", "gouraud", "phong" })
+  {
+    SCOPED_TRACE(rule);
+    const std::string r = rule;
+    const std::string name = r + "-blinn";
+    const Dumped plain = Render(dir, name, { "--shading", rule });
+    EXPECT_FALSE(Contains(plain.Vertex + plain.Fragment, "shadelabEnvironment"));
+    std::vector<std::string> args{ "--shading", rule };
+    args.insert(args.end(), sky.begin(), sky.end());
+    const Dumped reflecting = Render(dir, name, args);
+    const std::string lit = r == "gouraud" ? reflecting.Vertex : reflecting.Fragment;
+    const std::string unlit = r == "gouraud" ? reflecting.Fragment : reflecting.Vertex;
+    EXPECT_EQ(Contains(lit, "uniform sampler2D shadelabEnvironment;"), r != "none");
+    EXPECT_EQ(Contains(lit,
+                "I += shadelabKs * shadelabEnvironmentAt((2.0 * dot(N, V)) * N - V); // shadelab: "
+                "environment"),
+      r != "none");
+    EXPECT_FALSE(Contains(unlit, "shadelabEnvironment"));
+    args.insert(args.end(), { "--ks", "0,0,0" });
+    const Dumped dull = Render(dir, name, args);
+    EXPECT_FALSE(Contains(dull.Vertex + dull.Fragment, "shadelabEnvironment"));
+  }
+}

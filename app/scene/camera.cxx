@@ -69,7 +69,6 @@ UpFrame FrameOf(UpAxis axis)
 
 namespace
 {
-
 Vec3 Scaled(const Vec3& v, double s)
 {
   return { s * v[0], s * v[1], s * v[2] };

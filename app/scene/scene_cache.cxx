@@ -29,13 +29,24 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
   }
   shown.Mesh = &loaded;
   SceneImages images;
-  if (!options.Texture.empty())
+  // The image `name` decoded (from `bytes` where the file embeds it), or
+  // nothing with shown's error set.
+  const auto decoded = [this, &shown](
+                         const std::string& name, const std::vector<std::uint8_t>& bytes)
   {
-    const LoadedTexture& image = this->Meshes->GetTexture(options.Texture);
+    const LoadedTexture& image = this->Meshes->GetTexture(name, bytes);
     if (!image.Image)
     {
-      shown.Input = options.Texture;
+      shown.Input = name;
       shown.Error = image.Error;
+    }
+    return image.Image;
+  };
+  if (!options.Texture.empty())
+  {
+    images.Option = decoded(options.Texture, {});
+    if (!images.Option)
+    {
       return shown;
     }
     if (!loaded.Mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
@@ -44,18 +55,14 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       shown.Error = "--texture needs texture coordinates, and the mesh has none";
       return shown;
     }
-    images.Option = image.Image;
   }
   if (!options.Environment.empty())
   {
-    const LoadedTexture& image = this->Meshes->GetTexture(options.Environment);
-    if (!image.Image)
+    images.Environment = decoded(options.Environment, {});
+    if (!images.Environment)
     {
-      shown.Input = options.Environment;
-      shown.Error = image.Error;
       return shown;
     }
-    images.Environment = image.Image;
   }
   // The images of the file's textures that its parts draw, each decoded once.
   const std::vector<Texture> textures = MeshTextures(loaded.Mesh);
@@ -64,15 +71,11 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
   {
     if (part.FileTexture >= 0 && !images.File[part.FileTexture])
     {
-      const LoadedTexture& image =
-        this->Meshes->GetTexture(part.ImageName, textures[part.FileTexture].Bytes);
-      if (!image.Image)
+      images.File[part.FileTexture] = decoded(part.ImageName, textures[part.FileTexture].Bytes);
+      if (!images.File[part.FileTexture])
       {
-        shown.Input = part.ImageName;
-        shown.Error = image.Error;
         return shown;
       }
-      images.File[part.FileTexture] = image.Image;
     }
   }
   OwnStages stages;

@@ -141,6 +141,11 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
     j["texture"] = { { "image", o.Texture }, { "wrap", ToString(o.TextureWrapping) },
       { "filter", ToString(o.TextureFiltering) } };
   }
+  if (!o.Environment.empty())
+  {
+    j["environment"] = { { "image", o.Environment }, { "up", ToString(o.Up) },
+      { "filter", ToString(o.TextureFiltering) } };
+  }
   auto parts = nlohmann::ordered_json::array();
   for (const ScenePart& part : sceneParts)
   {

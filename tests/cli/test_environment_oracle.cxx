@@ -37,9 +37,9 @@ std::vector<Case> Cases()
         s.Environment = kind;
         s.Filter = filter;
         add(std::string(ToString(r)) + "_" +
-            (kind == EnvironmentKind::Single    ? "single"
-              : kind == EnvironmentKind::Horizon ? "horizon"
-                                                 : "pattern") +
+            (kind == EnvironmentKind::Single       ? "single"
+                : kind == EnvironmentKind::Horizon ? "horizon"
+                                                   : "pattern") +
             "_" + ToString(filter),
           s);
       }
@@ -102,8 +102,8 @@ TEST(Environment, AddsKsTimesWhatItSees)
       {
         continue;
       }
-      SCOPED_TRACE(std::string(ToString(r)) +
-        (kind == EnvironmentKind::Single ? " single" : " horizon"));
+      SCOPED_TRACE(
+        std::string(ToString(r)) + (kind == EnvironmentKind::Single ? " single" : " horizon"));
       Scene s;
       s.Rule = r;
       s.Filter = TextureFilter::Nearest;
@@ -167,8 +167,8 @@ TEST(EnvironmentBatch, EachShotReflectsAsItsOwnRender)
   TempDir dir;
   Scene s;
   const std::string mesh = SceneArguments(s, dir).front();
-  for (const auto& [name, kind] :
-    { std::pair{ "pattern.png", EnvironmentKind::Pattern }, { "horizon.png", EnvironmentKind::Horizon } })
+  for (const auto& [name, kind] : { std::pair{ "pattern.png", EnvironmentKind::Pattern },
+         { "horizon.png", EnvironmentKind::Horizon } })
   {
     const EnvironmentImage e = EnvironmentOf(kind);
     WriteImage8(dir / name, e.Width, e.Height, e.Bytes);
@@ -194,6 +194,10 @@ TEST(EnvironmentBatch, EachShotReflectsAsItsOwnRender)
     EXPECT_EQ(
       ReadImage(dir / ("shot" + std::to_string(shot) + ".exr")).Pixels, ReadImage(alone).Pixels);
   }
+  // The picture says what it reflects.
+  const json described = json::parse(ReadImage(dir / "shot0.exr").Description);
+  EXPECT_EQ(described.at("environment"),
+    json({ { "image", (dir / "pattern.png").string() }, { "up", "+Y" }, { "filter", "nearest" } }));
   EXPECT_NE(ReadImage(dir / "shot0.exr").Pixels, ReadImage(dir / "shot1.exr").Pixels);
   EXPECT_NE(ReadImage(dir / "shot1.exr").Pixels, ReadImage(dir / "shot2.exr").Pixels);
 }
@@ -234,8 +238,7 @@ TEST(EnvironmentProbe, ItsTermAddsUpToTheOracle)
       }
       else
       {
-        const shadelab::IlluminationTerms expected =
-          oracle.At(pixels[i][0], pixels[i][1]).Terms;
+        const shadelab::IlluminationTerms expected = oracle.At(pixels[i][0], pixels[i][1]).Terms;
         ASSERT_TRUE(expected.Environment);
         const json& e = p.at("environment");
         // The probe lights the mesh as read (float normals, 3e-8 off the

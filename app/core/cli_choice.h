@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace shadelab
@@ -16,6 +17,18 @@ CLI::Option* AddChoice(
   CLI::App& command, const std::string& name, Enum& value, const std::string& help)
 {
   return command.add_option(name, value, help)
+    ->transform(CLI::CheckedTransformer(NamedValues<Enum>()))
+    ->option_text(JoinedNames<Enum>("|"));
+}
+
+/** The same for a choice that is absent until given. */
+template <typename Enum>
+CLI::Option* AddChoice(
+  CLI::App& command, const std::string& name, std::optional<Enum>& value, const std::string& help)
+{
+  return command
+    .add_option_function<Enum>(
+      name, [&value](const Enum& given) { value = given; }, help)
     ->transform(CLI::CheckedTransformer(NamedValues<Enum>()))
     ->option_text(JoinedNames<Enum>("|"));
 }

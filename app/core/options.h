@@ -152,8 +152,9 @@ struct SceneOptions
   TextureFilter TextureFiltering = TextureFilter::Bilinear;
   // --environment: an equirectangular image of the surroundings, which the
   // surface reflects as ks * E(R) (shadelabEnvironment.h), looked up with
-  // TextureFiltering; its up is Up.
+  // TextureFiltering; its up is EnvironmentUp, or else Up.
   std::string Environment;
+  std::optional<UpAxis> EnvironmentUp;
   // How the shaders write the specular term: stable, or the lecture's expressions as written.
   SpecularForm Form = SpecularForm::Stable;
   // --vertex-shader, --fragment-shader: files of complete GLSL that replace

@@ -143,7 +143,7 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   }
   if (!o.Environment.empty())
   {
-    j["environment"] = { { "image", o.Environment }, { "up", ToString(o.Up) },
+    j["environment"] = { { "image", o.Environment }, { "up", ToString(o.EnvironmentUp.value_or(o.Up)) },
       { "filter", ToString(o.TextureFiltering) } };
   }
   auto parts = nlohmann::ordered_json::array();

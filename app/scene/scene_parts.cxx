@@ -217,7 +217,7 @@ std::optional<EnvironmentMap> SceneEnvironment(
   e.Map.WrapS = TextureWrap::Repeat; // the longitude goes round
   e.Map.WrapT = TextureWrap::Clamp;  // the latitude ends at the poles
   e.Map.Filter = options.TextureFiltering;
-  const UpFrame axes = FrameOf(options.Up);
+  const UpFrame axes = FrameOf(options.EnvironmentUp.value_or(options.Up));
   for (int j = 0; j < 3; ++j)
   {
     e.Frame[0][j] = axes.Right[j];

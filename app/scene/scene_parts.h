@@ -71,7 +71,8 @@ struct SceneImages
 /**
  * --environment's map as the scene draws it, in world coordinates: its
  * image, its longitude repeating and its latitude clamped, the textures'
- * filter, and its frame --up's (FrameOf); none without one.
+ * filter, and its frame --environment-up's, or else --up's (FrameOf);
+ * none without one.
  */
 std::optional<EnvironmentMap> SceneEnvironment(
   const SceneOptions& options, const SceneImages& images);

@@ -203,6 +203,10 @@ struct Choice
   {
     return AddChoice(c, s.Option, target, s.Help);
   }
+  CLI::Option* Declare(CLI::App& c, const Setting& s, std::optional<Enum>& target) const
+  {
+    return AddChoice(c, s.Option, target, s.Help);
+  }
   std::string Text(Enum value) const { return ToString(value); }
   std::string FromJson(const json& v, const std::string& path) const
   {

@@ -78,10 +78,14 @@ std::vector<Setting> MakeSettings()
       Choice<TextureFilter>{ "texture filter" }, SHADELAB_FIELD(TextureFiltering)),
     Plain({ "--environment", "environment", "IMAGE",
             "An equirectangular image of the surroundings (its stored values; its top row "
-            "straight up along --up, its middle column ahead of the front view): the surface adds "
+            "straight up along --environment-up, its middle column ahead of the front view): the "
+            "surface adds "
             "ks E(R), E the image seen along R, the view vector reflected about the normal, where "
             "the rule lights; looked up with --texture-filter" },
       File{}, SHADELAB_FIELD(Environment)),
+    Plain({ "--environment-up", "environment_up", "",
+            "The world axis the environment's top row lies along", PictureCommands, "--up's" },
+      Choice<UpAxis>{ "up axis" }, SHADELAB_FIELD(EnvironmentUp)),
     Plain({ "--specular-form", "specular_form", "",
             "How the shaders write the specular term: stable, 1 - cos without cancellation and a "
             "power that holds up to ns = 1e6; literal, the lecture's pow(max(N.H, 0), ns) as "

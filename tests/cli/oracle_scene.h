@@ -634,9 +634,11 @@ struct Scene
   shadelab::TextureWrap Wrap = shadelab::TextureWrap::Repeat;
   shadelab::TextureFilter Filter = shadelab::TextureFilter::Bilinear;
   // --environment: EnvironmentOf(Environment) as an 8-bit PNG, looked up
-  // with Filter; ZUp gives --up +Z, the environment's y the world's z.
+  // with Filter; ZUp gives --up +Z (or, with OwnUp, --environment-up +Z
+  // alone), the environment's y the world's z.
   EnvironmentKind Environment = EnvironmentKind::None;
   bool ZUp = false;
+  bool OwnUp = false;
   // --shadows, --shadow-map-size: the oracle casts shadow rays.
   bool Shadows = false;
   int ShadowMapSize = 2048;
@@ -960,7 +962,7 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
     }
     if (s.ZUp)
     {
-      args.insert(args.end(), { "--up", "+Z" });
+      args.insert(args.end(), { s.OwnUp ? "--environment-up" : "--up", "+Z" });
     }
   }
   for (const Light& l : WorldLights(s))
@@ -1098,7 +1100,8 @@ public:
       // The environment's frame, stated here on its own: x right, y up, z
       // towards the front view's camera (+Z; -Y for up +Z).
       shadelab::EnvironmentMap& e = this->In.Environment.emplace();
-      e.Map.Image = std::make_shared<shadelab::TextureImage>(EnvironmentOf(s.Environment).Decoded());
+      e.Map.Image =
+        std::make_shared<shadelab::TextureImage>(EnvironmentOf(s.Environment).Decoded());
       e.Map.WrapS = shadelab::TextureWrap::Repeat;
       e.Map.WrapT = shadelab::TextureWrap::Clamp;
       e.Map.Filter = s.Filter;
@@ -1267,8 +1270,10 @@ private:
     {
       const shadelab::TextureImage& image = *this->In.Environment->Map.Image;
       on.push_back(static_cast<long long>(
-        std::floor(at.Terms.Environment->TexCoord[0] * image.Width) + image.Width) % image.Width);
-      on.push_back(static_cast<long long>(std::floor(at.Terms.Environment->TexCoord[1] * image.Height)));
+                     std::floor(at.Terms.Environment->TexCoord[0] * image.Width) + image.Width) %
+        image.Width);
+      on.push_back(
+        static_cast<long long>(std::floor(at.Terms.Environment->TexCoord[1] * image.Height)));
     }
     return on;
   }

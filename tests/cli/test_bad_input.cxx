@@ -547,6 +547,11 @@ const BadCase Cases[] = {
       return WithMesh(d, "t.obj", Tetrahedron, { "--environment", (d / "text.png").string() });
     },
     1, { "text.png", "not an image OpenImageIO can read" } },
+  { "EnvironmentUpUnknown",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--environment-up", "sideways" });
+    },
+    2, { "--environment-up", "sideways" } },
   { "EnvironmentUnderRaytrace",
     [](const TempDir& d)
     {

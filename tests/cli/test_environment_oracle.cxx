@@ -49,7 +49,9 @@ std::vector<Case> Cases()
     s.Environment = EnvironmentKind::Pattern;
     s.ZUp = true;
     add("z_up_" + std::string(ToString(r)), s);
-    s.ZUp = false;
+    s.OwnUp = true;
+    add("own_z_up_" + std::string(ToString(r)), s);
+    s.ZUp = s.OwnUp = false;
     s.Model = Reflection::Phong;
     s.Textured = true;
     add("textured_phong_model_" + std::string(ToString(r)), s);

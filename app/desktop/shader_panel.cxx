@@ -4,6 +4,7 @@
 #include "shadelabShaderSource.h"
 
 #include <QButtonGroup>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QListWidget>
@@ -152,10 +153,14 @@ ShaderPanel::ShaderPanel(QWidget* parent)
   }
   // The terms' buttons in a row, the effects' below, greyed where the
   // program has no lines of theirs: the panel keeps its size, and with it
-  // the window and the view.
+  // the window and the view. The effects go EffectColumns to a row, so that
+  // the panel is no wider than the terms' row (a small screen's window
+  // keeps the view's aspect).
+  constexpr int EffectColumns = 3;
   auto* legend = new QHBoxLayout;
-  auto* effects = new QHBoxLayout;
+  auto* effects = new QGridLayout;
   auto* group = new QButtonGroup(this);
+  int effect = 0;
   for (std::size_t i = 0; i < this->Buttons.size(); ++i)
   {
     QPushButton* button = i == AllMarks ? AllMarksButton(this) : MarkButton(Marks()[i - 1], this);
@@ -163,14 +168,22 @@ ShaderPanel::ShaderPanel(QWidget* parent)
     // An effect's button once a program has its lines (Show).
     button->setEnabled(i == AllMarks || !Marks()[i - 1].Effect);
     group->addButton(button);
-    (i != AllMarks && Marks()[i - 1].Effect ? effects : legend)->addWidget(button);
+    if (i != AllMarks && Marks()[i - 1].Effect)
+    {
+      effects->addWidget(button, effect / EffectColumns, effect % EffectColumns);
+      ++effect;
+    }
+    else
+    {
+      legend->addWidget(button);
+    }
     this->Buttons[i] = button;
     QObject::connect(button, &QPushButton::clicked, this, [this, i] { this->HighlightMark(i); });
   }
   this->Buttons[AllMarks]->setChecked(true);
   auto* column = new QVBoxLayout(this);
   column->addLayout(legend);
-  effects->addStretch();
+  effects->setColumnStretch(EffectColumns, 1);
   column->addLayout(effects);
   column->addWidget(this->Tabs);
 

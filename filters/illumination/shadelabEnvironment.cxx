@@ -21,10 +21,7 @@ EnvironmentTerm EnvironmentAt(const EnvironmentMap& e, const Vec3& N, const Vec3
 {
   EnvironmentTerm t;
   t.R = (2 * dot(N, V)) * N - V;
-  const auto& f = e.Frame;
-  t.Direction = { f[0][0] * t.R[0] + f[0][1] * t.R[1] + f[0][2] * t.R[2],
-    f[1][0] * t.R[0] + f[1][1] * t.R[1] + f[1][2] * t.R[2],
-    f[2][0] * t.R[0] + f[2][1] * t.R[1] + f[2][2] * t.R[2] };
+  t.Direction = Rotate(e.Frame, t.R);
   t.TexCoord = EnvironmentTexCoord(t.Direction);
   t.Texel = SampleTexture(e.Map, t.TexCoord[0], t.TexCoord[1]);
   t.Term = ks * t.Texel;

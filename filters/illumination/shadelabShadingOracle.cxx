@@ -117,16 +117,10 @@ LightTerms LightTermsAt(
 
 FrameLight ToFrame(const Light& light, const double r[3][3], const Vec3& t)
 {
-  auto rotate = [r](const Vec3& v) -> Vec3
-  {
-    return { r[0][0] * v[0] + r[0][1] * v[1] + r[0][2] * v[2],
-      r[1][0] * v[0] + r[1][1] * v[1] + r[1][2] * v[2],
-      r[2][0] * v[0] + r[2][1] * v[1] + r[2][2] * v[2] };
-  };
   FrameLight f;
   f.Kind = light.Kind;
-  f.Position = rotate(light.Position) + t;
-  const Vec3 d = rotate(light.Direction);
+  f.Position = Rotate(r, light.Position) + t;
+  const Vec3 d = Rotate(r, light.Direction);
   const double len = length(d);
   f.Direction = len > 0 ? (1 / len) * d : d;
   f.Color = light.Color;

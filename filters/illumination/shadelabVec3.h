@@ -43,6 +43,13 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
 }
+/** r v: v rotated (or otherwise mapped) by the 3x3 matrix r. */
+inline Vec3 Rotate(const double r[3][3], const Vec3& v)
+{
+  return { r[0][0] * v[0] + r[0][1] * v[1] + r[0][2] * v[2],
+    r[1][0] * v[0] + r[1][1] * v[1] + r[1][2] * v[2],
+    r[2][0] * v[0] + r[2][1] * v[1] + r[2][2] * v[2] };
+}
 /** a / |a|; unlike GLSL's, a zero vector stays zero. */
 inline Vec3 normalize(const Vec3& a)
 {

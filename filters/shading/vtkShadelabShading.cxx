@@ -311,17 +311,26 @@ void vtkShadelabShading::Attach(
         TextureCoordinatesArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
   }
-  if (previous && previous->TextureObject &&
-    previous->Texture.Map.Image == this->Texture.Map.Image &&
-    previous->TextureObject->GetContext() == renderer->GetRenderWindow())
+  if (previous)
   {
-    this->TextureObject = previous->TextureObject;
-  }
-  if (previous && previous->EnvironmentObject && this->Environment && previous->Environment &&
-    previous->Environment->Map.Image == this->Environment->Map.Image &&
-    previous->EnvironmentObject->GetContext() == renderer->GetRenderWindow())
-  {
-    this->EnvironmentObject = previous->EnvironmentObject;
+    // The uploaded images the shading before drew with, where they are
+    // this one's too and the window the same.
+    const auto takeOver = [renderer](const vtkSmartPointer<vtkTextureObject>& before,
+                            const TextureImage* beforeImage, const TextureImage* image,
+                            vtkSmartPointer<vtkTextureObject>& object)
+    {
+      if (before && image && beforeImage == image &&
+        before->GetContext() == renderer->GetRenderWindow())
+      {
+        object = before;
+      }
+    };
+    const auto imageOf = [](const std::optional<EnvironmentMap>& e)
+    { return e ? e->Map.Image.get() : nullptr; };
+    takeOver(previous->TextureObject, previous->Texture.Map.Image.get(),
+      this->Texture.Map.Image.get(), this->TextureObject);
+    takeOver(previous->EnvironmentObject, imageOf(previous->Environment),
+      imageOf(this->Environment), this->EnvironmentObject);
   }
   if (previous && previous->Actor == actor)
   {

@@ -303,7 +303,7 @@ int main(int argc, char** argv)
     }
     // One actor but with --parts, where only ours run.
     const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr,
-      SceneImages{ checker, {}, v.Reflecting ? environment : nullptr })
+      SceneImages{ checker, {}, v.Reflecting ? environment : nullptr, nullptr })
                                .Drawn.front();
     if (v.VtkOwn)
     {

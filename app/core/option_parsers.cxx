@@ -106,6 +106,29 @@ double ParseNumber(const std::string& text)
   return value;
 }
 
+ScaledImage ParseScaledImage(const std::string& text)
+{
+  ScaledImage image{ text, 1 };
+  const std::size_t colon = text.rfind(':');
+  if (colon != std::string::npos && colon > 0)
+  {
+    try
+    {
+      image.Scale = ParseNumber(text.substr(colon + 1));
+      image.Image = text.substr(0, colon);
+    }
+    catch (const std::invalid_argument&)
+    {
+      // not a number: the colon is the image's name's own
+    }
+  }
+  if (image.Image.empty())
+  {
+    throw std::invalid_argument("'" + text + "' names no image");
+  }
+  return image;
+}
+
 Vec3 ParseVec3(const std::string& text)
 {
   return ParseTriple(text, "three numbers X,Y,Z");

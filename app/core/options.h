@@ -121,6 +121,22 @@ struct Pixel
 };
 
 /** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
+/**
+ * An image with a scale, IMAGE[:SCALE] (--normal-map): the scale is what
+ * follows the last ':' where that is a number, else 1 and the whole text
+ * is the image.
+ */
+struct ScaledImage
+{
+  std::string Image;
+  double Scale = 1;
+
+  bool operator==(const ScaledImage& o) const
+  {
+    return this->Image == o.Image && this->Scale == o.Scale;
+  }
+};
+
 struct NormalsSettings
 {
   std::string Weighting = "angle";
@@ -155,6 +171,10 @@ struct SceneOptions
   // TextureFiltering; its up is EnvironmentUp, or else Up.
   std::string Environment;
   std::optional<UpAxis> EnvironmentUp;
+  // --normal-map: a tangent-space normal map (shadelabNormalMap.h) over
+  // the whole mesh at its texture coordinates, its x and y times Scale,
+  // looked up with TextureWrapping and TextureFiltering.
+  std::optional<ScaledImage> NormalMap;
   // How the shaders write the specular term: stable, or the lecture's expressions as written.
   SpecularForm Form = SpecularForm::Stable;
   // --vertex-shader, --fragment-shader: files of complete GLSL that replace
@@ -272,7 +292,8 @@ Vec3 ParseAttenuation(const std::string& text); // C0,C1,C2: none negative, not 
 // none | linear:START,END[:R,G,B] | exp:DENSITY[:R,G,B] | exp2:DENSITY[:R,G,B]
 Fog ParseFog(const std::string& text);
 ImageSize ParseSize(const std::string& text);
-Pixel ParsePixel(const std::string& text); // "X,Y", each a whole number >= 0
+ScaledImage ParseScaledImage(const std::string& text); // IMAGE[:SCALE]
+Pixel ParsePixel(const std::string& text);             // "X,Y", each a whole number >= 0
 // KIND:...[@C0,C1,C2][+shadows|+no-shadows]
 Light ParseLight(const std::string& text);
 double ParseNumber(const std::string& text);

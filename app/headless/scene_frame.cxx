@@ -33,6 +33,11 @@ std::pair<std::string, std::string> RayTraceProblem(const SceneOptions& options)
     return { options.Environment,
       "--shading raytrace reflects the mesh by its rays, not an environment map" };
   }
+  if (options.NormalMap)
+  {
+    return { options.NormalMap->Image,
+      "--shading raytrace reflects its rays about the mesh's normals, not a normal map's" };
+  }
   for (const std::string* stage : { &options.VertexShader, &options.FragmentShader })
   {
     if (!stage->empty())

@@ -143,8 +143,15 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   }
   if (!o.Environment.empty())
   {
-    j["environment"] = { { "image", o.Environment }, { "up", ToString(o.EnvironmentUp.value_or(o.Up)) },
+    j["environment"] = { { "image", o.Environment },
+      { "up", ToString(o.EnvironmentUp.value_or(o.Up)) },
       { "filter", ToString(o.TextureFiltering) } };
+  }
+  if (o.NormalMap)
+  {
+    j["normal_map"] = { { "image", o.NormalMap->Image }, { "scale", o.NormalMap->Scale },
+      { "wrap", ToString(o.TextureWrapping) }, { "filter", ToString(o.TextureFiltering) },
+      { "tangents", "per point, from the texture coordinates (shadelabVertexTangents.h)" } };
   }
   auto parts = nlohmann::ordered_json::array();
   for (const ScenePart& part : sceneParts)

@@ -1,6 +1,8 @@
 #include "scene/mesh_input.h"
 
 #include "core/errors.h"
+#include "shadelabTriangleMesh.h"
+#include "shadelabVertexTangents.h"
 #include "vtkShadelabMeshNormals.h"
 #include "vtkShadelabMeshReader.h"
 #include "vtkShadelabOutputWindow.h"
@@ -8,6 +10,7 @@
 #include <vtkCleanPolyData.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
+#include <vtkFloatArray.h>
 #include <vtkLoopSubdivisionFilter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -173,6 +176,16 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
     result.NormalsFromFile = false;
   }
   lap("normals");
+  // A normal map's frame, where there are texture coordinates to make it
+  // of (the scene says so where there are none).
+  if (options.NormalMap && mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
+  {
+    auto withTangents = vtkSmartPointer<vtkPolyData>::New();
+    withTangents->ShallowCopy(mesh);
+    withTangents->GetPointData()->AddArray(VertexTangents(mesh));
+    mesh = withTangents;
+    lap("tangents");
+  }
   result.Mesh = mesh;
   return result;
 }

@@ -26,7 +26,8 @@ struct LoadedMesh
 
 /**
  * Reads options.Mesh and computes its normals as asked; warnings are
- * reported. `timer` (if given) times the phases "read" and "normals".
+ * reported. `timer` (if given) times the phases "read" and "normals" (and
+ * "tangents", for a normal map).
  * Computed normals come with face normals only if `cellNormals`: no
  * picture draws them (flat shading computes its own), a mesh file does.
  */

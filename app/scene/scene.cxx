@@ -98,7 +98,15 @@ BuiltScene BuildScene(const SceneOptions& options, vtkPolyData* mesh, vtkRendere
 
 namespace
 {
-// Whether two parts are drawn alike: the same coefficients and texture.
+bool SameRelief(const std::optional<NormalMap>& a, const std::optional<NormalMap>& b)
+{
+  return a.has_value() == b.has_value() &&
+    (!a ||
+      (a->Map.Image == b->Map.Image && a->Map.WrapS == b->Map.WrapS &&
+        a->Map.WrapT == b->Map.WrapT && a->Map.Filter == b->Map.Filter && a->Scale == b->Scale));
+}
+
+// Whether two parts are drawn alike: the same coefficients, texture and normal map.
 bool SameLook(const ScenePart& a, const ScenePart& b)
 {
   const Material &m = a.Surface, &n = b.Surface;
@@ -106,7 +114,7 @@ bool SameLook(const ScenePart& a, const ScenePart& b)
   return m.Ka == n.Ka && m.Kd == n.Kd && m.Ks == n.Ks && m.Ns == n.Ns &&
     m.Translucency == n.Translucency && t.Kd == u.Kd && t.Ka == u.Ka &&
     t.Map.Image == u.Map.Image && t.Map.WrapS == u.Map.WrapS && t.Map.WrapT == u.Map.WrapT &&
-    t.Map.Filter == u.Map.Filter;
+    t.Map.Filter == u.Map.Filter && SameRelief(a.Relief, b.Relief);
 }
 
 // The parts with triangles, grouped by the material and texture they are
@@ -179,6 +187,7 @@ BuiltScene BuildActor(const SceneOptions& options, const std::vector<Light>& lig
     drawn.Shading->SetVertexKd(UsesVertexKd(options, mesh));
     drawn.Shading->SetTexture(parts[drawn.Parts.front()].Texture);
     drawn.Shading->SetEnvironment(SceneEnvironment(options, images));
+    drawn.Shading->SetNormalMap(parts[drawn.Parts.front()].Relief);
     drawn.Shading->SetBehindLines(options.Edges || options.NormalGlyphs);
     drawn.Shading->SetFog(options.Fogging, options.OpaqueBackground());
     drawn.Shading->SetRepresentation(options.Drawn, options.LineWidth, options.PointSize);

@@ -56,6 +56,20 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       return shown;
     }
   }
+  if (options.NormalMap)
+  {
+    images.NormalMap = decoded(options.NormalMap->Image, {});
+    if (!images.NormalMap)
+    {
+      return shown;
+    }
+    if (!loaded.Mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
+    {
+      shown.Input = options.Mesh;
+      shown.Error = "--normal-map needs texture coordinates, and the mesh has none";
+      return shown;
+    }
+  }
   if (!options.Environment.empty())
   {
     images.Environment = decoded(options.Environment, {});

@@ -165,6 +165,12 @@ std::vector<ScenePart> SceneParts(
         FieldTuple<3>(field, PartKsTextureScaleArrayName, p) };
     }
     SetTexture(options, textures, images, fileTextures, part);
+    if (options.NormalMap)
+    {
+      part.Relief = NormalMap{ { images.NormalMap, options.TextureWrapping, options.TextureWrapping,
+                                 options.TextureFiltering },
+        options.NormalMap->Scale };
+    }
     if (part.Overridden.size() == std::size(overrides))
     {
       part.Source = MaterialSource::Option; // nothing of the file's or the default's is left

@@ -11,6 +11,7 @@
 
 #include "core/options.h"
 #include "shadelabEnvironment.h"
+#include "shadelabNormalMap.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -55,6 +56,10 @@ struct ScenePart
   SurfaceTexture Texture;
   std::string ImageName; // the texture's image file, "MESH (texture I)" for an embedded one
   int FileTexture = -1;  // the mesh file's texture drawn (MeshTextures' index), else -1
+  // The normal map that perturbs its normals (--normal-map's, with the
+  // textures' wrap and filter), none without one; its image is null where
+  // SceneParts was not given the images.
+  std::optional<NormalMap> Relief;
 };
 
 /**
@@ -66,6 +71,7 @@ struct SceneImages
   std::shared_ptr<const TextureImage> Option;
   std::vector<std::shared_ptr<const TextureImage>> File;
   std::shared_ptr<const TextureImage> Environment; // --environment's
+  std::shared_ptr<const TextureImage> NormalMap;   // --normal-map's
 };
 
 /**

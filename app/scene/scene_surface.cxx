@@ -2,6 +2,7 @@
 
 #include "scene/scene.h"
 #include "shadelabTriangleMesh.h"
+#include "shadelabVertexTangents.h"
 
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
@@ -32,12 +33,20 @@ SceneSurface::SceneSurface(
   vtkDataArray* coordinates = mesh->GetPointData()->GetArray(TextureCoordinatesArrayName);
   if (coordinates &&
     std::any_of(this->Parts.begin(), this->Parts.end(),
-      [](const ScenePart& part) { return part.Texture.Used(); }))
+      [](const ScenePart& part) { return part.Texture.Used() || part.Relief; }))
   {
     this->TexCoords.resize(coordinates->GetNumberOfTuples());
     for (vtkIdType i = 0; i < coordinates->GetNumberOfTuples(); ++i)
     {
       this->TexCoords[i] = { coordinates->GetComponent(i, 0), coordinates->GetComponent(i, 1) };
+    }
+  }
+  if (vtkDataArray* tangents = mesh->GetPointData()->GetArray(TangentsArrayName))
+  {
+    this->Tangents.resize(tangents->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < tangents->GetNumberOfTuples(); ++i)
+    {
+      tangents->GetTuple(i, this->Tangents[i].data());
     }
   }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
@@ -65,6 +74,10 @@ TriangleFragment SceneSurface::Fragment(const TriangleCorners& corners,
     {
       f.TexCoords[k] = this->TexCoords[corners[k]];
     }
+    if (!this->Tangents.empty())
+    {
+      f.Tangents[k] = this->Tangents[corners[k]];
+    }
   }
   if (this->VertexKd())
   {
@@ -81,6 +94,7 @@ IlluminationInputs SceneSurface::InputsOf(IlluminationInputs in, std::int64_t t)
   in.Surface = part.Surface;
   in.Texture = part.Texture;
   in.Environment = this->Environment;
+  in.NormalTexture = part.Relief;
   return in;
 }
 }

@@ -33,7 +33,10 @@ public:
   TriangleFragment Fragment(const TriangleCorners& corners, const std::array<double, 3>& w,
     bool front, const std::vector<Vec3>& points) const;
 
-  /** `in` with cell t's part's material and texture, and the environment: what lights t. */
+  /**
+   * `in` with cell t's part's material, texture and normal map, and the
+   * environment: what lights t.
+   */
   IlluminationInputs InputsOf(IlluminationInputs in, std::int64_t t) const;
 
   bool HasNormals() const { return !this->Normals.empty(); }
@@ -47,7 +50,8 @@ private:
   std::optional<EnvironmentMap> Environment;    // in world coordinates
   std::vector<Vec3> Normals;                    // per point, when the mesh has them
   std::vector<Rgb> Kd;                          // per point, when its colours are kd
-  std::vector<std::array<double, 2>> TexCoords; // per point, when a texture is looked up
+  std::vector<std::array<double, 2>> TexCoords; // per point, when a texture or normal map is read
+  std::vector<Tangent> Tangents;                // per point, when the mesh has them
 };
 }
 

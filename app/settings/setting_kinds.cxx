@@ -233,6 +233,29 @@ std::string File::FromJson(
   return (file.is_absolute() ? file : folder / file).lexically_normal().string();
 }
 
+std::string ScaledFile::Text(const ScaledImage& image) const
+{
+  // The scale written whenever the name alone would read as IMAGE:SCALE.
+  const bool ambiguous = ParseScaledImage(image.Image).Image != image.Image;
+  return image.Scale == 1 && !ambiguous ? image.Image : image.Image + ":" + NumberText(image.Scale);
+}
+
+ScaledImage ScaledFile::FromJson(
+  const json& v, const std::string& path, const std::filesystem::path& folder) const
+{
+  ScaledImage image;
+  try
+  {
+    image = ParseScaledImage(scene_file::Text(v, path));
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw scene_file::SceneError{ path, e.what() };
+  }
+  image.Image = File{}.FromJson(image.Image, path, folder);
+  return image;
+}
+
 std::string Size::FromJson(const json& v, const std::string& path) const
 {
   if (v.is_array() && v.size() == 2 && v[0].is_number_integer() && v[1].is_number_integer())

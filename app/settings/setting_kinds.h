@@ -269,6 +269,25 @@ struct File
   std::string Sample(const std::string&) const { return "/samples/file.png"; }
 };
 
+/**
+ * An image with a scale, IMAGE[:SCALE] (ParseScaledImage) in both: in a
+ * scene file the image relative to the file's folder, unless absolute.
+ */
+struct ScaledFile
+{
+  static constexpr bool IsFlag = false, ReadsDirectly = true;
+  CLI::Option* Declare(CLI::App& c, const Setting& s, std::optional<ScaledImage>& target) const
+  {
+    return AddParsed(c, s.Option, target, ParseScaledImage, s.Help)->option_text(s.ValueName);
+  }
+  std::string Text(const ScaledImage& image) const;
+  ScaledImage FromJson(
+    const json& v, const std::string& path, const std::filesystem::path& folder) const;
+  ordered_json ToJson(const ScaledImage& image) const { return this->Text(image); }
+  ordered_json Schema() const { return { { "type", "string" } }; }
+  ScaledImage Sample(const ScaledImage&) const { return { "/samples/file.png", 0.5 }; }
+};
+
 /** A picture's size: WxH on the command line, [width, height] in a scene file. */
 struct Size
 {

@@ -86,6 +86,13 @@ std::vector<Setting> MakeSettings()
     Plain({ "--environment-up", "environment_up", "",
             "The world axis the environment's top row lies along", PictureCommands, "--up's" },
       Choice<UpAxis>{ "up axis" }, SHADELAB_FIELD(EnvironmentUp)),
+    Plain({ "--normal-map", "normal_map", "IMAGE[:SCALE]",
+            "A tangent-space normal map (its stored values as data: RGB in [0, 1] is the "
+            "direction 2 RGB - 1 along the tangent, bitangent and normal, its x and y times "
+            "SCALE, default 1, as glTF's normalTexture) at the mesh's texture coordinates: it "
+            "takes the normal's place where the rule takes the normal (per fragment, per vertex, "
+            "at the provoking vertex); looked up with --texture-wrap and --texture-filter" },
+      ScaledFile{}, SHADELAB_FIELD(NormalMap)),
     Plain({ "--specular-form", "specular_form", "",
             "How the shaders write the specular term: stable, 1 - cos without cancellation and a "
             "power that holds up to ns = 1e6; literal, the lecture's pow(max(N.H, 0), ns) as "

@@ -1,5 +1,7 @@
 #include "shadelabIlluminateSource.h"
 
+#include "shadelabMapSource.h"
+
 #include <algorithm>
 #include <string>
 
@@ -129,41 +131,6 @@ const char* const ViewDirectionSource = R"glsl(  vec3 V = vec3(0.0, 0.0, 1.0);
     float len = length(P);
     V = len > shadelabTinyLength ? -P / len : vec3(0.0);
   }
-)glsl";
-
-// ShaderFeatures::Environment: E(R), the environment seen along R in view
-// coordinates (the oracle's EnvironmentAt, shadelabEnvironment.cxx); no
-// derivatives, so that a vertex stage and branches may look it up. GLSL
-// leaves atan's precision to the driver (llvmpipe's is off by up to some
-// 1e-4 radians, a thousandth of a texel of a small image, a visible 1e-4
-// in the picture), so the angles come from shadelabAtan2, to float's
-// precision on every driver: Cephes' atanf, its argument reduced to at most
-// tan(pi/8), then its polynomial.
-const char* const EnvironmentSource = R"glsl(uniform sampler2D shadelabEnvironment;
-uniform mat3 shadelabEnvironmentFrame; // view coordinates to the environment's, its y up
-float shadelabAtan2(float y, float x)
-{
-  float ax = abs(x);
-  float ay = abs(y);
-  float r = max(ax, ay) > 0.0 ? min(ax, ay) / max(ax, ay) : 0.0;
-  float a = 0.0;
-  if (r > 0.4142135623730950)
-  {
-    a = 0.7853981633974483;
-    r = (r - 1.0) / (r + 1.0);
-  }
-  float z = r * r;
-  a += (((0.0805374449538 * z - 0.138776856032) * z + 0.199777106478) * z - 0.333329491539) * z * r + r;
-  a = ay > ax ? 1.5707963267948966 - a : a;
-  a = x < 0.0 ? 3.1415926535897932 - a : a;
-  return y < 0.0 ? -a : a;
-}
-vec3 shadelabEnvironmentAt(vec3 R)
-{
-  vec3 d = shadelabEnvironmentFrame * R;
-  vec2 st = vec2(0.5 + shadelabAtan2(d.x, -d.z) * 0.15915494309189535, 0.5 + shadelabAtan2(d.y, length(d.xz)) * 0.3183098861837907);
-  return textureLod(shadelabEnvironment, st, 0.0).rgb; // shadelab: environment
-}
 )glsl";
 
 // The material's uniforms: ks and ns only where there is specular code; kd
@@ -318,7 +285,7 @@ std::string DeclarationsSource(const ShaderFeatures& f)
         std::to_string(i));
     }
   }
-  return s + GuardSource;
+  return s + GuardSource + (f.MapsNormals() ? NormalMapSource : "");
 }
 
 // The reflection model, compiled in: shadelabSpecularD, its head and its

@@ -54,8 +54,10 @@ DrawnElements ElementsOf(Representation representation, const std::vector<unsign
 }
 
 ShadedFragment ShadeElementFragment(
-  const IlluminationInputs& in, Shading rule, const TriangleFragment& f)
+  const IlluminationInputs& inputs, Shading rule, const TriangleFragment& f)
 {
+  IlluminationInputs in = inputs;
+  in.NormalTexture.reset(); // a line or a point has no tangent plane to perturb in
   const auto towardsViewer = [&in](const Vec3& n, const Vec3& p)
   { return dot(n, in.Orthographic ? -in.ViewDirection : in.Eye - p) >= 0; };
   TriangleFragment turned = f;

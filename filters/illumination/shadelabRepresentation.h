@@ -62,7 +62,7 @@ DrawnElements ElementsOf(Representation representation, const std::vector<unsign
  * each vertex's normal at that vertex; phong, the interpolated normal at
  * the fragment, and where that has no usable length the fragment is lit
  * by ka*Ia alone (a line or a point has no face to fall back to). f.Front
- * is ignored.
+ * is ignored, and so is a normal map (ShaderFeatures::MapsNormals).
  */
 ShadedFragment ShadeElementFragment(
   const IlluminationInputs& in, Shading rule, const TriangleFragment& f);

@@ -16,6 +16,9 @@ const char* const ShadowFrameName = "shadelabShadowFrame";
 const char* const ShadowBiasName = "shadelabShadowBias";
 const char* const EnvironmentSamplerName = "shadelabEnvironment";
 const char* const EnvironmentFrameName = "shadelabEnvironmentFrame";
+const char* const NormalMapSamplerName = "shadelabNormalMap";
+const char* const NormalScaleName = "shadelabNormalScale";
+const char* const TangentAttributeName = "shadelabTangent";
 
 bool ShaderFeatures::operator==(const ShaderFeatures& o) const
 {
@@ -25,7 +28,8 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     this->Drawn == o.Drawn && this->VertexKd == o.VertexKd && this->KdTexture == o.KdTexture &&
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines &&
-    this->Shadows == o.Shadows && this->Form == o.Form && this->Environment == o.Environment;
+    this->Shadows == o.Shadows && this->Form == o.Form && this->Environment == o.Environment &&
+    this->NormalMap == o.NormalMap;
 }
 
 namespace
@@ -183,19 +187,65 @@ std::string LitSource(const ShaderFeatures& f)
     (f.Drawn != Representation::Surface || f.SlopesByFace() ? TowardsViewerSource : "");
 }
 
-// The texture coordinates, passed to the fragment (interpolated with
-// perspective, as OpenGL does), the sampler and the texel.
-void AddTexelLookup(std::vector<ShaderReplacement>& r)
+// The texture coordinates for the vertex stage; passed to the fragment
+// (interpolated with perspective, as OpenGL does) where it reads them; the
+// texture's sampler and texel where it reads a texel.
+void AddTexCoords(std::vector<ShaderReplacement>& r, bool passed, bool texel)
 {
   Prepend(r, true, "//VTK::Light::Dec",
-    std::string("in vec2 ") + TextureCoordinateAttributeName +
-      ";\nout vec2 shadelabTCoordVSOutput;\n");
+    std::string("in vec2 ") + TextureCoordinateAttributeName + ";\n" +
+      (passed ? "out vec2 shadelabTCoordVSOutput;\n" : ""));
+  if (passed)
+  {
+    Prepend(r, true, "//VTK::Light::Impl",
+      std::string("  shadelabTCoordVSOutput = ") + TextureCoordinateAttributeName + ";\n");
+    Prepend(r, false, "//VTK::Light::Dec",
+      (texel ? std::string("uniform sampler2D ") + TextureSamplerName + ";\n" : std::string()) +
+        "in vec2 shadelabTCoordVSOutput;\n");
+  }
+  if (texel)
+  {
+    Prepend(r, false, "//VTK::Light::Impl", TexelSource);
+  }
+}
+
+// ShaderFeatures::NormalMap, the line that perturbs unit normal `n` with
+// tangent `t` (in view coordinates) of handedness `w` at texture coordinates `st`.
+std::string MapNormalLine(const std::string& indent, const std::string& target,
+  const std::string& n, const std::string& t, const std::string& w, const std::string& st)
+{
+  return indent + target + " = shadelabMapNormal(" + n + ", " + t + ", " + w + ", " + st +
+    "); // shadelab: normal map\n";
+}
+
+// Phong: the tangents to the fragment, in view coordinates (the normal's
+// matrix: the camera's rotation), interpolated as the normals are.
+void AddTangentPassing(std::vector<ShaderReplacement>& r)
+{
+  Prepend(r, true, "//VTK::Light::Dec",
+    std::string("in vec4 ") + TangentAttributeName + ";\nout vec4 shadelabTangentVCVSOutput;\n");
   Prepend(r, true, "//VTK::Light::Impl",
-    std::string("  shadelabTCoordVSOutput = ") + TextureCoordinateAttributeName + ";\n");
-  Prepend(r, false, "//VTK::Light::Dec",
-    std::string("uniform sampler2D ") + TextureSamplerName +
-      ";\nin vec2 shadelabTCoordVSOutput;\n");
-  Prepend(r, false, "//VTK::Light::Impl", TexelSource);
+    std::string("  shadelabTangentVCVSOutput = vec4(normalMatrix * ") + TangentAttributeName +
+      ".xyz, " + TangentAttributeName + ".w);\n");
+  Prepend(r, false, "//VTK::Light::Dec", "in vec4 shadelabTangentVCVSOutput;\n");
+}
+
+// Gouraud: the vertex's unit normal n / len perturbed before it lights
+// front and back (VertexLightingSource and its sums apart).
+std::string WithVertexNormalMapped(const std::string& lighting)
+{
+  const std::string opening = "    if (len > shadelabTinyLength && !isinf(len))\n    {\n";
+  const std::size_t at = lighting.find(opening) + opening.size();
+  std::string rest = lighting.substr(at);
+  for (std::size_t p = rest.find("n / len"); p != std::string::npos; p = rest.find("n / len", p))
+  {
+    rest.replace(p, 7, "shadelabMappedN");
+  }
+  return lighting.substr(0, at) +
+    MapNormalLine("      ", "vec3 shadelabMappedN", "n / len",
+      std::string("normalMatrix * ") + TangentAttributeName + ".xyz",
+      TangentAttributeName + std::string(".w"), TextureCoordinateAttributeName) +
+    rest;
 }
 
 // Per-vertex kd for the fragment stage: the vertex stage passes the
@@ -273,6 +323,11 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
     f.Drawn == Representation::Surface
       ? "normalVCVSOutput"
       : "shadelabTowardsViewer(normalVCVSOutput, vertexVCVSOutput.xyz)");
+  if (f.MapsNormals())
+  {
+    lighting = WithVertexNormalMapped(lighting);
+    declarations = std::string("in vec4 ") + TangentAttributeName + ";\n" + declarations;
+  }
   if (f.VertexKd)
   {
     declarations = std::string("in vec4 ") + VertexKdAttributeName + ";\n" + declarations;
@@ -315,17 +370,34 @@ void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   {
     declarations += TexelKsUniformsSource;
   }
-  shade += FillGlsl(FaceNormalFetchSource, FaceNormalSamplerName) +
-    (f.Drawn == Representation::Surface
-        ? ""
-        : "  n = shadelabTowardsViewer(n, shadelabProvokingVC.xyz);\n") +
+  shade += FillGlsl(FaceNormalFetchSource, FaceNormalSamplerName);
+  if (f.MapsNormals())
+  {
+    declarations +=
+      "flat in vec4 shadelabProvokingTangent;\nflat in vec2 shadelabProvokingTCoord;\n";
+    shade += "  if (len > shadelabTinyLength && !isinf(len))\n  {\n" +
+      MapNormalLine("    ", "n", "n / len", "shadelabNormalMatrix * shadelabProvokingTangent.xyz",
+        "shadelabProvokingTangent.w", "shadelabProvokingTCoord") +
+      "    len = 1.0;\n  }\n";
+  }
+  shade += std::string(f.Drawn == Representation::Surface
+               ? ""
+               : "  n = shadelabTowardsViewer(n, shadelabProvokingVC.xyz);\n") +
     (apart ? FlatLightingApartSource : FlatLightingSource);
   if (apart)
   {
     shade += ApartEquation(f);
   }
-  r.push_back({ true, "//VTK::Light::Dec", "flat out vec4 shadelabProvokingVC;\n" });
-  r.push_back({ true, "//VTK::Light::Impl", "  shadelabProvokingVC = vertexVCVSOutput;\n" });
+  r.push_back({ true, "//VTK::Light::Dec",
+    std::string("flat out vec4 shadelabProvokingVC;\n") +
+      (f.MapsNormals() ? std::string("in vec4 ") + TangentAttributeName +
+            ";\nflat out vec4 shadelabProvokingTangent;\nflat out vec2 shadelabProvokingTCoord;\n"
+                       : "") });
+  r.push_back({ true, "//VTK::Light::Impl",
+    std::string("  shadelabProvokingVC = vertexVCVSOutput;\n") +
+      (f.MapsNormals() ? std::string("  shadelabProvokingTangent = ") + TangentAttributeName +
+            ";\n  shadelabProvokingTCoord = " + TextureCoordinateAttributeName + ";\n"
+                       : "") });
   if (f.VertexKd)
   {
     AddVertexKdPassing(r, "flat ");
@@ -341,6 +413,13 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   const bool surface = f.Drawn == Representation::Surface;
   std::string declarations = LitSource(f) + "//VTK::Light::Dec";
   std::string shade = surface ? ShadeFragmentSource : ShadeElementFragmentSource;
+  if (f.MapsNormals())
+  {
+    const std::string normalised = "    shadelabN = normalVCVSOutput / shadelabLength;\n";
+    shade.insert(shade.find(normalised) + normalised.size(),
+      MapNormalLine("    ", "shadelabN", "shadelabN", "shadelabTangentVCVSOutput.xyz",
+        "shadelabTangentVCVSOutput.w", "shadelabTCoordVSOutput"));
+  }
   if (f.VertexKd)
   {
     AddVertexKdPassing(r);
@@ -370,6 +449,10 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   r.push_back({ false, "//VTK::Light::Dec", declarations });
   r.push_back({ false, "//VTK::UniformFlow::Impl", surface ? GeometricNormalSource : "" });
   r.push_back({ false, "//VTK::Light::Impl", shade });
+  if (f.MapsNormals())
+  {
+    AddTangentPassing(r); // after the stage's own declarations, which it prepends to
+  }
 }
 }
 
@@ -476,9 +559,11 @@ std::vector<ShaderReplacement> GenerateShaderReplacements(const ShaderFeatures& 
       AddFragmentLit(f, r);
       break;
   }
-  if (f.ReadsTexel())
+  if (f.ReadsTexel() || f.MapsNormals())
   {
-    AddTexelLookup(r);
+    AddTexCoords(r,
+      f.ReadsTexel() || (f.MapsNormals() && f.Rule != Shading::Gouraud && f.Rule != Shading::Flat),
+      f.ReadsTexel());
   }
   if (f.BehindLines)
   {

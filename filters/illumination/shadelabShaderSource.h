@@ -88,6 +88,11 @@ struct ShaderFeatures
   // the equation adds ks * E(R) where the rule lights (shadelabEnvironment.h),
   // only with Specular (ks zero reflects nothing) and a rule that lights.
   bool Environment = false;
+  // A normal map (NormalMapSamplerName, NormalScaleName) in the frame of the
+  // vertices' tangents (TangentAttributeName) at the texture coordinates:
+  // the normal is perturbed where the rule takes it (phong per fragment,
+  // gouraud per vertex, flat at the provoking vertex), on a lit surface.
+  bool NormalMap = false;
 
   bool Textured() const
   {
@@ -115,6 +120,12 @@ struct ShaderFeatures
   bool Reflects() const
   {
     return this->Environment && this->Specular && !this->AllFeatures && this->Rule != Shading::None;
+  }
+  /** The normal map's code is compiled in: a lit rule drawing the surface. */
+  bool MapsNormals() const
+  {
+    return this->NormalMap && !this->AllFeatures && this->Drawn == Representation::Surface &&
+      this->Rule != Shading::None;
   }
   /** A light casts shadows. */
   bool CastsShadows() const
@@ -159,6 +170,13 @@ extern const char* const ShadowBiasName;
  */
 extern const char* const EnvironmentSamplerName;
 extern const char* const EnvironmentFrameName;
+/**
+ * The normal map's sampler and the scale of its x and y, and the vertex
+ * attribute (x, y, z, handedness) of the tangents it is read in the frame of.
+ */
+extern const char* const NormalMapSamplerName;
+extern const char* const NormalScaleName;
+extern const char* const TangentAttributeName;
 /**
  * The comment that ends each generated line computing a term of the
  * equation, followed by the terms' names, comma-separated ("ambient",

@@ -201,6 +201,11 @@ bool UsableInterpolatedNormal(const Vec3& interpolatedN)
   return Usable(length(interpolatedN), ShortNormal);
 }
 
+bool UsableVertexNormal(const Vec3& N)
+{
+  return Usable(length(N), TinyLength);
+}
+
 IlluminationTerms ShadeFragment(const IlluminationInputs& in, const Vec3& P,
   const Vec3& interpolatedN, const Vec3& geometricN, bool frontFacing)
 {
@@ -223,9 +228,8 @@ IlluminationTerms ShadeFragment(const IlluminationInputs& in, const Vec3& P,
 IlluminationTerms ShadeVertex(
   const IlluminationInputs& in, const Vec3& P, const Vec3& N, bool front)
 {
-  const double len = length(N);
   // No usable normal: N = 0 makes N.L = 0 for every light, ambient only.
-  const Vec3 unit = Usable(len, TinyLength) ? (1 / len) * N : Vec3{ 0, 0, 0 };
+  const Vec3 unit = UsableVertexNormal(N) ? (1 / length(N)) * N : Vec3{ 0, 0, 0 };
   return IlluminateTerms(in, P, front ? unit : -unit);
 }
 

@@ -11,6 +11,7 @@
 
 #include "shadelabEnvironment.h"
 #include "shadelabIllumination.h"
+#include "shadelabNormalMap.h"
 #include "shadelabTexture.h"
 
 #include <cstddef>
@@ -43,6 +44,9 @@ struct IlluminationInputs
   // Environment reflections: ks * E(R) added where the rule lights, its
   // Frame from the computation's frame (shadelabEnvironment.h).
   std::optional<EnvironmentMap> Environment;
+  // A normal map: the normal that lights is perturbed by it where the rule
+  // takes the normal (ShadeTriangleFragment, shadelabNormalMap.h).
+  std::optional<NormalMap> NormalTexture;
   Rgb Ambient{}; // Ia
   std::vector<FrameLight> Lights;
   Reflection Model = Reflection::BlinnPhong;
@@ -130,6 +134,9 @@ Rgb Illuminate(const IlluminationInputs& in, const Vec3& P, const Vec3& N);
  * 1e-6 and finite. Otherwise ShadeFragment falls back to the geometric one.
  */
 bool UsableInterpolatedNormal(const Vec3& interpolatedN);
+
+/** Whether a vertex (or flat's face) normal lights: ShadeVertex's test. */
+bool UsableVertexNormal(const Vec3& N);
 
 /**
  * Phong shading: one fragment from interpolated position and normal. The

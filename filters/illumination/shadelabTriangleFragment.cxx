@@ -103,6 +103,15 @@ ShadedFragment ShadeTriangleFragment(
     s.Ks = texture.TexelKs(material.Surface.Ks, *s.Texel);
   }
   const bool vertexLit = rule == Shading::Flat || rule == Shading::Gouraud;
+  // Normal n (any length) perturbed at vertex k, where it lights.
+  const auto mapped = [&](const Vec3& n, int k) -> std::optional<NormalMapping>
+  {
+    if (!material.NormalTexture || !UsableVertexNormal(n))
+    {
+      return std::nullopt;
+    }
+    return MapNormal(*material.NormalTexture, normalize(n), f.Tangents[k], f.TexCoords[k]);
+  };
   // The inputs with vertex k's kd (the material's without VertexKd), and
   // ks = 1 where a vertex-lit rule's fragment multiplies by the texel's ks.
   const auto atVertex = [&](int k)
@@ -137,7 +146,9 @@ ShadedFragment ShadeTriangleFragment(
       s.Color = in.Surface.Kd;
       return s;
     case Shading::Flat:
-      s.Terms = ShadeFlat(in, P[0], P[1], P[2], f.Front);
+      s.Mapped = mapped(s.FaceNormal, 2);
+      s.Terms = s.Mapped ? ShadeVertex(in, P[2], s.Mapped->Perturbed, f.Front)
+                         : ShadeFlat(in, P[0], P[1], P[2], f.Front);
       if (s.Texel)
       {
         MultiplyByTexel(s.Terms, texture, *s.Texel, *s.Ks);
@@ -146,7 +157,9 @@ ShadedFragment ShadeTriangleFragment(
     case Shading::Gouraud:
       for (int k = 0; k < 3; ++k)
       {
-        s.Vertices[k] = ShadeVertex(atVertex(k), P[k], f.Normals[k], f.Front);
+        s.VerticesMapped[k] = mapped(f.Normals[k], k);
+        s.Vertices[k] = ShadeVertex(atVertex(k), P[k],
+          s.VerticesMapped[k] ? s.VerticesMapped[k]->Perturbed : f.Normals[k], f.Front);
       }
       s.Terms = MixTerms(s.Vertices, w);
       if (s.Texel)
@@ -163,7 +176,18 @@ ShadedFragment ShadeTriangleFragment(
       const Vec3 interpolated = Mix<Vec3>(w, [&](int k) { return f.Normals[k]; });
       const Vec3 geometric = f.Front ? s.FaceNormal : -s.FaceNormal; // towards the viewer
       s.FaceNormalFallback = !UsableInterpolatedNormal(interpolated);
-      s.Terms = ShadeFragment(in, s.Point, interpolated, geometric, f.Front);
+      if (!s.FaceNormalFallback && material.NormalTexture)
+      {
+        const Tangent tangent{ Mix<double>(w, [&](int k) { return f.Tangents[k][0]; }),
+          Mix<double>(w, [&](int k) { return f.Tangents[k][1]; }),
+          Mix<double>(w, [&](int k) { return f.Tangents[k][2]; }),
+          Mix<double>(w, [&](int k) { return f.Tangents[k][3]; }) };
+        s.Mapped = MapNormal(*material.NormalTexture, normalize(interpolated), tangent,
+          { Mix<double>(w, [&](int k) { return f.TexCoords[k][0]; }),
+            Mix<double>(w, [&](int k) { return f.TexCoords[k][1]; }) });
+      }
+      s.Terms = ShadeFragment(
+        in, s.Point, s.Mapped ? s.Mapped->Perturbed : interpolated, geometric, f.Front);
       break;
     }
   }

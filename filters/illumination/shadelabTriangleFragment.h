@@ -25,6 +25,8 @@ struct TriangleFragment
   std::optional<std::array<Rgb, 3>> VertexKd;
   // The vertices' texture coordinates (s, t), read where the inputs have a texture.
   std::array<std::array<double, 2>, 3> TexCoords{};
+  // The vertices' tangents, read where the inputs have a normal map.
+  std::array<Tangent, 3> Tangents{};
 };
 
 /** The fragment as its rule shades it. */
@@ -50,6 +52,11 @@ struct ShadedFragment
   // none, which does not light.
   IlluminationTerms Terms;
   std::array<IlluminationTerms, 3> Vertices; // gouraud: the equation at each vertex
+  // With a normal map, the normal it gave where the rule lit: phong's at
+  // the fragment, flat's at the provoking vertex (Mapped), gouraud's at
+  // each vertex (VerticesMapped). Empty where the normal had no length.
+  std::optional<NormalMapping> Mapped;
+  std::array<std::optional<NormalMapping>, 3> VerticesMapped;
 };
 
 /**
@@ -69,7 +76,12 @@ struct ShadedFragment
  * where the rule evaluates it, the texture itself seen per fragment. An
  * environment's ks*E(R) goes with the specular terms: E(R) where the rule
  * lights (gouraud's mixed from its vertices, flat's at the provoking
- * vertex), times the ks that lights.
+ * vertex), times the ks that lights. A normal map perturbs the normal
+ * where the rule takes it: phong's unit interpolated normal with the
+ * weights' mix of the tangents and the texel at the fragment; gouraud's at
+ * each vertex with its tangent and its texel; flat's face normal with the
+ * provoking vertex's tangent and texel. The perturbed normal then lights as
+ * the normal would (back faces flipped).
  */
 ShadedFragment ShadeTriangleFragment(
   const IlluminationInputs& in, Shading rule, const TriangleFragment& f);

@@ -2,6 +2,7 @@
 
 #include "shadelabShadowCasters.h"
 #include "shadelabTriangleMesh.h"
+#include "shadelabVertexTangents.h"
 #include "vtkShadelabPolyDataMapper.h"
 
 #include <vtkActor.h>
@@ -212,6 +213,13 @@ void vtkShadelabShading::SetEnvironment(const std::optional<EnvironmentMap>& env
   this->Modified();
 }
 
+void vtkShadelabShading::SetNormalMap(const std::optional<NormalMap>& map)
+{
+  this->Relief = map;
+  this->Features.NormalMap = map.has_value();
+  this->Modified();
+}
+
 void vtkShadelabShading::SetFog(const Fog& fog, const std::optional<Rgb>& background)
 {
   this->Features.Fog = fog.Mode;
@@ -305,10 +313,15 @@ void vtkShadelabShading::Attach(
       mapper->MapDataArrayToVertexAttribute(
         VertexKdAttributeName, ColorsArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
-    if (this->Features.ReadsTexel())
+    if (this->Features.ReadsTexel() || this->Features.MapsNormals())
     {
       mapper->MapDataArrayToVertexAttribute(TextureCoordinateAttributeName,
         TextureCoordinatesArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    }
+    if (this->Features.MapsNormals())
+    {
+      mapper->MapDataArrayToVertexAttribute(
+        TangentAttributeName, TangentsArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     }
   }
   if (previous)
@@ -331,6 +344,10 @@ void vtkShadelabShading::Attach(
       this->Texture.Map.Image.get(), this->TextureObject);
     takeOver(previous->EnvironmentObject, imageOf(previous->Environment),
       imageOf(this->Environment), this->EnvironmentObject);
+    const auto reliefOf = [](const std::optional<NormalMap>& m)
+    { return m ? m->Map.Image.get() : nullptr; };
+    takeOver(previous->ReliefObject, reliefOf(previous->Relief), reliefOf(this->Relief),
+      this->ReliefObject);
   }
   if (previous && previous->Actor == actor)
   {
@@ -434,6 +451,10 @@ void vtkShadelabShading::SetUniforms(vtkShaderProgram* program)
   {
     this->BindEnvironment(program, rotation);
   }
+  if (this->Features.MapsNormals())
+  {
+    this->BindNormalMap(program);
+  }
   if (!this->Features.Shadows.empty())
   {
     this->BindShadowMaps(program, view);
@@ -492,4 +513,5 @@ void vtkShadelabShading::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KaTexture: " << this->Features.KaTexture << "\n";
   os << indent << "KsTexture: " << this->Features.KsTexture << "\n";
   os << indent << "Environment: " << this->Features.Environment << "\n";
+  os << indent << "NormalMap: " << this->Features.NormalMap << "\n";
 }

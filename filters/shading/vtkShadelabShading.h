@@ -83,6 +83,14 @@ public:
    */
   VTK_WRAPEXCLUDE void SetEnvironment(const std::optional<shadelab::EnvironmentMap>& environment);
 
+  /**
+   * A normal map (ShaderFeatures::NormalMap) read in the frame of the mesh's
+   * tangents (point data TangentsArrayName, shadelabVertexTangents.h) at its
+   * texture coordinates: it perturbs the normal where the rule takes it.
+   * None (the default): the code has none. Not wrapped.
+   */
+  VTK_WRAPEXCLUDE void SetNormalMap(const std::optional<shadelab::NormalMap>& map);
+
   ///@{
   /**
    * The scene part by part, for wrappers such as Python that cannot pass
@@ -182,6 +190,7 @@ private:
   void SetUniforms(vtkShaderProgram* program);
   void BindTexture(vtkShaderProgram* program);
   void BindEnvironment(vtkShaderProgram* program, const double viewRotation[3][3]);
+  void BindNormalMap(vtkShaderProgram* program);
   void BindFaceNormals(vtkShaderProgram* program);
   void AddLight(const shadelab::Light& light);
   void BindShadowMaps(vtkShaderProgram* program, vtkMatrix4x4* view);
@@ -204,6 +213,9 @@ private:
   std::optional<shadelab::EnvironmentMap> Environment;
   // Environment->Map in OpenGL, made and taken over as TextureObject is.
   vtkSmartPointer<vtkTextureObject> EnvironmentObject;
+  std::optional<shadelab::NormalMap> Relief;
+  // Relief->Map in OpenGL, made and taken over as TextureObject is.
+  vtkSmartPointer<vtkTextureObject> ReliefObject;
   // Flat's face normals in OpenGL, made at the first draw of
   // FaceNormalsMesh (not owned) for its window.
   shadelab::FaceNormalTexture FaceNormals;

@@ -141,6 +141,13 @@ void vtkShadelabShading::BindTexture(vtkShaderProgram* program)
     this->Texture.Map, this->TextureObject, TextureSamplerName);
 }
 
+void vtkShadelabShading::BindNormalMap(vtkShaderProgram* program)
+{
+  BindMap(program, vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow()),
+    this->Relief->Map, this->ReliefObject, NormalMapSamplerName);
+  program->SetUniformf(NormalScaleName, static_cast<float>(this->Relief->Scale));
+}
+
 void vtkShadelabShading::BindEnvironment(vtkShaderProgram* program, const double viewRotation[3][3])
 {
   BindMap(program, vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow()),

@@ -151,6 +151,8 @@ struct GridSpec
   // 35 degrees about the x axis so that the camera sees into its hole: a
   // light from above, nearly in its plane, shadows the inside of its lower half.
   bool Torus = false;
+  // Every vertex's normal, instead of the bowl's (a plane's normals tilted alike).
+  std::optional<Vec3> EveryNormal;
 };
 
 constexpr std::array<double, 3> SheetStep{ 0.25, 0.125, -1 };
@@ -261,6 +263,40 @@ inline EnvironmentImage EnvironmentOf(EnvironmentKind kind)
         e.Bytes.push_back(kind == EnvironmentKind::Pattern
             ? static_cast<unsigned char>((37 * column + 71 * row + 97 * channel) % 251)
             : c[channel]);
+      }
+    }
+  }
+  return e;
+}
+
+// The test's normal maps (--normal-map), 8-bit RGB, top row first:
+// Constant one texel colour everywhere, a tilt towards +s and -t; Pattern
+// TextureSide x TextureSide texels, no two alike, each a direction leaning
+// its own way, so that a flipped or shifted lookup, or a wrong frame, shows.
+enum class NormalMapKind
+{
+  None,
+  Constant,
+  Pattern
+};
+
+constexpr unsigned char ConstantNormal[3] = { 200, 110, 220 };
+
+inline EnvironmentImage NormalMapOf(NormalMapKind kind)
+{
+  EnvironmentImage e;
+  e.Width = e.Height = TextureSide;
+  for (int row = 0; row < e.Height; ++row)
+  {
+    for (int column = 0; column < e.Width; ++column)
+    {
+      const unsigned char pattern[3] = { static_cast<unsigned char>(40 + 45 * column + 7 * row),
+        static_cast<unsigned char>(215 - 50 * row + 6 * column),
+        static_cast<unsigned char>(150 + 30 * ((column + 2 * row) % 4)) };
+      for (int channel = 0; channel < 3; ++channel)
+      {
+        e.Bytes.push_back(
+          kind == NormalMapKind::Constant ? ConstantNormal[channel] : pattern[channel]);
       }
     }
   }
@@ -410,7 +446,7 @@ inline Mesh Grid(const GridSpec& g)
     {
       const double x = -1 + 2.0 * i / g.Cells, y = -1 + 2.0 * j / g.Cells;
       m.Positions.push_back({ x, y, g.SlopeX * x + g.SlopeY * y });
-      Vec3 normal = GridNormal(g, x, y);
+      Vec3 normal = g.EveryNormal.value_or(GridNormal(g, x, y));
       if (g.BackFaces)
       {
         normal = -normal;
@@ -639,6 +675,11 @@ struct Scene
   EnvironmentKind Environment = EnvironmentKind::None;
   bool ZUp = false;
   bool OwnUp = false;
+  // --normal-map: NormalMapOf(NormalMap) as an 8-bit PNG with scale
+  // NormalScale, at the grid's TexCoordAt (the mesh an OFF), looked up
+  // with Wrap and Filter. Plain grids only: their tangent is GridTangent.
+  NormalMapKind NormalMap = NormalMapKind::None;
+  double NormalScale = 1;
   // --shadows, --shadow-map-size: the oracle casts shadow rays.
   bool Shadows = false;
   int ShadowMapSize = 2048;
@@ -911,10 +952,22 @@ inline std::string OffText(const Scene& s, const Mesh& m)
 // explicitly, lights included (shadelab's default is a light at the camera).
 // The scene's mesh (and MTL, texture) written into dir, and the arguments
 // that draw it as the scene says: the mesh, then the options.
+// A plain grid's tangent, the same at every vertex: dP/ds, TexCoordAt's s
+// running along x on the plane z = SlopeX x + SlopeY y, as the program
+// stores it (float); its handedness -1 where the triangles are wound the
+// other way (their face normal, and so N x T, turned over).
+inline shadelab::Tangent GridTangent(const GridSpec& g)
+{
+  const Vec3 t = normalize(Vec3{ 1, 0, g.SlopeX });
+  return { static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2]),
+    g.BackFaces ? -1.0 : 1.0 };
+}
+
 inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& dir)
 {
   const bool ply = s.Geometry.VertexColors;
-  const bool off = s.Textured && s.Parts.empty(); // --texture's mesh
+  // --texture's and --normal-map's mesh
+  const bool off = (s.Textured || s.NormalMap != NormalMapKind::None) && s.Parts.empty();
   const auto mesh = dir / (ply ? "mesh.ply" : off ? "mesh.off" : "mesh.obj");
   const Mesh m = Grid(s.Geometry);
   WriteText(mesh, ply ? PlyText(s, m) : off ? OffText(s, m) : ObjText(s, m));
@@ -948,6 +1001,18 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
       args.insert(args.end(),
         { "--texture", texture.string(), "--texture-wrap", ToString(s.Wrap), "--texture-filter",
           ToString(s.Filter) });
+    }
+  }
+  if (s.NormalMap != NormalMapKind::None)
+  {
+    const auto normals = dir / "normals.png";
+    const EnvironmentImage n = NormalMapOf(s.NormalMap);
+    WriteImage8(normals, n.Width, n.Height, n.Bytes);
+    args.insert(args.end(), { "--normal-map", normals.string() + ":" + Num(s.NormalScale) });
+    if (!s.Textured)
+    {
+      args.insert(
+        args.end(), { "--texture-wrap", ToString(s.Wrap), "--texture-filter", ToString(s.Filter) });
     }
   }
   if (s.Environment != EnvironmentKind::None)
@@ -1094,6 +1159,14 @@ public:
       t.Map.WrapS = t.Map.WrapT = s.Wrap;
       t.Map.Filter = s.Filter;
       t.Kd = t.Ka = true;
+    }
+    if (s.NormalMap != NormalMapKind::None)
+    {
+      shadelab::NormalMap& n = this->In.NormalTexture.emplace();
+      n.Map.Image = std::make_shared<shadelab::TextureImage>(NormalMapOf(s.NormalMap).Decoded());
+      n.Map.WrapS = n.Map.WrapT = s.Wrap;
+      n.Map.Filter = s.Filter;
+      n.Scale = s.NormalScale;
     }
     if (s.Environment != EnvironmentKind::None)
     {
@@ -1261,7 +1334,7 @@ private:
       on.push_back(t.NdotL > Rounding);
       on.push_back(t.Base > Rounding);
     }
-    if (this->S.Textured && this->S.Filter == shadelab::TextureFilter::Nearest)
+    if (this->NearestTexels())
     {
       on.push_back(static_cast<long long>(std::floor(at.TexCoord[0] * TextureSide)));
       on.push_back(static_cast<long long>(std::floor(at.TexCoord[1] * TextureSide)));
@@ -1278,6 +1351,17 @@ private:
     return on;
   }
 
+  // A nearest texel of the texture, or of the normal map per fragment
+  // (phong's; flat's and gouraud's are read at vertices), is looked up at
+  // Expected::TexCoord: both TextureSide texels a side.
+  bool NearestTexels() const
+  {
+    return this->S.Filter == shadelab::TextureFilter::Nearest &&
+      (this->S.Textured ||
+        (this->S.NormalMap != NormalMapKind::None &&
+          shadelab::RasterRule(this->S.Rule) == Shading::Phong));
+  }
+
   // Per-fragment lighting (phong; flat and gouraud decide at vertices) and
   // nearest texels (every rule):
   // whether one of the switches above changes within EdgeMargin pixels of
@@ -1286,8 +1370,7 @@ private:
   // the ring).
   bool NearSwitch(int t, bool front, double x, double y) const
   {
-    if (shadelab::RasterRule(this->S.Rule) != Shading::Phong &&
-      !(this->S.Textured && this->S.Filter == shadelab::TextureFilter::Nearest))
+    if (shadelab::RasterRule(this->S.Rule) != Shading::Phong && !this->NearestTexels())
     {
       return false;
     }
@@ -1325,6 +1408,7 @@ private:
       f.Positions[k] = this->Triangles.GetPoints()[v];
       f.Normals[k] = this->M.Normals[v];
       f.TexCoords[k] = this->M.TexCoords[v];
+      f.Tangents[k] = GridTangent(this->S.Geometry);
     }
     f.Weights = w;
     f.Front = front;
@@ -1367,7 +1451,9 @@ private:
       e.Coverage = fog.Transparent ? fog.Factor : 1;
     }
     e.Terms = shaded.Terms;
-    e.TexCoord = shaded.TexCoord.value_or(std::array<double, 2>{});
+    e.TexCoord = shaded.TexCoord ? *shaded.TexCoord
+      : shaded.Mapped            ? shaded.Mapped->TexCoord
+                                 : std::array<double, 2>{};
   }
 
   // Shadows: the oracle's shadow ray from P (world coordinates) to light

@@ -1,0 +1,23 @@
+// The lecture's maps as GLSL (doc/design.md, "Maps"): the functions that
+// look a map up where the rule lights, each mirroring its oracle.
+#ifndef shadelabMapSource_h
+#define shadelabMapSource_h
+
+namespace shadelab
+{
+/**
+ * shadelabEnvironmentAt(R): E(R) in view coordinates (the oracle's
+ * EnvironmentAt, shadelabEnvironment.cxx), with its sampler and frame.
+ */
+extern const char* const EnvironmentSource;
+
+/**
+ * shadelabMapNormal(N, T, w, st): unit N perturbed by the normal map at st
+ * in the frame of tangent T with handedness w (the oracle's MapNormal,
+ * shadelabNormalMap.cxx), with its sampler and scale. Reads
+ * shadelabTinyLength.
+ */
+extern const char* const NormalMapSource;
+}
+
+#endif

@@ -1,0 +1,54 @@
+// Normal maps, one of the lecture's maps (doc/design.md, "Maps"): an image
+// whose texel is a direction in the surface's tangent space, which takes
+// the place of the normal where the rule takes the normal (per fragment,
+// per vertex, at the provoking vertex). The shaders perturb the normal as
+// MapNormal does here, in float.
+#ifndef shadelabNormalMap_h
+#define shadelabNormalMap_h
+
+#include "shadelabTexture.h"
+
+#include <array>
+
+namespace shadelab
+{
+/**
+ * A tangent-space normal map with the textures' wrap and filter: its RGB in
+ * [0, 1], taken as stored (data, no sRGB conversion), is the vector
+ * 2 RGB - 1 along (T, B, N), its x and y times Scale (glTF's normalTexture).
+ */
+struct NormalMap
+{
+  TextureMap Map;
+  double Scale = 1;
+};
+
+/**
+ * A vertex's tangent: xyz along the texture's s (any length), w = +1 or -1
+ * the handedness, B = w N x T (glTF's TANGENT).
+ */
+using Tangent = std::array<double, 4>;
+
+/** One normal perturbed by the map, with what it was made of. */
+struct NormalMapping
+{
+  Vec3 N{};                         // unit, as the rule would light without the map
+  Vec3 T{};                         // the tangent made orthogonal to N, unit (0: none)
+  Vec3 B{};                         // w N x T
+  std::array<double, 2> TexCoord{}; // (s, t) where the map is read
+  Rgb Texel{};                      // the map there
+  Vec3 TangentSpace{};              // (Scale (2r - 1), Scale (2g - 1), 2b - 1)
+  Vec3 Perturbed{};                 // unit: what lights; N where T or the sum has no length
+};
+
+/**
+ * Unit normal N perturbed by the map at st, in the frame of tangent: T is
+ * tangent's xyz less its part along N, normalised; the normal is
+ * normalize(x T + y B + z N) of TangentSpace. A tangent along N or of no
+ * length, or a texel whose vector has none, leaves N as it is.
+ */
+NormalMapping MapNormal(
+  const NormalMap& map, const Vec3& N, const Tangent& tangent, const std::array<double, 2>& st);
+}
+
+#endif

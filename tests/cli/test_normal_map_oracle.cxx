@@ -1,0 +1,138 @@
+// Normal maps through the lecture's equation, pixel by pixel: orthographic
+// renders by `shadelab render --normal-map` of the test grid against the
+// double-precision oracle, which perturbs the normal as shadelabNormalMap.h
+// defines it, where each rule takes the normal (phong per fragment,
+// gouraud per vertex, flat at the provoking vertex), in the frame of the
+// grid's tangent (GridTangent, stated on its own). Every rule that lights,
+// a constant and a patterned map, both filters, scales, back faces, with a
+// texture and with an environment (reflected about the perturbed normal),
+// and the 8-bit picture; the scenes and the comparison are oracle_scene.h's.
+//
+// The tolerance is the standard one (1e-4 relative): the map is uploaded
+// as float texels and filtered in float as the textures are
+// (test_texture_oracle.cxx says how that was measured), and the tangent is
+// stored as float (1e-7). With the nearest texel, phong's pixels within
+// the oracle's edge margin of a switch to another texel are left out
+// (Oracle::Switches).
+#include "probe_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace shadelab_test;
+using shadelab::TextureFilter;
+
+namespace
+{
+std::vector<Case> Cases()
+{
+  std::vector<Case> cases;
+  const auto add = CaseAdder(cases);
+  for (Shading r : LitRules)
+  {
+    const std::string rule = ToString(r);
+    for (NormalMapKind kind : { NormalMapKind::Constant, NormalMapKind::Pattern })
+    {
+      for (TextureFilter filter : { TextureFilter::Nearest, TextureFilter::Bilinear })
+      {
+        Scene s;
+        s.Rule = r;
+        s.NormalMap = kind;
+        s.Filter = filter;
+        add(
+          rule + (kind == NormalMapKind::Constant ? "_constant_" : "_pattern_") + ToString(filter),
+          s);
+      }
+    }
+    Scene s;
+    s.Rule = r;
+    s.NormalMap = NormalMapKind::Pattern;
+    s.NormalScale = 0.5;
+    add(rule + "_scale_half", s);
+    s.NormalScale = -1.5;
+    s.Wrap = shadelab::TextureWrap::Clamp;
+    add(rule + "_scale_negative_clamped", s);
+    s.NormalScale = 1;
+    s.Wrap = shadelab::TextureWrap::Repeat;
+    s.Geometry.BackFaces = true;
+    add(rule + "_back_faces", s);
+    s.Geometry.BackFaces = false;
+    s.Geometry.Bump = 0;
+    add(rule + "_plane", s);
+    s.Geometry.Bump = -0.25;
+    s.Textured = true;
+    s.Model = Reflection::Phong;
+    add(rule + "_textured_phong_model", s);
+    s.Textured = false;
+    s.Model = Reflection::BlinnPhong;
+    s.Environment = EnvironmentKind::Pattern;
+    add(rule + "_environment", s);
+    s = ColouredLights();
+    s.Rule = r;
+    s.NormalMap = NormalMapKind::Pattern;
+    s.EightBit = true;
+    add(rule + "_coloured_lights_png", s);
+  }
+  return cases;
+}
+
+class NormalMapOracle : public testing::TestWithParam<Case>
+{
+};
+}
+
+TEST_P(NormalMapOracle, MatchesTheCpuOracle)
+{
+  ExpectMatchesOracle(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, NormalMapOracle, testing::ValuesIn(Cases()),
+  [](const testing::TestParamInfo<Case>& info) { return info.param.Name; });
+
+// A constant normal map on a plane tilts every normal alike: the picture
+// equals the plane drawn with its file's normals tilted so, glTF's
+// definition written out here on its own (x along dP/ds, y along dP/dt, z
+// along the normal). Gouraud and phong take the normals; within float's
+// rounding of the two ways to the same normal (1e-5).
+TEST(NormalMap, AConstantMapTiltsTheNormalsAsTheGeometryWould)
+{
+  GridSpec plane;
+  plane.Bump = 0;
+  const Vec3 n = normalize(Vec3{ -plane.SlopeX, -plane.SlopeY, 1 });
+  const Vec3 dPds = Vec3{ 1, 0, plane.SlopeX };
+  const Vec3 dPdt = Vec3{ 0, 1, plane.SlopeY };
+  const Vec3 t = normalize(dPds - dot(n, dPds) * n);
+  const Vec3 b = normalize(dPdt - dot(n, dPdt) * n - dot(t, dPdt) * t);
+  Vec3 m;
+  for (int c = 0; c < 3; ++c)
+  {
+    m[c] = 2 * ConstantNormal[c] / 255.0 - 1;
+  }
+  const Vec3 tilted = normalize(m[0] * t + m[1] * b + m[2] * n);
+  for (Shading r : { Shading::Gouraud, Shading::Phong })
+  {
+    SCOPED_TRACE(ToString(r));
+    Scene mapped;
+    mapped.Rule = r;
+    mapped.Geometry = plane;
+    mapped.NormalMap = NormalMapKind::Constant;
+    Scene geometry = mapped;
+    geometry.NormalMap = NormalMapKind::None;
+    geometry.Geometry.EveryNormal = tilted;
+    TempDir dir;
+    std::string error;
+    const Image a = Render(mapped, dir, error);
+    ASSERT_EQ(error, "");
+    const Image g = Render(geometry, dir, error);
+    ASSERT_EQ(error, "");
+    ASSERT_EQ(a.Pixels.size(), g.Pixels.size());
+    double largest = 0;
+    int lit = 0;
+    for (std::size_t i = 0; i < a.Pixels.size(); ++i)
+    {
+      largest = std::max(largest, static_cast<double>(std::abs(a.Pixels[i] - g.Pixels[i])));
+      lit += g.Pixels[i] > 0.3;
+    }
+    EXPECT_LT(largest, 1e-5);
+    EXPECT_GT(lit, 1000); // the tilt lights the plane, not only its ambient term
+  }
+}

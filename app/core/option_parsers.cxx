@@ -110,7 +110,7 @@ ScaledImage ParseScaledImage(const std::string& text)
 {
   ScaledImage image{ text, 1 };
   const std::size_t colon = text.rfind(':');
-  if (colon != std::string::npos && colon > 0)
+  if (colon != std::string::npos)
   {
     try
     {

@@ -69,6 +69,12 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       shown.Error = "--normal-map needs texture coordinates, and the mesh has none";
       return shown;
     }
+    if (IsGrey(*images.NormalMap))
+    {
+      shown.Input = options.NormalMap->Image;
+      shown.Error = "is grey, a height map rather than a normal map (whose RGB is a direction)";
+      return shown;
+    }
   }
   if (!options.Environment.empty())
   {

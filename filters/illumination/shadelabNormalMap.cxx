@@ -10,6 +10,18 @@ namespace
 constexpr double TinyLength = 1e-20;
 }
 
+bool IsGrey(const TextureImage& image)
+{
+  for (std::size_t i = 0; i + 2 < image.Pixels.size(); i += 3)
+  {
+    if (image.Pixels[i] != image.Pixels[i + 1] || image.Pixels[i] != image.Pixels[i + 2])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 NormalMapping MapNormal(
   const NormalMap& map, const Vec3& N, const Tangent& tangent, const std::array<double, 2>& st)
 {

@@ -47,6 +47,12 @@ struct NormalMapping
  * normalize(x T + y B + z N) of TangentSpace. A tangent along N or of no
  * length, or a texel whose vector has none, leaves N as it is.
  */
+/**
+ * Every texel's R, G and B are equal: a height map's image (grey), which
+ * as a normal map would point every normal along (1, 1, 1) or its opposite.
+ */
+bool IsGrey(const TextureImage& image);
+
 NormalMapping MapNormal(
   const NormalMap& map, const Vec3& N, const Tangent& tangent, const std::array<double, 2>& st);
 }

@@ -560,6 +560,47 @@ const BadCase Cases[] = {
         { "--shading", "raytrace", "--environment", (d / "sky.png").string() });
     },
     1, { "sky.png", "reflects the mesh by its rays" } },
+  // --normal-map: a mesh without texture coordinates named with that
+  // problem, the image with its own; a grey image is a height map.
+  { "NormalMapWithoutTextureCoordinates",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "n.png", 1, 1, { 128, 128, 255 });
+      return WithMesh(d, "t.obj", Tetrahedron, { "--normal-map", (d / "n.png").string() });
+    },
+    1, { "t.obj", "--normal-map needs texture coordinates" } },
+  { "NormalMapMissing",
+    [](const TempDir& d) {
+      return WithMesh(d, "st.off", TexturedQuad, { "--normal-map", (d / "nope.png:2").string() });
+    },
+    1, { "nope.png", "No such file" } },
+  { "NormalMapUnreadable",
+    [](const TempDir& d)
+    {
+      WriteText(d / "text.png", "not a picture\n");
+      return WithMesh(d, "st.off", TexturedQuad, { "--normal-map", (d / "text.png").string() });
+    },
+    1, { "text.png", "not an image OpenImageIO can read" } },
+  { "NormalMapGrey",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "height.png", 2, 1, { 10, 10, 10, 200, 200, 200 });
+      return WithMesh(d, "st.off", TexturedQuad, { "--normal-map", (d / "height.png").string() });
+    },
+    1, { "height.png", "a height map rather than a normal map" } },
+  { "NormalMapNamesNoImage",
+    [](const TempDir& d) {
+      return WithMesh(d, "st.off", TexturedQuad, { "--normal-map", ":2" });
+    },
+    2, { "--normal-map", "names no image" } },
+  { "NormalMapUnderRaytrace",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "n.png", 1, 1, { 128, 128, 255 });
+      return WithMesh(d, "st.off", TexturedQuad,
+        { "--shading", "raytrace", "--normal-map", (d / "n.png").string() });
+    },
+    1, { "n.png", "not a normal map's" } },
   // Files that are no regular files: read forever (/dev/zero) or block in
   // open() (a FIFO) unless refused first.
   { "MeshIsALinkToDevZero",

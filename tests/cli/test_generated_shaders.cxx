@@ -232,3 +232,32 @@ TEST(GeneratedShaders, EnvironmentCodeOnlyWhereItReflects)
     EXPECT_FALSE(Contains(dull.Vertex + dull.Fragment, "shadelabEnvironment"));
   }
 }
+
+// A normal map's lookup is in the stage that takes the normal (gouraud's
+// vertex stage, flat's and phong's fragment stage) and nowhere without one,
+// under none, or drawing edges (which have no tangent plane).
+TEST(GeneratedShaders, NormalMapCodeOnlyWhereItMapsNormals)
+{
+  TempDir dir;
+  const auto mesh = dir / "square.off";
+  WriteText(mesh, "STOFF\n4 2 0\n0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n");
+  WriteImage8(dir / "n.png", 2, 1, { 200, 110, 220, 128, 128, 255 });
+  const std::string map = (dir / "n.png").string() + ":0.5";
+  for (const char* rule : { "none", "flat", "gouraud", "phong" })
+  {
+    SCOPED_TRACE(rule);
+    const std::string r = rule;
+    const std::string name = r + "-blinn";
+    const Dumped plain = Render(dir, name, { "--shading", rule }, mesh);
+    EXPECT_FALSE(Contains(plain.Vertex + plain.Fragment, "Tangent"));
+    const Dumped mapped = Render(dir, name, { "--shading", rule, "--normal-map", map }, mesh);
+    const std::string lit = r == "gouraud" ? mapped.Vertex : mapped.Fragment;
+    const std::string unlit = r == "gouraud" ? mapped.Fragment : mapped.Vertex;
+    EXPECT_EQ(Contains(lit, "uniform sampler2D shadelabNormalMap;"), r != "none");
+    EXPECT_EQ(Contains(lit, "); // shadelab: normal map\n"), r != "none");
+    EXPECT_FALSE(Contains(unlit, "shadelabNormalMap"));
+    const Dumped edges = Render(
+      dir, name, { "--shading", rule, "--normal-map", map, "--representation", "wireframe" }, mesh);
+    EXPECT_FALSE(Contains(edges.Vertex + edges.Fragment, "shadelabNormalMap"));
+  }
+}

@@ -84,6 +84,14 @@ void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
   }
 }
 
+// A normal map's perturbation: the normal before it, the tangent frame,
+// where the map was read and what it held, and the normal that lit.
+ordered_json MappingJson(const NormalMapping& m)
+{
+  return { { "normal", m.N }, { "tangent", m.T }, { "bitangent", m.B }, { "texcoord", m.TexCoord },
+    { "texel", m.Texel }, { "tangent_space", m.TangentSpace }, { "perturbed", m.Perturbed } };
+}
+
 ordered_json VertexJson(const PixelProbe& p, int k)
 {
   ordered_json v;
@@ -102,6 +110,10 @@ ordered_json VertexJson(const PixelProbe& p, int k)
   {
     const IlluminationTerms& t = p.Shaded.Vertices[k];
     v["color"] = t.Total();
+    if (const auto& m = p.Shaded.VerticesMapped[k])
+    {
+      v["normal_map"] = MappingJson(*m);
+    }
     AddTerms(v, p, t);
   }
   return v;
@@ -232,6 +244,10 @@ ordered_json ProbeJson(const PixelProbe& p)
       j["position"] = p.Shaded.Terms.P;
       AddTerms(j, p, p.Shaded.Terms);
       break;
+  }
+  if (p.Shaded.Mapped) // phong's at the fragment, flat's at the provoking vertex
+  {
+    j["normal_map"] = MappingJson(*p.Shaded.Mapped);
   }
   if (p.Rule == Shading::Flat)
   {

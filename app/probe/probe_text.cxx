@@ -236,6 +236,23 @@ void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
   }
 }
 
+// A normal map's perturbation of the normal the rule took (`where`).
+void AddMapping(
+  Lines& out, const std::string& indent, const NormalMapping& m, const std::string& where)
+{
+  const std::string in = indent + "  ";
+  out.Add(indent, "normal map", where);
+  out.Add(in, "N = " + ProbeTriple(m.N), "the normal the rule takes, unit, before the map");
+  out.Add(in, "T = " + ProbeTriple(m.T), "the tangent (along s) made orthogonal to N");
+  out.Add(in, "B = " + ProbeTriple(m.B), "w N x T, w the tangent's handedness");
+  out.Add(in,
+    "texel = " + ProbeTriple(m.Texel) + " at (s, t) = (" + ProbeNumber(m.TexCoord[0]) + ", " +
+      ProbeNumber(m.TexCoord[1]) + ")",
+    "the map there, as stored");
+  out.Add(in, "(x, y, z) = " + ProbeTriple(m.TangentSpace), "(scale (2r-1), scale (2g-1), 2b-1)");
+  out.Add(in, "N' = " + ProbeTriple(m.Perturbed), "normalize(x T + y B + z N): what lights");
+}
+
 std::string Point(vtkIdType id)
 {
   return "point " + std::to_string(id);
@@ -248,7 +265,8 @@ std::string PhongNormal(const PixelProbe& p)
   {
     return "the face normal, towards the viewer: w0*N0 + w1*N1 + w2*N2 is too short";
   }
-  return std::string("normalize(w0*N0 + w1*N1 + w2*N2)") +
+  return std::string(p.Shaded.Mapped ? "N', normalize(w0*N0 + w1*N1 + w2*N2) perturbed by the map"
+                                     : "normalize(w0*N0 + w1*N1 + w2*N2)") +
     (p.Fragment.Front ? "" : ", flipped: a back face");
 }
 }
@@ -335,8 +353,13 @@ std::string ProbeText(const PixelProbe& p)
     case Shading::Flat:
       out.Add("", "P = P2 = " + ProbeTriple(t.P),
         "the provoking vertex: the triangle's last, " + Point(p.Corners[2]));
+      if (p.Shaded.Mapped)
+      {
+        AddMapping(out, "", *p.Shaded.Mapped, "at the provoking vertex");
+      }
       AddTerms(out, "", p, t,
-        std::string("the face normal normalize((P1 - P0) x (P2 - P0))") +
+        std::string(p.Shaded.Mapped ? "N', the face normal perturbed by the map"
+                                    : "the face normal normalize((P1 - P0) x (P2 - P0))") +
           (p.Fragment.Front ? "" : ", flipped: a back face"));
       break;
     case Shading::Gouraud:
@@ -348,8 +371,15 @@ std::string ProbeText(const PixelProbe& p)
           "vertex " + std::to_string(k) + " (" + Point(p.Corners[k]) + "), weight " +
             ProbeNumber(p.Fragment.Weights[k]) + ": the equation there");
         out.Add("  ", "P" + std::to_string(k) + " = " + ProbeTriple(v.P));
+        const auto& mapped = p.Shaded.VerticesMapped[k];
+        if (mapped)
+        {
+          AddMapping(out, "  ", *mapped, "at the vertex");
+        }
         AddTerms(out, "  ", p, v,
-          std::string("its vertex normal, unit") + (p.Fragment.Front ? "" : ", flipped"));
+          std::string(
+            mapped ? "N', its vertex normal perturbed by the map" : "its vertex normal, unit") +
+            (p.Fragment.Front ? "" : ", flipped"));
         out.Add(
           "  ", "C" + std::to_string(k) + " = " + ProbeTriple(v.Total()), "the vertex's colour");
       }
@@ -358,6 +388,10 @@ std::string ProbeText(const PixelProbe& p)
     case Shading::Raytrace: // its hits are lit as phong lights a fragment
     case Shading::Phong:
       out.Add("", "P = " + ProbeTriple(t.P), "the surface point under the pixel centre");
+      if (p.Shaded.Mapped)
+      {
+        AddMapping(out, "", *p.Shaded.Mapped, "at the fragment, N the interpolated normal");
+      }
       AddTerms(out, "", p, t, PhongNormal(p));
       break;
   }

@@ -136,3 +136,62 @@ TEST(NormalMap, AConstantMapTiltsTheNormalsAsTheGeometryWould)
     EXPECT_GT(lit, 1000); // the tilt lights the plane, not only its ambient term
   }
 }
+
+// probe explains the map where the rule took the normal: the tangent frame
+// (the grid's dP/ds made orthogonal to N, B = N x T), the texel, and the
+// perturbed normal, which is the normal its terms are lit with; they add
+// up to the oracle, and the oracle's normal is the harness's (phong's and
+// flat's at the pixel, gouraud's at each vertex through the weights).
+TEST(NormalMapProbe, ExplainsThePerturbedNormalThatLights)
+{
+  for (Shading r : LitRules)
+  {
+    SCOPED_TRACE(ToString(r));
+    Scene s;
+    s.Rule = r;
+    s.NormalMap = NormalMapKind::Pattern;
+    TempDir dir;
+    const Oracle oracle(s);
+    const std::vector<std::array<int, 2>> pixels = ComparedPixels(s, oracle);
+    std::string error;
+    const std::vector<json> probes = Probe(SceneArguments(s, dir), pixels, error);
+    ASSERT_EQ(error, "");
+    ASSERT_EQ(probes.size(), pixels.size());
+    ASSERT_GT(probes.size(), 100u);
+    const shadelab::Tangent grid = GridTangent(s.Geometry);
+    const Vec3 dPds{ grid[0], grid[1], grid[2] };
+    for (std::size_t i = 0; i < probes.size(); ++i)
+    {
+      const json& p = probes[i];
+      std::vector<const json*> lit{ &p };
+      if (r == Shading::Gouraud)
+      {
+        lit.clear();
+        for (const json& v : p.at("vertices"))
+        {
+          lit.push_back(&v);
+        }
+      }
+      for (const json* at : lit)
+      {
+        ASSERT_TRUE(at->contains("normal_map"));
+        const json& m = at->at("normal_map");
+        const Vec3 n = Vec(m.at("normal"));
+        ExpectNear(Vec(m.at("tangent")), normalize(dPds - dot(n, dPds) * n), 1e-6, "T");
+        ExpectNear(Vec(m.at("bitangent")), cross(n, Vec(m.at("tangent"))), 1e-12, "B");
+        const Vec3 t = Vec(m.at("tangent_space"));
+        ExpectNear(Vec(m.at("perturbed")),
+          normalize(t[0] * Vec(m.at("tangent")) + t[1] * Vec(m.at("bitangent")) + t[2] * n), 1e-12,
+          "N'");
+        ExpectNear(Vec(at->at("normal")), Vec(m.at("perturbed")), 1e-12, "the normal that lit");
+      }
+      if (r != Shading::Gouraud)
+      {
+        ExpectNear(Vec(p.at("normal")), oracle.At(pixels[i][0], pixels[i][1]).Terms.N, 1e-6,
+          "the harness's N'");
+        ExpectNear(TermsSum(p), Vec(p.at("oracle")), 1e-12, "the terms' sum");
+      }
+      ExpectWithinTheBound(Vec(p.at("rendered")), Vec(p.at("oracle")));
+    }
+  }
+}

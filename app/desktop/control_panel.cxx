@@ -261,6 +261,31 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   {
     terms->addRow(this->Toggle("environment  ks E(R)", &ViewState::Reflected));
   }
+  if (const auto& map = inspector.GetState().Scene.NormalMap)
+  {
+    // The map on or off, and its scale (the x and y of its directions).
+    auto* scale = new QDoubleSpinBox(this);
+    scale->setObjectName("normal map scale");
+    scale->setRange(-10, 10);
+    scale->setSingleStep(0.1);
+    scale->setDecimals(2);
+    scale->setKeyboardTracking(false);
+    scale->setValue(map->Scale);
+    scale->setToolTip("--normal-map's SCALE: its directions' x and y times it");
+    terms->addRow(this->Toggle("normal map  N'", &ViewState::Relief), scale);
+    QObject::connect(scale, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+      [this](double value)
+      {
+        this->Engine.Edit(
+          [value](ViewState& s)
+          {
+            if (s.Scene.NormalMap)
+            {
+              s.Scene.NormalMap->Scale = value;
+            }
+          });
+      });
+  }
 
   QFormLayout* normals = group("Normals");
   if (inspector.HasFileNormals())

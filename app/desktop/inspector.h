@@ -87,6 +87,7 @@ struct ViewState
   LightMode Lights = LightMode::PointAtCamera;
   bool Ambient = true, Diffuse = true, Specular = true;
   bool Reflected = true; // the environment's term, where the scene has one
+  bool Relief = true;    // the normal map, where the scene has one
   bool Glyphs = false, Edges = false, Compare = false, Help = false;
   // The stages of one's own (empty: the generated stage) and the rule they
   // draw: the files --vertex-shader and --fragment-shader name, then as the

@@ -19,8 +19,8 @@ SceneOptions Inspector::ShownScene() const
 {
   const SceneOptions defaults;
   SceneOptions s = this->State.Scene;
-  ShowTerms(
-    s, this->State.Ambient, this->State.Diffuse, this->State.Specular, this->State.Reflected);
+  ShowTerms(s, this->State.Ambient, this->State.Diffuse, this->State.Specular,
+    this->State.Reflected, this->State.Relief);
   s.Edges = this->State.Edges;
   s.NormalGlyphs = this->State.Glyphs;
   // The lecture's default light at the camera is render's default too.

@@ -135,7 +135,8 @@ void Inspector::UpdateHud()
                                                                  : s.Computed.Weighting.c_str())
       << " | terms:" << (this->State.Ambient ? " ambient" : "")
       << (this->State.Diffuse ? " diffuse" : "") << (this->State.Specular ? " specular" : "")
-      << (!s.Environment.empty() && this->State.Reflected ? " environment" : "") << "\n";
+      << (!s.Environment.empty() && this->State.Reflected ? " environment" : "")
+      << (s.NormalMap && this->State.Relief ? " | normal map" : "") << "\n";
   double mean = 0;
   for (double ms : this->FrameMs)
   {

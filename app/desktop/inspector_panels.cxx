@@ -21,8 +21,8 @@ void Inspector::Apply()
   SceneOptions base = this->State.Scene;
   base.Edges = this->State.Edges; // the surface's code makes room for lines over it
   base.NormalGlyphs = this->State.Glyphs;
-  ShowTerms(
-    base, this->State.Ambient, this->State.Diffuse, this->State.Specular, this->State.Reflected);
+  ShowTerms(base, this->State.Ambient, this->State.Diffuse, this->State.Specular,
+    this->State.Reflected, this->State.Relief);
   std::vector<Panel> panels;
   if (this->State.Compare)
   {

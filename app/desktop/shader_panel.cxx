@@ -44,6 +44,7 @@ const std::array<Mark, ShaderPanel::MarkCount>& Marks()
     { "translucency", QColor(0xff, 0xf5, 0xb4), "a*I+(1-a)*behind", true },
     { "shadow", QColor(0xd2, 0xe6, 0xe6), "d <= map + bias", true },
     { "environment", QColor(0xe6, 0xf0, 0xc8), "ks*E(R)", true },
+    { "normal map", QColor(0xf0, 0xe0, 0xd0), "N'=T x+B y+N z", true },
   } };
   return marks;
 }

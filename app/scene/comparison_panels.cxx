@@ -132,7 +132,8 @@ std::vector<Panel> ParseModes(const std::string& text, const SceneOptions& base)
   return panels;
 }
 
-void ShowTerms(SceneOptions& s, bool ambient, bool diffuse, bool specular, bool environment)
+void ShowTerms(
+  SceneOptions& s, bool ambient, bool diffuse, bool specular, bool environment, bool normalMap)
 {
   constexpr Rgb Zero{ 0, 0, 0 };
   s.Ka = ambient ? s.Ka : Zero;
@@ -141,6 +142,10 @@ void ShowTerms(SceneOptions& s, bool ambient, bool diffuse, bool specular, bool 
   if (!environment)
   {
     s.Environment.clear();
+  }
+  if (!normalMap)
+  {
+    s.NormalMap.reset();
   }
 }
 

@@ -49,12 +49,12 @@ extern const char* const ModesHelp;
 
 /**
  * Leaves only the chosen terms of the illumination in scene, by zeroing the
- * others' coefficients (and the environment by dropping it): the shaders
- * then hold no code for them (doc/design.md, generated for what the scene
- * needs).
+ * others' coefficients (and the environment by dropping it), and the normal
+ * map only where chosen: the shaders then hold no code for them
+ * (doc/design.md, generated for what the scene needs).
  */
-void ShowTerms(
-  SceneOptions& scene, bool ambient, bool diffuse, bool specular, bool environment = true);
+void ShowTerms(SceneOptions& scene, bool ambient, bool diffuse, bool specular,
+  bool environment = true, bool normalMap = true);
 
 /** Each panel as four: its ambient, diffuse and specular terms and their total. */
 std::vector<Panel> SplitIntoTerms(const std::vector<Panel>& panels);

@@ -392,3 +392,41 @@ TEST(Controls, TheEnvironmentsToggleTakesItsTermOutAndBack)
   toggle->click();
   EXPECT_EQ(Settings(inspector), with);
 }
+
+// A normal map has its toggle and its scale in the Terms group where the
+// scene has one: the toggle takes --normal-map out of the scene the view
+// shows and puts it back, the scale changes its SCALE and nothing else.
+TEST(Controls, TheNormalMapsToggleAndScaleChangeOnlyIt)
+{
+  TempDir dir;
+  WriteText(dir / "square.off",
+    "STOFF\n4 2 0\n-1 -1 0 0 0\n1 -1 0 1 0\n1 1 0 1 1\n-1 1 0 0 1\n3 0 1 2\n3 0 2 3\n");
+  WriteImage8(dir / "n.png", 2, 1, { 200, 110, 220, 128, 128, 255 });
+  ViewOptions options = SpotView(Shading::Phong);
+  options.Scene.Mesh = (dir / "square.off").string();
+  options.Scene.NormalMap = ScaledImage{ (dir / "n.png").string(), 1 };
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+  QCheckBox* toggle = nullptr;
+  for (QCheckBox* box : window.findChildren<QCheckBox*>())
+  {
+    toggle = box->text().startsWith("normal map") ? box : toggle;
+  }
+  ASSERT_NE(toggle, nullptr);
+  auto* scale = window.findChild<QDoubleSpinBox*>("normal map scale");
+  ASSERT_NE(scale, nullptr);
+  const auto with = Settings(inspector);
+  EXPECT_EQ(with.at("--normal-map"), (dir / "n.png").string() + ";");
+  toggle->click();
+  EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ "--normal-map" });
+  EXPECT_FALSE(inspector.ShownScene().NormalMap);
+  toggle->click();
+  EXPECT_EQ(Settings(inspector), with);
+  Type(scale, "0.5");
+  const auto scaled = Settings(inspector);
+  EXPECT_EQ(Changed(with, scaled), std::set<std::string>{ "--normal-map" });
+  EXPECT_EQ(scaled.at("--normal-map"), (dir / "n.png").string() + ":0.5;");
+}

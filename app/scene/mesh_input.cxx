@@ -1,6 +1,7 @@
 #include "scene/mesh_input.h"
 
 #include "core/errors.h"
+#include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
 #include "shadelabVertexTangents.h"
 #include "vtkShadelabMeshNormals.h"
@@ -10,6 +11,7 @@
 #include <vtkCleanPolyData.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkLoopSubdivisionFilter.h>
 #include <vtkPointData.h>
@@ -107,6 +109,23 @@ vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
   return result;
 }
 
+namespace
+{
+// Whether a part of mesh has a normal map of the file's own.
+bool FileMapsNormals(vtkPolyData* mesh)
+{
+  vtkDataArray* maps = mesh->GetFieldData()->GetArray(PartNormalTextureArrayName);
+  for (vtkIdType p = 0; maps && p < maps->GetNumberOfTuples(); ++p)
+  {
+    if (maps->GetComponent(p, 0) >= 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
 LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNormals)
 {
   const auto lap = [timer](const char* phase)
@@ -178,7 +197,8 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   lap("normals");
   // A normal map's frame, where there are texture coordinates to make it
   // of (the scene says so where there are none).
-  if (options.NormalMap && mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
+  if ((options.NormalMap || FileMapsNormals(mesh)) &&
+    mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
   {
     auto withTangents = vtkSmartPointer<vtkPolyData>::New();
     withTangents->ShallowCopy(mesh);

@@ -89,12 +89,15 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
   images.File.resize(textures.size());
   for (const ScenePart& part : SceneParts(options, loaded.Mesh))
   {
-    if (part.FileTexture >= 0 && !images.File[part.FileTexture])
+    for (const int t : { part.FileTexture, part.FileNormalTexture })
     {
-      images.File[part.FileTexture] = decoded(part.ImageName, textures[part.FileTexture].Bytes);
-      if (!images.File[part.FileTexture])
+      if (t >= 0 && !images.File[t])
       {
-        return shown;
+        images.File[t] = decoded(FileTextureName(options, textures, t), textures[t].Bytes);
+        if (!images.File[t])
+        {
+          return shown;
+        }
       }
     }
   }

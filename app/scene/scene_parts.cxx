@@ -47,6 +47,9 @@ struct FileTextures
   int Ka = -1;
   int Ks = -1;
   Rgb KsScale{};
+  int Normal = -1; // its normal map
+  double NormalScale = 1;
+  bool NormalFromBump = false;
 };
 
 // The part's texture: --texture's on every part (kd and ka), else the file's
@@ -86,9 +89,47 @@ void SetTexture(const SceneOptions& options, const std::vector<Texture>& texture
   t.Ks = ks == drawn;
   t.KsScale = t.Ks ? fileTextures.KsScale : Rgb{};
   part.FileTexture = drawn;
-  part.ImageName =
-    file.Source.empty() ? options.Mesh + " (texture " + std::to_string(drawn) + ")" : file.Source;
+  part.ImageName = FileTextureName(options, textures, drawn);
 }
+
+// The part's normal map: --normal-map's on every part, else the file's of a
+// part with its own material, unless it came from a bump statement and its
+// image is grey (a height map).
+void SetNormalMap(const SceneOptions& options, const std::vector<Texture>& textures,
+  const SceneImages& images, const FileTextures& fileTextures, ScenePart& part)
+{
+  if (options.NormalMap)
+  {
+    part.Relief = NormalMap{ { images.NormalMap, options.TextureWrapping, options.TextureWrapping,
+                               options.TextureFiltering },
+      options.NormalMap->Scale };
+    return;
+  }
+  const int n = fileTextures.Normal;
+  if (n < 0 || n >= static_cast<int>(textures.size()))
+  {
+    return;
+  }
+  const Texture& file = textures[n];
+  const auto image = n < static_cast<int>(images.File.size()) ? images.File[n] : nullptr;
+  if (image && fileTextures.NormalFromBump && IsGrey(*image))
+  {
+    return;
+  }
+  part.Relief = NormalMap{ { image, WrapFromGL(file.WrapS).value_or(TextureWrap::Repeat),
+                             WrapFromGL(file.WrapT).value_or(TextureWrap::Repeat),
+                             FilterFromGL(file.MagFilter).value_or(TextureFilter::Bilinear) },
+    fileTextures.NormalScale };
+  part.FileNormalTexture = n;
+}
+}
+
+std::string FileTextureName(
+  const SceneOptions& options, const std::vector<Texture>& textures, int index)
+{
+  const Texture& file = textures[index];
+  return file.Source.empty() ? options.Mesh + " (texture " + std::to_string(index) + ")"
+                             : file.Source;
 }
 
 std::vector<int> PartOfCells(vtkPolyData* mesh)
@@ -162,15 +203,15 @@ std::vector<ScenePart> SceneParts(
     {
       fileTextures = { FieldInt(field, PartKdTextureArrayName, p),
         FieldInt(field, PartKaTextureArrayName, p), FieldInt(field, PartKsTextureArrayName, p),
-        FieldTuple<3>(field, PartKsTextureScaleArrayName, p) };
+        FieldTuple<3>(field, PartKsTextureScaleArrayName, p),
+        FieldInt(field, PartNormalTextureArrayName, p),
+        field->GetArray(PartNormalScaleArrayName)
+          ? FieldTuple<1>(field, PartNormalScaleArrayName, p)[0]
+          : 1.0,
+        FieldInt(field, PartNormalFromBumpArrayName, p) > 0 };
     }
     SetTexture(options, textures, images, fileTextures, part);
-    if (options.NormalMap)
-    {
-      part.Relief = NormalMap{ { images.NormalMap, options.TextureWrapping, options.TextureWrapping,
-                                 options.TextureFiltering },
-        options.NormalMap->Scale };
-    }
+    SetNormalMap(options, textures, images, fileTextures, part);
     if (part.Overridden.size() == std::size(overrides))
     {
       part.Source = MaterialSource::Option; // nothing of the file's or the default's is left

@@ -12,6 +12,7 @@
 #include "core/options.h"
 #include "shadelabEnvironment.h"
 #include "shadelabNormalMap.h"
+#include "shadelabPartMaterials.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -56,10 +57,12 @@ struct ScenePart
   SurfaceTexture Texture;
   std::string ImageName; // the texture's image file, "MESH (texture I)" for an embedded one
   int FileTexture = -1;  // the mesh file's texture drawn (MeshTextures' index), else -1
-  // The normal map that perturbs its normals (--normal-map's, with the
-  // textures' wrap and filter), none without one; its image is null where
-  // SceneParts was not given the images.
+  // The normal map that perturbs its normals: --normal-map's (with the
+  // textures' wrap and filter), or the file's (OBJ norm, bump, map_Bump;
+  // glTF normalTexture) where the part has its own material; none without
+  // one. Its image is null where SceneParts was not given the images.
   std::optional<NormalMap> Relief;
+  int FileNormalTexture = -1; // the mesh file's texture that is its normal map, else -1
 };
 
 /**
@@ -92,6 +95,10 @@ std::optional<EnvironmentMap> SceneEnvironment(
  */
 std::vector<ScenePart> SceneParts(
   const SceneOptions& options, vtkPolyData* mesh, const SceneImages& images = {});
+
+/** The image file of the mesh file's texture `index`, "MESH (texture I)" for an embedded one. */
+std::string FileTextureName(
+  const SceneOptions& options, const std::vector<Texture>& textures, int index);
 
 /** A part with triangles has a < 1: the picture is composited in depth order. */
 bool AnyTranslucent(const std::vector<ScenePart>& parts);

@@ -25,7 +25,7 @@ template <typename Archive>
 void Fields(Archive& a, PartMaterial& p)
 {
   a(p.Name), a(p.Index), a(p.Coefficients), a(p.KdTexture), a(p.KaTexture), a(p.KsTexture),
-    a(p.KsTextureScale);
+    a(p.KsTextureScale), a(p.NormalTexture), a(p.NormalScale), a(p.NormalFromBump);
 }
 
 template <typename Archive>

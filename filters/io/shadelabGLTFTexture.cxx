@@ -1,5 +1,7 @@
 #include "shadelabGLTFTexture.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <initializer_list>
 
@@ -85,16 +87,12 @@ void MapTextureCoordinates(const UvTransform& map, float* st, std::size_t count)
   }
 }
 
-int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
+namespace
+{
+// The texture of textureInfo `info` (named `at`), as BaseColorTexture says.
+int InfoTexture(const Document& document, const Json& info, const std::string& at,
   std::vector<Texture>& textures, std::string& warning, UvTransform& transform)
 {
-  if (!material.contains("pbrMetallicRoughness") ||
-    !material["pbrMetallicRoughness"].contains("baseColorTexture"))
-  {
-    return -1;
-  }
-  const std::string at = where + " baseColorTexture";
-  const Json& info = material["pbrMetallicRoughness"]["baseColorTexture"];
   if (!info.is_object())
   {
     Fail(at + " is not an object");
@@ -123,5 +121,47 @@ int BaseColorTexture(const Document& document, const Json& material, const std::
   result.Bytes.assign(image.Bytes.begin(), image.Bytes.end());
   ReadSampler(document.Root, texture, name, result);
   return AddTexture(textures, std::move(result));
+}
+
+bool operator==(const UvTransform& a, const UvTransform& b)
+{
+  return std::equal(a.U, a.U + 3, b.U) && std::equal(a.V, a.V + 3, b.V);
+}
+}
+
+int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
+  std::vector<Texture>& textures, std::string& warning, UvTransform& transform)
+{
+  if (!material.contains("pbrMetallicRoughness") ||
+    !material["pbrMetallicRoughness"].contains("baseColorTexture"))
+  {
+    return -1;
+  }
+  return InfoTexture(document, material["pbrMetallicRoughness"]["baseColorTexture"],
+    where + " baseColorTexture", textures, warning, transform);
+}
+
+int NormalTexture(const Document& document, const Json& material, const std::string& where,
+  std::vector<Texture>& textures, std::string& warning, UvTransform& transform, bool mapped,
+  double& scale)
+{
+  if (!material.contains("normalTexture"))
+  {
+    return -1;
+  }
+  const std::string at = where + " normalTexture";
+  const Json& info = material["normalTexture"];
+  UvTransform own;
+  const int texture = InfoTexture(document, info, at, textures, warning, own);
+  scale = Number(info, "scale", at, 1);
+  if (texture >= 0 && mapped && !(own == transform))
+  {
+    warning = at +
+      " maps the texture coordinates otherwise than baseColorTexture "
+      "(KHR_texture_transform): it is not drawn";
+    return -1;
+  }
+  transform = own;
+  return texture;
 }
 }

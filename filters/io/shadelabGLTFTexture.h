@@ -1,5 +1,5 @@
 /**
- * @brief   a glTF material's baseColorTexture as a texture of the mesh
+ * @brief   a glTF material's baseColorTexture and normalTexture as textures of the mesh
  *
  * The texture's image (a file beside the document, or the bytes of a
  * bufferView or data URI: shadelabGLTFDocument.h) and its sampler's wrapS,
@@ -51,6 +51,16 @@ void MapTextureCoordinates(const UvTransform& map, float* st, std::size_t count)
  */
 int BaseColorTexture(const Document& document, const Json& material, const std::string& where,
   std::vector<Texture>& textures, std::string& warning, UvTransform& transform);
+
+/**
+ * The index in `textures` of the material's normalTexture and in `scale`
+ * its scale (1 without), as BaseColorTexture; `transform` is the map of
+ * the coordinates, the base colour texture's where it has one (`mapped`):
+ * a normal texture that maps them otherwise is not drawn, with a warning.
+ */
+int NormalTexture(const Document& document, const Json& material, const std::string& where,
+  std::vector<Texture>& textures, std::string& warning, UvTransform& transform, bool mapped,
+  double& scale);
 }
 
 #endif

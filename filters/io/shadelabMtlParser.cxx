@@ -80,6 +80,7 @@ MtlMap ReadMap(TextScanner& scanner, std::string_view keyword, std::vector<std::
 {
   MtlMap map;
   const std::string statement(keyword);
+  const bool bump = keyword == "norm" || keyword == "bump" || keyword == "map_Bump";
   const auto value = [&](const std::string& option)
   {
     const std::string_view v = scanner.NextToken();
@@ -93,6 +94,16 @@ MtlMap ReadMap(TextScanner& scanner, std::string_view keyword, std::vector<std::
   while (token.size() > 1 && token[0] == '-')
   {
     const std::string name(token);
+    if (name == "-bm" && bump)
+    {
+      const std::string_view v = value(name);
+      if (!ParseNumber(v, map.Scale))
+      {
+        scanner.Fail("malformed " + statement + " -bm " + Quote(v));
+      }
+      token = scanner.NextToken();
+      continue;
+    }
     if (name == "-clamp")
     {
       const std::string_view on = value(name);
@@ -151,10 +162,11 @@ MtlLibrary ParseMtl(std::string_view text)
       {
         scanner.Fail("newmtl without a material name");
       }
-      materials.push_back({ Material{ std::string(name) }, {}, {}, false });
+      materials.push_back({ Material{ std::string(name) }, {}, {}, {}, false, false });
       continue;
     }
-    const bool map = keyword == "map_Kd" || keyword == "map_Ka";
+    const bool normal = keyword == "norm" || keyword == "bump" || keyword == "map_Bump";
+    const bool map = keyword == "map_Kd" || keyword == "map_Ka" || normal;
     const bool coefficient = keyword == "Ka" || keyword == "Kd" || keyword == "Ks" ||
       keyword == "Ns" || keyword == "d" || keyword == "Tr";
     if (!coefficient && !map)
@@ -166,9 +178,20 @@ MtlLibrary ParseMtl(std::string_view text)
       scanner.Fail(std::string(keyword) + " before any newmtl");
     }
     Material& m = materials.back().Coefficients;
-    if (map)
+    MtlMaterial& material = materials.back();
+    if (normal)
     {
-      (keyword == "map_Kd" ? materials.back().KdMap : materials.back().KaMap) =
+      // norm is a normal map; a bump one may be (a grey image is a height map).
+      const MtlMap read = ReadMap(scanner, keyword, library.Warnings);
+      if (keyword == "norm" || material.NormalMap.File.empty() || material.NormalFromBump)
+      {
+        material.NormalMap = read;
+        material.NormalFromBump = keyword != "norm";
+      }
+    }
+    else if (map)
+    {
+      (keyword == "map_Kd" ? material.KdMap : material.KaMap) =
         ReadMap(scanner, keyword, library.Warnings);
     }
     else if (keyword == "Ka")

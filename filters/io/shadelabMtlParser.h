@@ -3,15 +3,17 @@
  *
  * ParseMtl reads `newmtl NAME` and each material's Ka, Kd, Ks (r [g b]: one
  * number is grey), Ns and d (Tr is 1 - d), the coefficients of the lecture's
- * equation, and its texture maps map_Kd and map_Ka: `map_Kd [options] FILE`.
+ * equation, and its texture maps map_Kd and map_Ka: `map_Kd [options] FILE`,
+ * and its normal map, norm or else bump / map_Bump.
  * Of the options, `-clamp on|off` is honoured (on: the image's edge
- * continues beyond it; off, the default: it repeats); the others that the
+ * continues beyond it; off, the default: it repeats), and a normal map's
+ * `-bm SCALE` (the scale of its x and y); the others that the
  * MTL specification defines (-blendu, -blendv, -cc, -mm, -o, -s, -t,
  * -texres, -bm, -boost, -imfchan) are skipped with their values and a
  * warning, since they would change the picture in ways not drawn here. FILE
  * is the rest of the statement (it may hold spaces), with '\' read as '/'
  * (files written on Windows); whether it exists is not checked. Every other
- * statement (illum, Ni, Ke, map_Ks, bump, ...) and comments are skipped. A
+ * statement (illum, Ni, Ke, map_Ks, ...) and comments are skipped. A
  * coefficient the file does not give is 0 (d 1). It stops at the first
  * malformed or non-finite number, a negative Ns, a coefficient or map before
  * any newmtl, a map without a file name, an unknown option or one without
@@ -33,6 +35,7 @@ struct MtlMap
 {
   std::string File;   // as the MTL names it, relative to the MTL's folder; "" for none
   bool Clamp = false; // -clamp on
+  double Scale = 1;   // -bm, of a normal map (norm, bump, map_Bump)
 };
 
 struct MtlMaterial
@@ -41,8 +44,12 @@ struct MtlMaterial
   // Tr 1 is opaque: MeshLab and others write Tr for d, and a part drawn
   // invisible is never what such a file means.
   Material Coefficients;
-  MtlMap KdMap;              // map_Kd
-  MtlMap KaMap;              // map_Ka
+  MtlMap KdMap; // map_Kd
+  MtlMap KaMap; // map_Ka
+  // norm, or else bump / map_Bump (FromBump): a tangent-space normal map,
+  // unless a bump's image is grey (a height map).
+  MtlMap NormalMap;
+  bool NormalFromBump = false;
   bool OpacityGiven = false; // a d statement: Tr then changes nothing
 };
 

@@ -61,6 +61,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto kdTextures = IntArray(PartKdTextureArrayName, count);
   auto kaTextures = IntArray(PartKaTextureArrayName, count);
   auto ksTextures = IntArray(PartKsTextureArrayName, count);
+  auto normalTextures = IntArray(PartNormalTextureArrayName, count);
+  auto fromBump = IntArray(PartNormalFromBumpArrayName, count);
   const auto coefficients = [count](const char* name, int components)
   {
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
@@ -77,6 +79,7 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
   auto translucency = coefficients(PartTranslucencyArrayName, 1);
   translucency->Fill(1);
   auto ksScales = coefficients(PartKsTextureScaleArrayName, 3);
+  auto normalScales = coefficients(PartNormalScaleArrayName, 1);
   for (vtkIdType part = 0; part < count; ++part)
   {
     const PartMaterial& p = parts[part];
@@ -86,6 +89,9 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
     kaTextures->SetValue(part, p.KaTexture);
     ksTextures->SetValue(part, p.KsTexture);
     ksScales->SetTuple(part, p.KsTextureScale.data());
+    normalTextures->SetValue(part, p.NormalTexture);
+    normalScales->SetTuple(part, &p.NormalScale);
+    fromBump->SetValue(part, p.NormalFromBump);
     if (p.Index >= 0)
     {
       ka->SetTuple(part, p.Coefficients.Ka.data());
@@ -96,7 +102,8 @@ void AddPartMaterials(const std::vector<PartMaterial>& parts, vtkPolyData* trian
     }
   }
   AddArrays(triangles,
-    { names, indices, ka, kd, ks, ns, translucency, kdTextures, kaTextures, ksTextures, ksScales });
+    { names, indices, ka, kd, ks, ns, translucency, kdTextures, kaTextures, ksTextures, ksScales,
+      normalTextures, normalScales, fromBump });
 }
 
 void AddTextures(const std::vector<Texture>& textures, vtkPolyData* triangles)

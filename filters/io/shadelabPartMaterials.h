@@ -54,6 +54,19 @@ constexpr const char* PartKaTextureArrayName = "PartKaTexture";
 constexpr const char* PartKsTextureArrayName = "PartKsTexture";
 constexpr const char* PartKsTextureScaleArrayName = "PartKsTextureScale";
 /**
+ * Field data, one per part: its tangent-space normal map (int, -1 for none)
+ * and the scale of the map's x and y (double, 1 without). OBJ: the MTL's
+ * norm, or bump / map_Bump (-bm the scale), whose image a grey one shows
+ * to be a height map instead; glTF: normalTexture with its scale.
+ */
+constexpr const char* PartNormalTextureArrayName = "PartNormalTexture";
+constexpr const char* PartNormalScaleArrayName = "PartNormalScale";
+/**
+ * Field data, one per part (int): 1 where its normal map came from a bump
+ * statement (OBJ's bump or map_Bump, which may name a height map), else 0.
+ */
+constexpr const char* PartNormalFromBumpArrayName = "PartNormalFromBump";
+/**
  * Field data, one per texture (string): its image file's path, resolved
  * against the folder of the file that names it (the MTL, the glTF), or ""
  * for an image that the mesh file holds (a GLB's bufferView, a data URI).
@@ -93,7 +106,10 @@ struct PartMaterial
   int KdTexture = -1;    // index into the mesh's textures, -1 for none
   int KaTexture = -1;
   int KsTexture = -1;
-  Rgb KsTextureScale{}; // the part of ks that KsTexture multiplies
+  Rgb KsTextureScale{};        // the part of ks that KsTexture multiplies
+  int NormalTexture = -1;      // its normal map, -1 for none
+  double NormalScale = 1;      // the scale of the normal map's x and y
+  bool NormalFromBump = false; // named by OBJ's bump or map_Bump
 };
 
 /** A texture: an image and how it is sampled. */

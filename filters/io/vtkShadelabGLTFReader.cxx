@@ -377,16 +377,24 @@ private:
     // glTF's ka is its kd (shadelabGLTFMaterial.h), so is their texture.
     const int texture =
       BaseColorTexture(this->Doc, material, name, this->Textures, warning, transform);
-    if (!warning.empty() &&
-      std::find(this->Warnings.begin(), this->Warnings.end(), warning) == this->Warnings.end())
+    std::string normalWarning;
+    double normalScale = 1;
+    const int normals = NormalTexture(this->Doc, material, name, this->Textures, normalWarning,
+      transform, texture >= 0, normalScale);
+    for (const std::string& w : { warning, normalWarning })
     {
-      this->Warnings.push_back(warning);
+      if (!w.empty() &&
+        std::find(this->Warnings.begin(), this->Warnings.end(), w) == this->Warnings.end())
+      {
+        this->Warnings.push_back(w);
+      }
     }
     // In ks it multiplies the metal's part (KsTextureScale): none for a dielectric.
     const shadelab::Rgb ksScale = KsTextureScale(material, name);
     const bool ksTextured = texture >= 0 && ksScale != shadelab::Rgb{};
-    this->Materials.push_back({ m.Name, static_cast<int>(index), m, texture, texture,
-      ksTextured ? texture : -1, ksTextured ? ksScale : shadelab::Rgb{} });
+    this->Materials.push_back(
+      { m.Name, static_cast<int>(index), m, texture, texture, ksTextured ? texture : -1,
+        ksTextured ? ksScale : shadelab::Rgb{}, normals, normalScale, false });
     return transform;
   }
 

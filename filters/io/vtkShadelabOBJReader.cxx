@@ -287,6 +287,9 @@ std::vector<shadelab::PartMaterial> PartMaterials(const std::vector<std::string>
         part.Coefficients = library[m].Coefficients;
         part.KdTexture = MapTexture(library[m].KdMap, textures);
         part.KaTexture = MapTexture(library[m].KaMap, textures);
+        part.NormalTexture = MapTexture(library[m].NormalMap, textures);
+        part.NormalScale = library[m].NormalMap.Scale;
+        part.NormalFromBump = library[m].NormalFromBump;
         break;
       }
     }
@@ -372,7 +375,7 @@ std::vector<shadelab::MtlMaterial> vtkShadelabOBJReader::ReadLibraries(
     {
       // Map files are named relative to the MTL's folder, and lie in the
       // mesh's, like the library.
-      for (shadelab::MtlMap* map : { &m.KdMap, &m.KaMap })
+      for (shadelab::MtlMap* map : { &m.KdMap, &m.KaMap, &m.NormalMap })
       {
         if (!map->File.empty())
         {

@@ -672,6 +672,30 @@ TEST_F(MeshReaders, MtlCoefficientsDefaultsAndMistakes)
   ExpectMtlErrors(mistakes);
 }
 
+// A material's normal map: norm, or else bump / map_Bump (which may name a
+// height map), with -bm as its scale; norm wins whichever comes first, and
+// -bm on another map is skipped with a warning.
+TEST_F(MeshReaders, MtlNormalMapsFromNormOrBump)
+{
+  const auto library = shadelab::ParseMtl(
+    "newmtl norm\nbump b.png\nnorm -bm 0.5 n.png\nbump c.png\n"
+    "newmtl bump\nmap_Bump -bm -2 -clamp on h.png\nnewmtl none\nmap_Kd -bm 3 k.png\n");
+  ASSERT_EQ(library.Materials.size(), 3u);
+  const shadelab::MtlMaterial& norm = library.Materials[0];
+  EXPECT_EQ(norm.NormalMap.File, "n.png");
+  EXPECT_EQ(norm.NormalMap.Scale, 0.5);
+  EXPECT_FALSE(norm.NormalFromBump);
+  const shadelab::MtlMaterial& bump = library.Materials[1];
+  EXPECT_EQ(bump.NormalMap.File, "h.png");
+  EXPECT_EQ(bump.NormalMap.Scale, -2);
+  EXPECT_TRUE(bump.NormalMap.Clamp);
+  EXPECT_TRUE(bump.NormalFromBump);
+  EXPECT_EQ(library.Materials[2].NormalMap.File, "");
+  ASSERT_EQ(library.Warnings.size(), 1u);
+  EXPECT_NE(library.Warnings[0].find("map_Kd option -bm is not supported"), std::string::npos);
+  ExpectMtlErrors({ { "newmtl a\nnorm -bm x n.png\n", "line 2: malformed norm -bm 'x'" } });
+}
+
 // d is the opacity a; Tr alone its complement, except Tr 1, which MeshLab
 // and others write for an opaque material; d wins over a Tr after it.
 TEST_F(MeshReaders, MtlOpacityFromDOrTr)

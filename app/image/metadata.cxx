@@ -175,6 +175,15 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
         { "wrap", { ToString(t.Map.WrapS), ToString(t.Map.WrapT) } },
         { "filter", ToString(t.Map.Filter) } };
     }
+    if (part.FileNormalTexture >= 0) // the file's (--normal-map's is the scene's, above)
+    {
+      described["normal_map"] = {
+        { "image", FileTextureName(o, MeshTextures(mesh), part.FileNormalTexture) },
+        { "scale", part.Relief->Scale },
+        { "wrap", { ToString(part.Relief->Map.WrapS), ToString(part.Relief->Map.WrapT) } },
+        { "filter", ToString(part.Relief->Map.Filter) }
+      };
+    }
     parts.push_back(described);
   }
   j["parts"] = parts;

@@ -33,6 +33,7 @@
 #include "scene/scene.h"
 #include "shadelabPartMaterials.h"
 #include "shadelabTriangleMesh.h"
+#include "shadelabVertexTangents.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabShading.h"
 
@@ -74,6 +75,7 @@ struct Variant
   bool Fogged = false;     // ours with fog: the same
   Representation Drawn = Representation::Surface;
   bool Reflecting = false; // ours with an environment (a 1024 checker): the same
+  bool Mapping = false;    // ours with a normal map (a 1024 checker): the same
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -244,6 +246,15 @@ int main(int argc, char** argv)
   }
 
   const std::shared_ptr<const TextureImage> environment = Checker(1024);
+  // The normal map's variants: texture coordinates where the mesh has none,
+  // and the tangents of its frame.
+  auto mapped = vtkSmartPointer<vtkPolyData>::New();
+  mapped->ShallowCopy(mesh);
+  if (!mapped->GetPointData()->GetArray(TextureCoordinatesArrayName))
+  {
+    AddPositionArray(mapped, TextureCoordinatesArrayName, 2);
+  }
+  mapped->GetPointData()->AddArray(VertexTangents(mapped));
   const std::vector<Variant> variants = { { "vtk-flat", Shading::Flat, true },
     { "vtk-gouraud", Shading::Gouraud, true }, { "vtk-phong", Shading::Phong, true },
     { "vtk-unlit", Shading::Phong, true, false, true }, { "flat", Shading::Flat },
@@ -271,7 +282,13 @@ int main(int argc, char** argv)
     { "gouraud-environment", Shading::Gouraud, false, false, false, false, false,
       Representation::Surface, true },
     { "phong-environment", Shading::Phong, false, false, false, false, false,
-      Representation::Surface, true } };
+      Representation::Surface, true },
+    { "flat-normal-map", Shading::Flat, false, false, false, false, false, Representation::Surface,
+      false, true },
+    { "gouraud-normal-map", Shading::Gouraud, false, false, false, false, false,
+      Representation::Surface, false, true },
+    { "phong-normal-map", Shading::Phong, false, false, false, false, false,
+      Representation::Surface, false, true } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -296,15 +313,21 @@ int main(int argc, char** argv)
     {
       scene.Environment = "checker"; // decoded already: environment below
     }
+    if (v.Mapping)
+    {
+      scene.NormalMap = ScaledImage{ "checker", 1 }; // decoded already: environment's image
+    }
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
     {
       return ReportError("render", error);
     }
     // One actor but with --parts, where only ours run.
-    const DrawnParts built = BuildScene(scene, mesh, renderer.GetRenderer(), nullptr,
-      SceneImages{ checker, {}, v.Reflecting ? environment : nullptr, nullptr })
-                               .Drawn.front();
+    const DrawnParts built =
+      BuildScene(scene, v.Mapping ? mapped : mesh, renderer.GetRenderer(), nullptr,
+        SceneImages{
+          checker, {}, v.Reflecting ? environment : nullptr, v.Mapping ? environment : nullptr })
+        .Drawn.front();
     if (v.VtkOwn)
     {
       built.Actor->GetMapper()->RemoveAllObservers();

@@ -1090,6 +1090,30 @@ inline Image Render(const Scene& s, const TempDir& dir, std::string& error)
   return image;
 }
 
+// scene.json (its text `scene`, 64x64 chrome shots) rendered in one batch
+// into dir: each shot's picture equals the render of `mesh` alone with the
+// same size and material and that shot's options, `alone[shot]`.
+inline void ExpectEachShotIsItsOwnRender(const TempDir& dir, const std::string& scene,
+  const std::string& mesh, const std::vector<std::vector<std::string>>& alone)
+{
+  WriteText(dir / "scene.json", scene);
+  const RunResult batch = RunShadelab({ "render", "--scene", (dir / "scene.json").string(), "-o",
+    (dir / "shot{index}.exr").string() });
+  ASSERT_EQ(batch.ExitCode, 0) << batch.Stderr;
+  for (std::size_t shot = 0; shot < alone.size(); ++shot)
+  {
+    SCOPED_TRACE(std::to_string(shot));
+    const auto own = dir / ("alone" + std::to_string(shot) + ".exr");
+    std::vector<std::string> args{ "render", mesh, "-o", own.string(), "--size", "64x64",
+      "--material", "chrome" };
+    args.insert(args.end(), alone[shot].begin(), alone[shot].end());
+    const RunResult r = RunShadelab(args);
+    ASSERT_EQ(r.ExitCode, 0) << r.Stderr;
+    EXPECT_EQ(
+      ReadImage(dir / ("shot" + std::to_string(shot) + ".exr")).Pixels, ReadImage(own).Pixels);
+  }
+}
+
 // ---------------------------------------------------------------- the expected image
 
 struct Expected

@@ -363,6 +363,20 @@ TEST(Controls, ChoosingTheDefaultsRowStillReplacesEveryPartsMaterial)
   EXPECT_EQ(Settings(inspector)["--material"], "chrome;");
 }
 
+namespace
+{
+// The control panel's check box whose text starts with `name`, or null.
+QCheckBox* ToggleNamed(const QWidget& window, const QString& name)
+{
+  QCheckBox* toggle = nullptr;
+  for (QCheckBox* box : window.findChildren<QCheckBox*>())
+  {
+    toggle = box->text().startsWith(name) ? box : toggle;
+  }
+  return toggle;
+}
+}
+
 // An environment is one of the terms: its toggle, shown where the scene has
 // one, takes it out of the scene the view shows (its render command), and
 // nothing else, and puts it back. That the code and picture follow the
@@ -378,11 +392,7 @@ TEST(Controls, TheEnvironmentsToggleTakesItsTermOutAndBack)
   const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open(options.Scene.Size));
-  QCheckBox* toggle = nullptr;
-  for (QCheckBox* box : window.findChildren<QCheckBox*>())
-  {
-    toggle = box->text().startsWith("environment") ? box : toggle;
-  }
+  QCheckBox* toggle = ToggleNamed(window, "environment");
   ASSERT_NE(toggle, nullptr);
   const auto with = Settings(inspector);
   EXPECT_EQ(with.at("--environment"), (dir / "sky.png").string() + ";");
@@ -410,11 +420,7 @@ TEST(Controls, TheNormalMapsToggleAndScaleChangeOnlyIt)
   const auto application = MakeApplication();
   InspectorWindow window(inspector);
   ASSERT_TRUE(window.Open(options.Scene.Size));
-  QCheckBox* toggle = nullptr;
-  for (QCheckBox* box : window.findChildren<QCheckBox*>())
-  {
-    toggle = box->text().startsWith("normal map") ? box : toggle;
-  }
+  QCheckBox* toggle = ToggleNamed(window, "normal map");
   ASSERT_NE(toggle, nullptr);
   auto* scale = window.findChild<QDoubleSpinBox*>("normal map scale");
   ASSERT_NE(scale, nullptr);

@@ -57,6 +57,20 @@ std::string Undrawable(vtkPolyData* mesh)
   }
   return {};
 }
+
+// Whether a part of mesh has a normal map of the file's own.
+bool FileMapsNormals(vtkPolyData* mesh)
+{
+  vtkDataArray* maps = mesh->GetFieldData()->GetArray(PartNormalTextureArrayName);
+  for (vtkIdType p = 0; maps && p < maps->GetNumberOfTuples(); ++p)
+  {
+    if (maps->GetComponent(p, 0) >= 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals)
@@ -107,23 +121,6 @@ vtkSmartPointer<vtkPolyData> LoopSubdivided(vtkPolyData* mesh, int levels)
     result->SetPoints(points);
   }
   return result;
-}
-
-namespace
-{
-// Whether a part of mesh has a normal map of the file's own.
-bool FileMapsNormals(vtkPolyData* mesh)
-{
-  vtkDataArray* maps = mesh->GetFieldData()->GetArray(PartNormalTextureArrayName);
-  for (vtkIdType p = 0; maps && p < maps->GetNumberOfTuples(); ++p)
-  {
-    if (maps->GetComponent(p, 0) >= 0)
-    {
-      return true;
-    }
-  }
-  return false;
-}
 }
 
 LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNormals)

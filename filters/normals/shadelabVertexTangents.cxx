@@ -92,25 +92,26 @@ vtkSmartPointer<vtkFloatArray> VertexTangents(vtkPolyData* mesh)
   {
     handedness[c.Point] += c.W * c.Angle;
   }
-  // The sums by position, normal and handedness.
+  // Each point's key: its position, normal and handedness; the sums by key.
   using Key = std::array<double, 7>;
-  const auto keyOf = [&](vtkIdType p)
+  std::vector<Key> keys(n);
+  for (vtkIdType p = 0; p < n; ++p)
   {
-    Key key{};
+    Key& key = keys[p];
     points->GetPoint(p, key.data());
     if (normals)
     {
       normals->GetTuple(p, key.data() + 3);
     }
     key[6] = handedness[p] < 0 ? -1 : 1;
-    return key;
-  };
+  }
   std::map<Key, Vec3> sums;
   for (const Corner& c : corners)
   {
-    if (c.W == keyOf(c.Point)[6])
+    const Key& key = keys[c.Point];
+    if (c.W == key[6])
     {
-      Vec3& sum = sums[keyOf(c.Point)];
+      Vec3& sum = sums[key];
       sum = sum + c.Angle * c.T;
     }
   }
@@ -120,11 +121,10 @@ vtkSmartPointer<vtkFloatArray> VertexTangents(vtkPolyData* mesh)
   tangents->SetNumberOfTuples(n);
   for (vtkIdType p = 0; p < n; ++p)
   {
-    const Key key = keyOf(p);
-    const auto sum = sums.find(key);
+    const auto sum = sums.find(keys[p]);
     const Vec3 t = sum == sums.end() ? Vec3{ 0, 0, 0 } : normalize(sum->second);
     const float tuple[4] = { static_cast<float>(t[0]), static_cast<float>(t[1]),
-      static_cast<float>(t[2]), static_cast<float>(key[6]) };
+      static_cast<float>(t[2]), static_cast<float>(keys[p][6]) };
     tangents->SetTypedTuple(p, tuple);
   }
   return tangents;

@@ -120,9 +120,8 @@ struct Pixel
   int Y = 0;
 };
 
-/** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
 /**
- * An image with a scale, IMAGE[:SCALE] (--normal-map): the scale is what
+ * An image with a scale, IMAGE[:SCALE] (--normal-map, --bump-map): the scale is what
  * follows the last ':' where that is a number, else 1 and the whole text
  * is the image.
  */
@@ -137,6 +136,7 @@ struct ScaledImage
   }
 };
 
+/** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
 struct NormalsSettings
 {
   std::string Weighting = "angle";
@@ -175,6 +175,10 @@ struct SceneOptions
   // the whole mesh at its texture coordinates, its x and y times Scale,
   // looked up with TextureWrapping and TextureFiltering.
   std::optional<ScaledImage> NormalMap;
+  // --bump-map: a height map (shadelabNormalMap.h, Height), its Scale the
+  // height of white in texels' widths, which perturbs the normal in
+  // NormalMap's place (a scene gives one of the two at most).
+  std::optional<ScaledImage> BumpMap;
   // How the shaders write the specular term: stable, or the lecture's expressions as written.
   SpecularForm Form = SpecularForm::Stable;
   // --vertex-shader, --fragment-shader: files of complete GLSL that replace
@@ -247,6 +251,13 @@ struct SceneOptions
   {
     return this->TransparentBackground ? std::nullopt : std::optional<Rgb>(this->Background);
   }
+
+  /** The map of the normal given: --normal-map's, else --bump-map's (a height map), else none. */
+  const std::optional<ScaledImage>& Relief() const
+  {
+    return this->NormalMap ? this->NormalMap : this->BumpMap;
+  }
+  std::optional<ScaledImage>& Relief() { return this->NormalMap ? this->NormalMap : this->BumpMap; }
 
   /** Fog with no colour over a transparent background: it takes coverage away (FogAt). */
   bool FogsTowardsTransparent() const

@@ -261,27 +261,31 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
   {
     terms->addRow(this->Toggle("environment  ks E(R)", &ViewState::Reflected));
   }
-  if (const auto& map = inspector.GetState().Scene.NormalMap)
+  if (const auto& map = inspector.GetState().Scene.Relief())
   {
-    // The map on or off, and its scale (the x and y of its directions).
+    // The map on or off, and its scale (the x and y of a normal map's
+    // directions, a bump map's height).
+    const bool bump = inspector.GetState().Scene.BumpMap.has_value();
+    const QString name = bump ? "bump map" : "normal map";
     auto* scale = new QDoubleSpinBox(this);
-    scale->setObjectName("normal map scale");
+    scale->setObjectName(name + " scale");
     scale->setRange(-10, 10);
     scale->setSingleStep(0.1);
     scale->setDecimals(2);
     scale->setKeyboardTracking(false);
     scale->setValue(map->Scale);
-    scale->setToolTip("--normal-map's SCALE: its directions' x and y times it");
-    terms->addRow(this->Toggle("normal map  N'", &ViewState::Relief), scale);
+    scale->setToolTip(bump ? "--bump-map's SCALE: the height of white above black, in texels"
+                           : "--normal-map's SCALE: its directions' x and y times it");
+    terms->addRow(this->Toggle(name + "  N'", &ViewState::Relief), scale);
     QObject::connect(scale, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
       [this](double value)
       {
         this->Engine.Edit(
           [value](ViewState& s)
           {
-            if (s.Scene.NormalMap)
+            if (auto& relief = s.Scene.Relief())
             {
-              s.Scene.NormalMap->Scale = value;
+              relief->Scale = value;
             }
           });
       });

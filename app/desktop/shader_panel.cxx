@@ -45,6 +45,7 @@ const std::array<Mark, ShaderPanel::MarkCount>& Marks()
     { "shadow", QColor(0xd2, 0xe6, 0xe6), "d <= map + bias", true },
     { "environment", QColor(0xe6, 0xf0, 0xc8), "ks*E(R)", true },
     { "normal map", QColor(0xf0, 0xe0, 0xd0), "N'=T x+B y+N z", true },
+    { "bump map", QColor(0xe6, 0xd8, 0xf0), "N'=N-k(T dh_s+B dh_t)", true },
   } };
   return marks;
 }

@@ -61,7 +61,7 @@ public:
    */
   static constexpr std::size_t AllMarks = 0;
   /** The terms and effects the generator marks (Marks(), shader_panel.cxx). */
-  static constexpr std::size_t MarkCount = 9;
+  static constexpr std::size_t MarkCount = 10;
 
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;

@@ -33,10 +33,12 @@ std::pair<std::string, std::string> RayTraceProblem(const SceneOptions& options)
     return { options.Environment,
       "--shading raytrace reflects the mesh by its rays, not an environment map" };
   }
-  if (options.NormalMap)
+  if (const auto& relief = options.Relief())
   {
-    return { options.NormalMap->Image,
-      "--shading raytrace reflects its rays about the mesh's normals, not a normal map's" };
+    return { relief->Image,
+      std::string("--shading raytrace reflects its rays about the mesh's "
+                  "normals, not a ") +
+        (options.BumpMap ? "bump map's" : "normal map's") };
   }
   for (const std::string* stage : { &options.VertexShader, &options.FragmentShader })
   {

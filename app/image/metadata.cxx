@@ -147,10 +147,11 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
       { "up", ToString(o.EnvironmentUp.value_or(o.Up)) },
       { "filter", ToString(o.TextureFiltering) } };
   }
-  if (o.NormalMap)
+  if (const auto& relief = o.Relief())
   {
-    j["normal_map"] = { { "image", o.NormalMap->Image }, { "scale", o.NormalMap->Scale },
-      { "wrap", ToString(o.TextureWrapping) }, { "filter", ToString(o.TextureFiltering) },
+    j[o.BumpMap ? "bump_map" : "normal_map"] = { { "image", relief->Image },
+      { "scale", relief->Scale }, { "wrap", ToString(o.TextureWrapping) },
+      { "filter", ToString(o.TextureFiltering) },
       { "tangents", "per point, from the texture coordinates (shadelabVertexTangents.h)" } };
   }
   auto parts = nlohmann::ordered_json::array();
@@ -183,6 +184,11 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
         { "wrap", { ToString(part.Relief->Map.WrapS), ToString(part.Relief->Map.WrapT) } },
         { "filter", ToString(part.Relief->Map.Filter) }
       };
+      if (part.FileBump)
+      {
+        // Whether it is grey is the image's: the description decodes none.
+        described["normal_map"]["from"] = "a bump statement: a height map where the image is grey";
+      }
     }
     parts.push_back(described);
   }

@@ -84,12 +84,21 @@ void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
   }
 }
 
-// A normal map's perturbation: the normal before it, the tangent frame,
-// where the map was read and what it held, and the normal that lit.
-ordered_json MappingJson(const NormalMapping& m)
+// A normal or bump map's perturbation, as `key` names it: the normal
+// before it, the tangent frame, where the map was read and what it held (a
+// height map's heights there and one texel along s and t), and the normal
+// that lit.
+void AddMapping(ordered_json& j, const NormalMapping& m)
 {
-  return { { "normal", m.N }, { "tangent", m.T }, { "bitangent", m.B }, { "texcoord", m.TexCoord },
-    { "texel", m.Texel }, { "tangent_space", m.TangentSpace }, { "perturbed", m.Perturbed } };
+  ordered_json& mapped = j[m.Height ? "bump_map" : "normal_map"];
+  mapped = { { "normal", m.N }, { "tangent", m.T }, { "bitangent", m.B },
+    { "texcoord", m.TexCoord }, { "texel", m.Texel } };
+  if (m.Height)
+  {
+    mapped["heights"] = m.Heights;
+  }
+  mapped["tangent_space"] = m.TangentSpace;
+  mapped["perturbed"] = m.Perturbed;
 }
 
 ordered_json VertexJson(const PixelProbe& p, int k)
@@ -112,7 +121,7 @@ ordered_json VertexJson(const PixelProbe& p, int k)
     v["color"] = t.Total();
     if (const auto& m = p.Shaded.VerticesMapped[k])
     {
-      v["normal_map"] = MappingJson(*m);
+      AddMapping(v, *m);
     }
     AddTerms(v, p, t);
   }
@@ -247,7 +256,7 @@ ordered_json ProbeJson(const PixelProbe& p)
   }
   if (p.Shaded.Mapped) // phong's at the fragment, flat's at the provoking vertex
   {
-    j["normal_map"] = MappingJson(*p.Shaded.Mapped);
+    AddMapping(j, *p.Shaded.Mapped);
   }
   if (p.Rule == Shading::Flat)
   {

@@ -236,12 +236,12 @@ void AddTerms(Lines& out, const std::string& indent, const PixelProbe& p,
   }
 }
 
-// A normal map's perturbation of the normal the rule took (`where`).
+// A normal or bump map's perturbation of the normal the rule took (`where`).
 void AddMapping(
   Lines& out, const std::string& indent, const NormalMapping& m, const std::string& where)
 {
   const std::string in = indent + "  ";
-  out.Add(indent, "normal map", where);
+  out.Add(indent, m.Height ? "bump map" : "normal map", where);
   out.Add(in, "N = " + ProbeTriple(m.N), "the normal the rule takes, unit, before the map");
   out.Add(in, "T = " + ProbeTriple(m.T), "the tangent (along s) made orthogonal to N");
   out.Add(in, "B = " + ProbeTriple(m.B), "w N x T, w the tangent's handedness");
@@ -249,7 +249,19 @@ void AddMapping(
     "texel = " + ProbeTriple(m.Texel) + " at (s, t) = (" + ProbeNumber(m.TexCoord[0]) + ", " +
       ProbeNumber(m.TexCoord[1]) + ")",
     "the map there, as stored");
-  out.Add(in, "(x, y, z) = " + ProbeTriple(m.TangentSpace), "(scale (2r-1), scale (2g-1), 2b-1)");
+  if (m.Height)
+  {
+    out.Add(in,
+      "h = " + ProbeNumber(m.Heights[0]) + ", h_s = " + ProbeNumber(m.Heights[1]) +
+        ", h_t = " + ProbeNumber(m.Heights[2]),
+      "the height (r) there, one texel along s, one along t");
+    out.Add(
+      in, "(x, y, z) = " + ProbeTriple(m.TangentSpace), "(-scale (h_s-h), -scale (h_t-h), 1)");
+  }
+  else
+  {
+    out.Add(in, "(x, y, z) = " + ProbeTriple(m.TangentSpace), "(scale (2r-1), scale (2g-1), 2b-1)");
+  }
   out.Add(in, "N' = " + ProbeTriple(m.Perturbed), "normalize(x T + y B + z N): what lights");
 }
 

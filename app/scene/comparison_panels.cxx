@@ -146,6 +146,7 @@ void ShowTerms(
   if (!normalMap)
   {
     s.NormalMap.reset();
+    s.BumpMap.reset();
   }
 }
 

@@ -194,7 +194,7 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   lap("normals");
   // A normal map's frame, where there are texture coordinates to make it
   // of (the scene says so where there are none).
-  if ((options.NormalMap || FileMapsNormals(mesh)) &&
+  if ((options.Relief() || FileMapsNormals(mesh)) &&
     mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
   {
     auto withTangents = vtkSmartPointer<vtkPolyData>::New();

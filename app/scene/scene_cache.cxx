@@ -56,9 +56,16 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       return shown;
     }
   }
-  if (options.NormalMap)
+  if (options.NormalMap && options.BumpMap)
   {
-    images.NormalMap = decoded(options.NormalMap->Image, {});
+    shown.Input = "--bump-map";
+    shown.Error = "takes the normal map's place, and --normal-map is given too: give one";
+    return shown;
+  }
+  if (const auto& relief = options.Relief())
+  {
+    const std::string option = options.BumpMap ? "--bump-map" : "--normal-map";
+    images.NormalMap = decoded(relief->Image, {});
     if (!images.NormalMap)
     {
       return shown;
@@ -66,13 +73,16 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
     if (!loaded.Mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
     {
       shown.Input = options.Mesh;
-      shown.Error = "--normal-map needs texture coordinates, and the mesh has none";
+      shown.Error = option + " needs texture coordinates, and the mesh has none";
       return shown;
     }
-    if (IsGrey(*images.NormalMap))
+    if (IsGrey(*images.NormalMap) != options.BumpMap.has_value())
     {
-      shown.Input = options.NormalMap->Image;
-      shown.Error = "is grey, a height map rather than a normal map (whose RGB is a direction)";
+      shown.Input = relief->Image;
+      shown.Error = options.BumpMap
+        ? "is not grey, so not a height map (a normal map's RGB goes to --normal-map)"
+        : "is grey, a height map rather than a normal map (whose RGB is a direction; --bump-map "
+          "reads heights)";
       return shown;
     }
   }

@@ -92,17 +92,17 @@ void SetTexture(const SceneOptions& options, const std::vector<Texture>& texture
   part.ImageName = FileTextureName(options, textures, drawn);
 }
 
-// The part's normal map: --normal-map's on every part, else the file's of a
-// part with its own material, unless it came from a bump statement and its
-// image is grey (a height map).
+// The part's normal map: --normal-map's or --bump-map's on every part, else
+// the file's of a part with its own material, a height map where it came
+// from a bump statement and its image is grey.
 void SetNormalMap(const SceneOptions& options, const std::vector<Texture>& textures,
   const SceneImages& images, const FileTextures& fileTextures, ScenePart& part)
 {
-  if (options.NormalMap)
+  if (const auto& given = options.Relief())
   {
     part.Relief = NormalMap{ { images.NormalMap, options.TextureWrapping, options.TextureWrapping,
                                options.TextureFiltering },
-      options.NormalMap->Scale };
+      given->Scale, options.BumpMap.has_value() };
     return;
   }
   const int n = fileTextures.Normal;
@@ -112,15 +112,12 @@ void SetNormalMap(const SceneOptions& options, const std::vector<Texture>& textu
   }
   const Texture& file = textures[n];
   const auto image = n < static_cast<int>(images.File.size()) ? images.File[n] : nullptr;
-  if (image && fileTextures.NormalFromBump && IsGrey(*image))
-  {
-    return;
-  }
   part.Relief = NormalMap{ { image, WrapFromGL(file.WrapS).value_or(TextureWrap::Repeat),
                              WrapFromGL(file.WrapT).value_or(TextureWrap::Repeat),
                              FilterFromGL(file.MagFilter).value_or(TextureFilter::Bilinear) },
-    fileTextures.NormalScale };
+    fileTextures.NormalScale, image && fileTextures.NormalFromBump && IsGrey(*image) };
   part.FileNormalTexture = n;
+  part.FileBump = fileTextures.NormalFromBump;
 }
 }
 

@@ -57,12 +57,14 @@ struct ScenePart
   SurfaceTexture Texture;
   std::string ImageName; // the texture's image file, "MESH (texture I)" for an embedded one
   int FileTexture = -1;  // the mesh file's texture drawn (MeshTextures' index), else -1
-  // The normal map that perturbs its normals: --normal-map's (with the
-  // textures' wrap and filter), or the file's (OBJ norm, bump, map_Bump;
-  // glTF normalTexture) where the part has its own material; none without
-  // one. Its image is null where SceneParts was not given the images.
+  // The normal or height map that perturbs its normals: --normal-map's or
+  // --bump-map's (with the textures' wrap and filter), or the file's (OBJ
+  // norm, bump, map_Bump, a height map where its image is grey; glTF
+  // normalTexture) where the part has its own material; none without one.
+  // Its image is null where SceneParts was not given the images.
   std::optional<NormalMap> Relief;
   int FileNormalTexture = -1; // the mesh file's texture that is its normal map, else -1
+  bool FileBump = false;      // that map is a bump statement's: a height map where it is grey
 };
 
 /**
@@ -74,7 +76,7 @@ struct SceneImages
   std::shared_ptr<const TextureImage> Option;
   std::vector<std::shared_ptr<const TextureImage>> File;
   std::shared_ptr<const TextureImage> Environment; // --environment's
-  std::shared_ptr<const TextureImage> NormalMap;   // --normal-map's
+  std::shared_ptr<const TextureImage> NormalMap;   // --normal-map's or --bump-map's
 };
 
 /**

@@ -93,6 +93,13 @@ std::vector<Setting> MakeSettings()
             "takes the normal's place where the rule takes the normal (per fragment, per vertex, "
             "at the provoking vertex); looked up with --texture-wrap and --texture-filter" },
       ScaledFile{}, SHADELAB_FIELD(NormalMap)),
+    Plain({ "--bump-map", "bump_map", "IMAGE[:SCALE]",
+            "A height (bump) map, grey, its stored values as data, at the mesh's texture "
+            "coordinates: the normal tilts by the height's differences one texel apart along s "
+            "and t (Blinn's bump, in the tangent frame), SCALE (default 1) the height of white "
+            "above black in texels' widths; in --normal-map's place, where the rule takes the "
+            "normal; looked up with --texture-wrap and --texture-filter" },
+      ScaledFile{}, SHADELAB_FIELD(BumpMap)),
     Plain({ "--specular-form", "specular_form", "",
             "How the shaders write the specular term: stable, 1 - cos without cancellation and a "
             "power that holds up to ns = 1e6; literal, the lecture's pow(max(N.H, 0), ns) as "

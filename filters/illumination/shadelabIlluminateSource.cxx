@@ -285,7 +285,7 @@ std::string DeclarationsSource(const ShaderFeatures& f)
         std::to_string(i));
     }
   }
-  return s + GuardSource + (f.MapsNormals() ? NormalMapSource : "");
+  return s + GuardSource + (f.MapsNormals() ? ReliefSource(f.BumpMap) : std::string());
 }
 
 // The reflection model, compiled in: shadelabSpecularD, its head and its

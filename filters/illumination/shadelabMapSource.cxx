@@ -37,14 +37,39 @@ vec3 shadelabEnvironmentAt(vec3 R)
 }
 )glsl";
 
-// ShaderFeatures::NormalMap: textureLod, so that the vertex stage (gouraud)
-// may read the map too.
-const char* const NormalMapSource = R"glsl(uniform sampler2D shadelabNormalMap;
+namespace
+{
+// ShaderFeatures::NormalMap: shadelabReliefVector(st), the map's vector
+// along (T, B, N), a normal map's texel or a height map's differences (the
+// height in r, one texel apart through the same sampler, so in its wrap and
+// filter); textureLod, so that the vertex stage (gouraud) may read the map too.
+const char* const NormalMapVectorSource = R"glsl(uniform sampler2D shadelabNormalMap;
 uniform float shadelabNormalScale;
-vec3 shadelabMapNormal(vec3 N, vec3 T, float w, vec2 st)
+vec3 shadelabReliefVector(vec2 st)
 {
   vec3 texel = textureLod(shadelabNormalMap, st, 0.0).rgb; // shadelab: normal map
-  vec3 m = vec3(shadelabNormalScale * (2.0 * texel.xy - 1.0), 2.0 * texel.z - 1.0);
+  return vec3(shadelabNormalScale * (2.0 * texel.xy - 1.0), 2.0 * texel.z - 1.0);
+}
+)glsl";
+
+const char* const BumpMapVectorSource =
+  R"glsl(uniform sampler2D shadelabNormalMap; // the height map: r is the height
+uniform float shadelabNormalScale;
+vec3 shadelabReliefVector(vec2 st)
+{
+  vec2 texel = 1.0 / vec2(textureSize(shadelabNormalMap, 0));
+  float h = textureLod(shadelabNormalMap, st, 0.0).r; // shadelab: bump map
+  float dhs = textureLod(shadelabNormalMap, st + vec2(texel.x, 0.0), 0.0).r - h; // shadelab: bump map
+  float dht = textureLod(shadelabNormalMap, st + vec2(0.0, texel.y), 0.0).r - h; // shadelab: bump map
+  return vec3(-shadelabNormalScale * vec2(dhs, dht), 1.0);
+}
+)glsl";
+
+// N perturbed by the vector in the frame of T (less its part along N) and
+// w N x T, the oracle's MapNormal.
+const char* const MapNormalSource = R"glsl(vec3 shadelabMapNormal(vec3 N, vec3 T, float w, vec2 st)
+{
+  vec3 m = shadelabReliefVector(st);
   vec3 t = T - dot(N, T) * N;
   float tLength = length(t);
   if (!(tLength > shadelabTinyLength))
@@ -52,9 +77,23 @@ vec3 shadelabMapNormal(vec3 N, vec3 T, float w, vec2 st)
     return N;
   }
   t /= tLength;
-  vec3 n = m.x * t + m.y * (w * cross(N, t)) + m.z * N; // shadelab: normal map
+  vec3 n = m.x * t + m.y * (w * cross(N, t)) + m.z * N; // shadelab: $
   float len = length(n);
   return len > shadelabTinyLength ? n / len : N;
 }
 )glsl";
+}
+
+std::string ReliefSource(bool height)
+{
+  std::string mapping = MapNormalSource;
+  const std::size_t at = mapping.find('$');
+  mapping.replace(at, 1, ReliefMark(height));
+  return (height ? BumpMapVectorSource : NormalMapVectorSource) + mapping;
+}
+
+const char* ReliefMark(bool height)
+{
+  return height ? "bump map" : "normal map";
+}
 }

@@ -3,6 +3,8 @@
 #ifndef shadelabMapSource_h
 #define shadelabMapSource_h
 
+#include <string>
+
 namespace shadelab
 {
 /**
@@ -12,12 +14,15 @@ namespace shadelab
 extern const char* const EnvironmentSource;
 
 /**
- * shadelabMapNormal(N, T, w, st): unit N perturbed by the normal map at st
- * in the frame of tangent T with handedness w (the oracle's MapNormal,
- * shadelabNormalMap.cxx), with its sampler and scale. Reads
- * shadelabTinyLength.
+ * shadelabMapNormal(N, T, w, st): unit N perturbed by the normal map, or
+ * the height (bump) map, at st in the frame of tangent T with handedness w
+ * (the oracle's MapNormal, shadelabNormalMap.cxx), with its sampler and
+ * scale. Reads shadelabTinyLength.
  */
-extern const char* const NormalMapSource;
+std::string ReliefSource(bool height);
+
+/** The shader panel's mark of a normal map's lines, or a height map's. */
+const char* ReliefMark(bool height);
 }
 
 #endif

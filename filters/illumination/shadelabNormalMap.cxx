@@ -29,8 +29,19 @@ NormalMapping MapNormal(
   m.N = N;
   m.TexCoord = st;
   m.Texel = SampleTexture(map.Map, st[0], st[1]);
-  m.TangentSpace = { map.Scale * (2 * m.Texel[0] - 1), map.Scale * (2 * m.Texel[1] - 1),
-    2 * m.Texel[2] - 1 };
+  m.Height = map.Height;
+  if (map.Height)
+  {
+    m.Heights = { m.Texel[0], SampleTexture(map.Map, st[0] + 1.0 / map.Map.Image->Width, st[1])[0],
+      SampleTexture(map.Map, st[0], st[1] + 1.0 / map.Map.Image->Height)[0] };
+    m.TangentSpace = { -map.Scale * (m.Heights[1] - m.Heights[0]),
+      -map.Scale * (m.Heights[2] - m.Heights[0]), 1 };
+  }
+  else
+  {
+    m.TangentSpace = { map.Scale * (2 * m.Texel[0] - 1), map.Scale * (2 * m.Texel[1] - 1),
+      2 * m.Texel[2] - 1 };
+  }
   m.Perturbed = N;
   const Vec3 t{ tangent[0], tangent[1], tangent[2] };
   const Vec3 along = t - dot(N, t) * N;

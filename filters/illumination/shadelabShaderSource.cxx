@@ -1,6 +1,7 @@
 #include "shadelabShaderSource.h"
 
 #include "shadelabIlluminateSource.h"
+#include "shadelabMapSource.h"
 
 #include <string>
 
@@ -29,7 +30,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const
     this->KaTexture == o.KaTexture && this->KsTexture == o.KsTexture &&
     this->AllFeatures == o.AllFeatures && this->BehindLines == o.BehindLines &&
     this->Shadows == o.Shadows && this->Form == o.Form && this->Environment == o.Environment &&
-    this->NormalMap == o.NormalMap;
+    this->NormalMap == o.NormalMap && this->BumpMap == o.BumpMap;
 }
 
 namespace
@@ -210,12 +211,14 @@ void AddTexCoords(std::vector<ShaderReplacement>& r, bool passed, bool texel)
 }
 
 // ShaderFeatures::NormalMap, the line that perturbs unit normal `n` with
-// tangent `t` (in view coordinates) of handedness `w` at texture coordinates `st`.
-std::string MapNormalLine(const std::string& indent, const std::string& target,
-  const std::string& n, const std::string& t, const std::string& w, const std::string& st)
+// tangent `t` (in view coordinates) of handedness `w` at texture coordinates
+// `st`, marked as f's map.
+std::string MapNormalLine(const ShaderFeatures& f, const std::string& indent,
+  const std::string& target, const std::string& n, const std::string& t, const std::string& w,
+  const std::string& st)
 {
   return indent + target + " = shadelabMapNormal(" + n + ", " + t + ", " + w + ", " + st +
-    "); // shadelab: normal map\n";
+    "); // shadelab: " + ReliefMark(f.BumpMap) + "\n";
 }
 
 // Phong: the tangents to the fragment, in view coordinates (the normal's
@@ -232,7 +235,7 @@ void AddTangentPassing(std::vector<ShaderReplacement>& r)
 
 // Gouraud: the vertex's unit normal n / len perturbed before it lights
 // front and back (VertexLightingSource and its sums apart).
-std::string WithVertexNormalMapped(const std::string& lighting)
+std::string WithVertexNormalMapped(const ShaderFeatures& f, const std::string& lighting)
 {
   const std::string opening = "    if (len > shadelabTinyLength && !isinf(len))\n    {\n";
   const std::size_t at = lighting.find(opening) + opening.size();
@@ -242,7 +245,7 @@ std::string WithVertexNormalMapped(const std::string& lighting)
     rest.replace(p, 7, "shadelabMappedN");
   }
   return lighting.substr(0, at) +
-    MapNormalLine("      ", "vec3 shadelabMappedN", "n / len",
+    MapNormalLine(f, "      ", "vec3 shadelabMappedN", "n / len",
       std::string("normalMatrix * ") + TangentAttributeName + ".xyz",
       TangentAttributeName + std::string(".w"), TextureCoordinateAttributeName) +
     rest;
@@ -325,7 +328,7 @@ void AddVertexLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
       : "shadelabTowardsViewer(normalVCVSOutput, vertexVCVSOutput.xyz)");
   if (f.MapsNormals())
   {
-    lighting = WithVertexNormalMapped(lighting);
+    lighting = WithVertexNormalMapped(f, lighting);
     declarations = std::string("in vec4 ") + TangentAttributeName + ";\n" + declarations;
   }
   if (f.VertexKd)
@@ -376,8 +379,9 @@ void AddFlatLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
     declarations +=
       "flat in vec4 shadelabProvokingTangent;\nflat in vec2 shadelabProvokingTCoord;\n";
     shade += "  if (len > shadelabTinyLength && !isinf(len))\n  {\n" +
-      MapNormalLine("    ", "n", "n / len", "shadelabNormalMatrix * shadelabProvokingTangent.xyz",
-        "shadelabProvokingTangent.w", "shadelabProvokingTCoord") +
+      MapNormalLine(f, "    ", "n", "n / len",
+        "shadelabNormalMatrix * shadelabProvokingTangent.xyz", "shadelabProvokingTangent.w",
+        "shadelabProvokingTCoord") +
       "    len = 1.0;\n  }\n";
   }
   shade += std::string(f.Drawn == Representation::Surface
@@ -417,7 +421,7 @@ void AddFragmentLit(const ShaderFeatures& f, std::vector<ShaderReplacement>& r)
   {
     const std::string normalised = "    shadelabN = normalVCVSOutput / shadelabLength;\n";
     shade.insert(shade.find(normalised) + normalised.size(),
-      MapNormalLine("    ", "shadelabN", "shadelabN", "shadelabTangentVCVSOutput.xyz",
+      MapNormalLine(f, "    ", "shadelabN", "shadelabN", "shadelabTangentVCVSOutput.xyz",
         "shadelabTangentVCVSOutput.w", "shadelabTCoordVSOutput"));
   }
   if (f.VertexKd)

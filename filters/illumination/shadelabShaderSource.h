@@ -93,6 +93,9 @@ struct ShaderFeatures
   // the normal is perturbed where the rule takes it (phong per fragment,
   // gouraud per vertex, flat at the provoking vertex), on a lit surface.
   bool NormalMap = false;
+  // The normal map is a height (bump) map: its vector comes from the
+  // height's differences one texel apart (shadelabNormalMap.h).
+  bool BumpMap = false;
 
   bool Textured() const
   {

@@ -181,7 +181,7 @@ MtlLibrary ParseMtl(std::string_view text)
     MtlMaterial& material = materials.back();
     if (normal)
     {
-      // norm is a normal map; a bump one may be (a grey image is a height map).
+      // norm is a normal map; a bump one may be, or a height map (a grey image).
       const MtlMap read = ReadMap(scanner, keyword, library.Warnings);
       if (keyword == "norm" || material.NormalMap.File.empty() || material.NormalFromBump)
       {

@@ -7,7 +7,8 @@
  * and its normal map, norm or else bump / map_Bump.
  * Of the options, `-clamp on|off` is honoured (on: the image's edge
  * continues beyond it; off, the default: it repeats), and a normal map's
- * `-bm SCALE` (the scale of its x and y); the others that the
+ * `-bm SCALE` (the scale of its x and y, or of a height map's heights);
+ * the others that the
  * MTL specification defines (-blendu, -blendv, -cc, -mm, -o, -s, -t,
  * -texres, -bm, -boost, -imfchan) are skipped with their values and a
  * warning, since they would change the picture in ways not drawn here. FILE

@@ -217,6 +217,7 @@ void vtkShadelabShading::SetNormalMap(const std::optional<NormalMap>& map)
 {
   this->Relief = map;
   this->Features.NormalMap = map.has_value();
+  this->Features.BumpMap = map && map->Height;
   this->Modified();
 }
 

@@ -269,18 +269,29 @@ inline EnvironmentImage EnvironmentOf(EnvironmentKind kind)
   return e;
 }
 
-// The test's normal maps (--normal-map), 8-bit RGB, top row first:
+// The test's normal maps (--normal-map) and height maps (--bump-map),
+// 8-bit RGB, top row first, TextureSide x TextureSide texels. Normal maps:
 // Constant one texel colour everywhere, a tilt towards +s and -t; Pattern
-// TextureSide x TextureSide texels, no two alike, each a direction leaning
-// its own way, so that a flipped or shifted lookup, or a wrong frame, shows.
+// no two texels alike, each a direction leaning its own way, so that a
+// flipped or shifted lookup, or a wrong frame, shows. Height maps (grey):
+// Heights no two alike, so that every difference one texel apart is its
+// own; Ramp rising RampStep a column along s, alike along t.
 enum class NormalMapKind
 {
   None,
   Constant,
-  Pattern
+  Pattern,
+  Heights,
+  Ramp
 };
 
 constexpr unsigned char ConstantNormal[3] = { 200, 110, 220 };
+constexpr int RampStep = 50;
+
+inline bool IsHeightMap(NormalMapKind kind)
+{
+  return kind == NormalMapKind::Heights || kind == NormalMapKind::Ramp;
+}
 
 inline EnvironmentImage NormalMapOf(NormalMapKind kind)
 {
@@ -293,10 +304,14 @@ inline EnvironmentImage NormalMapOf(NormalMapKind kind)
       const unsigned char pattern[3] = { static_cast<unsigned char>(40 + 45 * column + 7 * row),
         static_cast<unsigned char>(215 - 50 * row + 6 * column),
         static_cast<unsigned char>(150 + 30 * ((column + 2 * row) % 4)) };
+      const auto height = static_cast<unsigned char>(kind == NormalMapKind::Ramp
+          ? 30 + RampStep * column
+          : 20 + 53 * ((3 * column + row) % 4) + 11 * row);
       for (int channel = 0; channel < 3; ++channel)
       {
-        e.Bytes.push_back(
-          kind == NormalMapKind::Constant ? ConstantNormal[channel] : pattern[channel]);
+        e.Bytes.push_back(kind == NormalMapKind::Constant ? ConstantNormal[channel]
+            : IsHeightMap(kind)                           ? height
+                                                          : pattern[channel]);
       }
     }
   }
@@ -675,9 +690,10 @@ struct Scene
   EnvironmentKind Environment = EnvironmentKind::None;
   bool ZUp = false;
   bool OwnUp = false;
-  // --normal-map: NormalMapOf(NormalMap) as an 8-bit PNG with scale
-  // NormalScale, at the grid's TexCoordAt (the mesh an OFF), looked up
-  // with Wrap and Filter. Plain grids only: their tangent is GridTangent.
+  // --normal-map, or --bump-map for a height map: NormalMapOf(NormalMap)
+  // as an 8-bit PNG with scale NormalScale, at the grid's TexCoordAt (the
+  // mesh an OFF), looked up with Wrap and Filter. Plain grids only: their
+  // tangent is GridTangent.
   NormalMapKind NormalMap = NormalMapKind::None;
   double NormalScale = 1;
   // --shadows, --shadow-map-size: the oracle casts shadow rays.
@@ -1008,7 +1024,9 @@ inline std::vector<std::string> SceneArguments(const Scene& s, const TempDir& di
     const auto normals = dir / "normals.png";
     const EnvironmentImage n = NormalMapOf(s.NormalMap);
     WriteImage8(normals, n.Width, n.Height, n.Bytes);
-    args.insert(args.end(), { "--normal-map", normals.string() + ":" + Num(s.NormalScale) });
+    args.insert(args.end(),
+      { IsHeightMap(s.NormalMap) ? "--bump-map" : "--normal-map",
+        normals.string() + ":" + Num(s.NormalScale) });
     if (!s.Textured)
     {
       args.insert(
@@ -1191,6 +1209,7 @@ public:
       n.Map.WrapS = n.Map.WrapT = s.Wrap;
       n.Map.Filter = s.Filter;
       n.Scale = s.NormalScale;
+      n.Height = IsHeightMap(s.NormalMap);
     }
     if (s.Environment != EnvironmentKind::None)
     {

@@ -601,6 +601,39 @@ const BadCase Cases[] = {
         { "--shading", "raytrace", "--normal-map", (d / "n.png").string() });
     },
     1, { "n.png", "not a normal map's" } },
+  // --bump-map: a mesh without texture coordinates, an image that is not
+  // grey (a normal map's), both maps at once; under the ray tracer.
+  { "BumpMapWithoutTextureCoordinates",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "h.png", 1, 1, { 90, 90, 90 });
+      return WithMesh(d, "t.obj", Tetrahedron, { "--bump-map", (d / "h.png").string() });
+    },
+    1, { "t.obj", "--bump-map needs texture coordinates" } },
+  { "BumpMapNotGrey",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "n.png", 1, 1, { 128, 128, 255 });
+      return WithMesh(d, "st.off", TexturedQuad, { "--bump-map", (d / "n.png").string() + ":3" });
+    },
+    1, { "n.png", "is not grey, so not a height map" } },
+  { "BumpMapWithANormalMap",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "h.png", 1, 1, { 90, 90, 90 });
+      WriteImage8(d / "n.png", 1, 1, { 128, 128, 255 });
+      return WithMesh(d, "st.off", TexturedQuad,
+        { "--bump-map", (d / "h.png").string(), "--normal-map", (d / "n.png").string() });
+    },
+    1, { "--bump-map", "--normal-map is given too" } },
+  { "BumpMapUnderRaytrace",
+    [](const TempDir& d)
+    {
+      WriteImage8(d / "h.png", 1, 1, { 90, 90, 90 });
+      return WithMesh(d, "st.off", TexturedQuad,
+        { "--shading", "raytrace", "--bump-map", (d / "h.png").string() });
+    },
+    1, { "h.png", "not a bump map's" } },
   // Files that are no regular files: read forever (/dev/zero) or block in
   // open() (a FIFO) unless refused first.
   { "MeshIsALinkToDevZero",

@@ -233,9 +233,10 @@ TEST(GeneratedShaders, EnvironmentCodeOnlyWhereItReflects)
   }
 }
 
-// A normal map's lookup is in the stage that takes the normal (gouraud's
-// vertex stage, flat's and phong's fragment stage) and nowhere without one,
-// under none, or drawing edges (which have no tangent plane).
+// A normal map's lookup, or a bump map's (its heights one texel apart),
+// is in the stage that takes the normal (gouraud's vertex stage, flat's
+// and phong's fragment stage) and nowhere without one, under none, or
+// drawing edges (which have no tangent plane).
 TEST(GeneratedShaders, NormalMapCodeOnlyWhereItMapsNormals)
 {
   TempDir dir;
@@ -243,6 +244,8 @@ TEST(GeneratedShaders, NormalMapCodeOnlyWhereItMapsNormals)
   WriteText(mesh, "STOFF\n4 2 0\n0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n");
   WriteImage8(dir / "n.png", 2, 1, { 200, 110, 220, 128, 128, 255 });
   const std::string map = (dir / "n.png").string() + ":0.5";
+  WriteImage8(dir / "h.png", 2, 1, { 10, 10, 10, 200, 200, 200 });
+  const std::string heights = (dir / "h.png").string() + ":2";
   for (const char* rule : { "none", "flat", "gouraud", "phong" })
   {
     SCOPED_TRACE(rule);
@@ -259,5 +262,12 @@ TEST(GeneratedShaders, NormalMapCodeOnlyWhereItMapsNormals)
     const Dumped edges = Render(
       dir, name, { "--shading", rule, "--normal-map", map, "--representation", "wireframe" }, mesh);
     EXPECT_FALSE(Contains(edges.Vertex + edges.Fragment, "shadelabNormalMap"));
+    EXPECT_FALSE(Contains(mapped.Vertex + mapped.Fragment, "bump map"));
+    const Dumped bumped = Render(dir, name, { "--shading", rule, "--bump-map", heights }, mesh);
+    const std::string bumpedLit = r == "gouraud" ? bumped.Vertex : bumped.Fragment;
+    EXPECT_EQ(Contains(bumpedLit, "st + vec2(texel.x, 0.0), 0.0).r - h; // shadelab: bump map"),
+      r != "none");
+    EXPECT_EQ(Contains(bumpedLit, "); // shadelab: bump map\n"), r != "none");
+    EXPECT_FALSE(Contains(bumped.Vertex + bumped.Fragment, "normal map"));
   }
 }

@@ -138,18 +138,28 @@ TEST(NormalMap, AConstantMapTiltsTheNormalsAsTheGeometryWould)
 }
 
 // probe explains the map where the rule took the normal: the tangent frame
-// (the grid's dP/ds made orthogonal to N, B = N x T), the texel, and the
-// perturbed normal, which is the normal its terms are lit with; they add
-// up to the oracle, and the oracle's normal is the harness's (phong's and
-// flat's at the pixel, gouraud's at each vertex through the weights).
+// (the grid's dP/ds made orthogonal to N, B = N x T), the texel (a bump
+// map's heights there and one texel along s and t, and the vector they
+// make), and the perturbed normal, which is the normal its terms are lit
+// with; they add up to the oracle, and the oracle's normal is the
+// harness's (phong's and flat's at the pixel, gouraud's at each vertex
+// through the weights).
 TEST(NormalMapProbe, ExplainsThePerturbedNormalThatLights)
 {
-  for (Shading r : LitRules)
+  for (const auto& [r, kind] : { std::pair{ Shading::Flat, NormalMapKind::Pattern },
+         std::pair{ Shading::Gouraud, NormalMapKind::Pattern },
+         std::pair{ Shading::Phong, NormalMapKind::Pattern },
+         std::pair{ Shading::Flat, NormalMapKind::Heights },
+         std::pair{ Shading::Gouraud, NormalMapKind::Heights },
+         std::pair{ Shading::Phong, NormalMapKind::Heights } })
   {
-    SCOPED_TRACE(ToString(r));
+    SCOPED_TRACE(std::string(ToString(r)) + (IsHeightMap(kind) ? " bump map" : " normal map"));
     Scene s;
     s.Rule = r;
-    s.NormalMap = NormalMapKind::Pattern;
+    s.NormalMap = kind;
+    s.NormalScale = IsHeightMap(kind) ? 2 : 1;
+    shadelab::TextureMap heights;
+    heights.Image = std::make_shared<shadelab::TextureImage>(NormalMapOf(kind).Decoded());
     TempDir dir;
     const Oracle oracle(s);
     const std::vector<std::array<int, 2>> pixels = ComparedPixels(s, oracle);
@@ -174,9 +184,23 @@ TEST(NormalMapProbe, ExplainsThePerturbedNormalThatLights)
       }
       for (const json* at : lit)
       {
-        ASSERT_TRUE(at->contains("normal_map"));
-        const json& m = at->at("normal_map");
+        const char* key = IsHeightMap(kind) ? "bump_map" : "normal_map";
+        ASSERT_TRUE(at->contains(key));
+        const json& m = at->at(key);
         const Vec3 n = Vec(m.at("normal"));
+        if (IsHeightMap(kind))
+        {
+          // The heights at (s, t) and one texel (of TextureSide) along s and t.
+          const auto st = m.at("texcoord").get<std::array<double, 2>>();
+          const Vec3 h = Vec(m.at("heights"));
+          ExpectNear(h,
+            { shadelab::SampleTexture(heights, st[0], st[1])[0],
+              shadelab::SampleTexture(heights, st[0] + 1.0 / TextureSide, st[1])[0],
+              shadelab::SampleTexture(heights, st[0], st[1] + 1.0 / TextureSide)[0] },
+            1e-7, "heights"); // the texels as float
+          ExpectNear(Vec(m.at("tangent_space")), { -2 * (h[1] - h[0]), -2 * (h[2] - h[0]), 1 },
+            1e-12, "the heights' vector");
+        }
         ExpectNear(Vec(m.at("tangent")), normalize(dPds - dot(n, dPds) * n), 1e-6, "T");
         ExpectNear(Vec(m.at("bitangent")), cross(n, Vec(m.at("tangent"))), 1e-12, "B");
         const Vec3 t = Vec(m.at("tangent_space"));
@@ -273,37 +297,40 @@ double Largest(const Image& a, const Image& b)
 }
 
 // An OBJ's normal map, norm or bump / map_Bump with -bm as its scale, is
-// drawn as --normal-map IMAGE:SCALE is (which the oracle cases hold to the
-// oracle): the same picture, under every rule. A bump statement naming a
-// grey image (a height map) draws no normal map.
-TEST(NormalMapFiles, AnObjsNormAndBumpAreTheOptionsNormalMap)
+// drawn as --normal-map IMAGE:SCALE is, and a bump statement naming a grey
+// image (a height map) as --bump-map IMAGE:SCALE is (which the oracle cases
+// hold to the oracle): the same picture, under every rule.
+TEST(NormalMapFiles, AnObjsNormAndBumpAreTheOptionsMaps)
 {
   for (Shading r : LitRules)
   {
-    SCOPED_TRACE(ToString(r));
-    Scene s;
-    s.Rule = r;
-    s.NormalMap = NormalMapKind::Pattern;
-    s.NormalScale = 0.5;
-    TempDir dir;
-    std::string error;
-    const Image option = Render(s, dir, error);
-    ASSERT_EQ(error, "");
-    std::vector<std::string> args =
-      Without(SceneArguments(s, dir), { "--normal-map", "--ka", "--kd", "--ks", "--ns" });
-    for (const std::string map :
-      { "norm -bm 0.5 normals.png", "map_Bump -bm 0.5 normals.png", "bump -bm 0.5 normals.png" })
+    for (NormalMapKind kind : { NormalMapKind::Pattern, NormalMapKind::Heights })
     {
-      SCOPED_TRACE(map);
-      args[0] = GridObj(s, dir, map).string();
-      EXPECT_EQ(Largest(RenderArgs(args, dir, error), option), 0);
-      EXPECT_EQ(error, "");
+      SCOPED_TRACE(std::string(ToString(r)) + (IsHeightMap(kind) ? " bump map" : " normal map"));
+      Scene s;
+      s.Rule = r;
+      s.NormalMap = kind;
+      s.NormalScale = 0.5;
+      TempDir dir;
+      std::string error;
+      const Image option = Render(s, dir, error);
+      ASSERT_EQ(error, "");
+      std::vector<std::string> args = Without(
+        SceneArguments(s, dir), { "--normal-map", "--bump-map", "--ka", "--kd", "--ks", "--ns" });
+      std::vector<std::string> statements{ "map_Bump -bm 0.5 normals.png",
+        "bump -bm 0.5 normals.png" };
+      if (!IsHeightMap(kind))
+      {
+        statements.push_back("norm -bm 0.5 normals.png");
+      }
+      for (const std::string& map : statements)
+      {
+        SCOPED_TRACE(map);
+        args[0] = GridObj(s, dir, map).string();
+        EXPECT_EQ(Largest(RenderArgs(args, dir, error), option), 0);
+        EXPECT_EQ(error, "");
+      }
     }
-    s.NormalMap = NormalMapKind::None;
-    const Image plain = Render(s, dir, error);
-    WriteImage8(dir / "height.png", 2, 1, { 10, 10, 10, 200, 200, 200 });
-    args[0] = GridObj(s, dir, "bump height.png").string();
-    EXPECT_EQ(Largest(RenderArgs(args, dir, error), plain), 0);
   }
 }
 

@@ -403,36 +403,45 @@ TEST(Controls, TheEnvironmentsToggleTakesItsTermOutAndBack)
   EXPECT_EQ(Settings(inspector), with);
 }
 
-// A normal map has its toggle and its scale in the Terms group where the
-// scene has one: the toggle takes --normal-map out of the scene the view
-// shows and puts it back, the scale changes its SCALE and nothing else.
+// A normal map, or a bump map, has its toggle and its scale in the Terms
+// group where the scene has one: the toggle takes --normal-map (--bump-map)
+// out of the scene the view shows and puts it back, the scale changes its
+// SCALE and nothing else.
 TEST(Controls, TheNormalMapsToggleAndScaleChangeOnlyIt)
 {
   TempDir dir;
   WriteText(dir / "square.off",
     "STOFF\n4 2 0\n-1 -1 0 0 0\n1 -1 0 1 0\n1 1 0 1 1\n-1 1 0 0 1\n3 0 1 2\n3 0 2 3\n");
   WriteImage8(dir / "n.png", 2, 1, { 200, 110, 220, 128, 128, 255 });
-  ViewOptions options = SpotView(Shading::Phong);
-  options.Scene.Mesh = (dir / "square.off").string();
-  options.Scene.NormalMap = ScaledImage{ (dir / "n.png").string(), 1 };
-  Inspector inspector(options, "shadelab view");
-  ASSERT_EQ(inspector.Load(), 0);
+  WriteImage8(dir / "h.png", 2, 1, { 10, 10, 10, 200, 200, 200 });
   const auto application = MakeApplication();
-  InspectorWindow window(inspector);
-  ASSERT_TRUE(window.Open(options.Scene.Size));
-  QCheckBox* toggle = ToggleNamed(window, "normal map");
-  ASSERT_NE(toggle, nullptr);
-  auto* scale = window.findChild<QDoubleSpinBox*>("normal map scale");
-  ASSERT_NE(scale, nullptr);
-  const auto with = Settings(inspector);
-  EXPECT_EQ(with.at("--normal-map"), (dir / "n.png").string() + ";");
-  toggle->click();
-  EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ "--normal-map" });
-  EXPECT_FALSE(inspector.ShownScene().NormalMap);
-  toggle->click();
-  EXPECT_EQ(Settings(inspector), with);
-  Type(scale, "0.5");
-  const auto scaled = Settings(inspector);
-  EXPECT_EQ(Changed(with, scaled), std::set<std::string>{ "--normal-map" });
-  EXPECT_EQ(scaled.at("--normal-map"), (dir / "n.png").string() + ":0.5;");
+  for (const bool bump : { false, true })
+  {
+    const std::string name = bump ? "bump map" : "normal map";
+    const std::string option = bump ? "--bump-map" : "--normal-map";
+    const std::string image = (dir / (bump ? "h.png" : "n.png")).string();
+    SCOPED_TRACE(name);
+    ViewOptions options = SpotView(Shading::Phong);
+    options.Scene.Mesh = (dir / "square.off").string();
+    (bump ? options.Scene.BumpMap : options.Scene.NormalMap) = ScaledImage{ image, 1 };
+    Inspector inspector(options, "shadelab view");
+    ASSERT_EQ(inspector.Load(), 0);
+    InspectorWindow window(inspector);
+    ASSERT_TRUE(window.Open(options.Scene.Size));
+    QCheckBox* toggle = ToggleNamed(window, QString::fromStdString(name));
+    ASSERT_NE(toggle, nullptr);
+    auto* scale = window.findChild<QDoubleSpinBox*>(QString::fromStdString(name + " scale"));
+    ASSERT_NE(scale, nullptr);
+    const auto with = Settings(inspector);
+    EXPECT_EQ(with.at(option), image + ";");
+    toggle->click();
+    EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ option });
+    EXPECT_FALSE(inspector.ShownScene().Relief());
+    toggle->click();
+    EXPECT_EQ(Settings(inspector), with);
+    Type(scale, "0.5");
+    const auto scaled = Settings(inspector);
+    EXPECT_EQ(Changed(with, scaled), std::set<std::string>{ option });
+    EXPECT_EQ(scaled.at(option), image + ":0.5;");
+  }
 }

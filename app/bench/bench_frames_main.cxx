@@ -76,6 +76,7 @@ struct Variant
   Representation Drawn = Representation::Surface;
   bool Reflecting = false; // ours with an environment (a 1024 checker): the same
   bool Mapping = false;    // ours with a normal map (a 1024 checker): the same
+  bool Bumping = false;    // ours with a bump map (the grey checker as heights): the same
 };
 
 // VTK's own lighting for rule: its per-fragment Phong-model code, its
@@ -246,7 +247,7 @@ int main(int argc, char** argv)
   }
 
   const std::shared_ptr<const TextureImage> environment = Checker(1024);
-  // The normal map's variants: texture coordinates where the mesh has none,
+  // The normal and bump maps' variants: texture coordinates where the mesh has none,
   // and the tangents of its frame.
   auto mapped = vtkSmartPointer<vtkPolyData>::New();
   mapped->ShallowCopy(mesh);
@@ -288,7 +289,13 @@ int main(int argc, char** argv)
     { "gouraud-normal-map", Shading::Gouraud, false, false, false, false, false,
       Representation::Surface, false, true },
     { "phong-normal-map", Shading::Phong, false, false, false, false, false,
-      Representation::Surface, false, true } };
+      Representation::Surface, false, true },
+    { "flat-bump-map", Shading::Flat, false, false, false, false, false, Representation::Surface,
+      false, false, true },
+    { "gouraud-bump-map", Shading::Gouraud, false, false, false, false, false,
+      Representation::Surface, false, false, true },
+    { "phong-bump-map", Shading::Phong, false, false, false, false, false,
+      Representation::Surface, false, false, true } };
 
   std::printf(
     "| variant | first frame ms | median ms/frame | min | max |\n|---|---:|---:|---:|---:|\n");
@@ -317,6 +324,11 @@ int main(int argc, char** argv)
     {
       scene.NormalMap = ScaledImage{ "checker", 1 }; // decoded already: environment's image
     }
+    if (v.Bumping)
+    {
+      scene.BumpMap = ScaledImage{ "checker", 1 }; // the same
+    }
+    const bool relief = v.Mapping || v.Bumping;
     HeadlessRenderer renderer;
     if (const std::string error = renderer.Start(o.Size.Width, o.Size.Height); !error.empty())
     {
@@ -324,9 +336,9 @@ int main(int argc, char** argv)
     }
     // One actor but with --parts, where only ours run.
     const DrawnParts built =
-      BuildScene(scene, v.Mapping ? mapped : mesh, renderer.GetRenderer(), nullptr,
+      BuildScene(scene, relief ? mapped : mesh, renderer.GetRenderer(), nullptr,
         SceneImages{
-          checker, {}, v.Reflecting ? environment : nullptr, v.Mapping ? environment : nullptr })
+          checker, {}, v.Reflecting ? environment : nullptr, relief ? environment : nullptr })
         .Drawn.front();
     if (v.VtkOwn)
     {

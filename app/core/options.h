@@ -219,7 +219,11 @@ struct SceneOptions
   std::optional<double> ParallelScale;
   Rgb Background{ 0, 0, 0 };
   bool TransparentBackground = false; // --background transparent: alpha 0 where no surface is
-  bool Edges = false;                 // the triangles' edges over the shading
+  // --background environment: --environment behind the mesh, along each
+  // pixel's ray (shadelabEnvironmentBackground.h); drawn as transparent,
+  // then laid over it.
+  bool EnvironmentBackground = false;
+  bool Edges = false; // the triangles' edges over the shading
   Rgb EdgeColor{ 0.05, 0.05, 0.05 };
   double EdgeWidth = 1;      // pixels
   bool NormalGlyphs = false; // a line along each vertex normal
@@ -246,10 +250,12 @@ struct SceneOptions
     return this->MaterialGiven || this->Kd.has_value() || !this->Texture.empty();
   }
 
-  /** The background's colour, or none where it is transparent. */
+  /** The background's colour, or none where it is transparent or the environment. */
   std::optional<Rgb> OpaqueBackground() const
   {
-    return this->TransparentBackground ? std::nullopt : std::optional<Rgb>(this->Background);
+    return this->TransparentBackground || this->EnvironmentBackground
+      ? std::nullopt
+      : std::optional<Rgb>(this->Background);
   }
 
   /** The map of the normal given: --normal-map's, else --bump-map's (a height map), else none. */

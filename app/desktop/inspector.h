@@ -38,6 +38,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
+#include <vtkTexture.h>
 
 #include <deque>
 #include <functional>
@@ -219,6 +220,13 @@ private:
     SceneCache Scenes;
     std::map<vtkPolyData*, vtkSmartPointer<vtkActor>> Glyphs, Edges;
     std::unique_ptr<Tracing> Traced; // a raytrace panel's
+    // --background environment: the environment behind the panel, and
+    // its picture (OverEnvironment of nothing) for the camera and size it
+    // was last painted for.
+    std::optional<EnvironmentMap> Behind;
+    vtkSmartPointer<vtkTexture> BehindPicture;
+    vtkMTimeType BehindCamera = 0;
+    std::array<int, 2> BehindSize{};
   };
 
   // inspector.cxx: start-up, the camera and the lights that follow it, the
@@ -235,6 +243,9 @@ private:
   void Apply();
   void MakeSlots(std::size_t count, int columns, bool difference);
   void ShowExtras(Slot& slot, const SceneOptions& scene, vtkPolyData* shown);
+  // Before a panel's renderer draws: its environment behind it, painted
+  // again where the camera or the panel's size changed.
+  void PaintBehind(vtkObject* renderer, unsigned long, void*);
   // At each frame's end (a program is built at its first draw, which Qt's
   // first paint may make): stages of one's own that the driver refused
   // (the generated ones drew instead), their errors on stderr when they

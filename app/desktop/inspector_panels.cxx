@@ -6,11 +6,14 @@
 #include "scene/overlays.h"
 #include "scene/own_stage_files.h"
 #include "scene/scene.h"
+#include "shadelabEnvironmentBackground.h"
 
 #include "vtkShadelabPeelingPass.h"
 
 #include <vtkRenderStepsPass.h>
 #include <vtkTextProperty.h>
+
+#include <algorithm>
 
 namespace shadelab
 {
@@ -63,6 +66,10 @@ void Inspector::Apply()
       continue;
     }
     this->ShowExtras(slot, scene, shown.Mesh->Mesh);
+    slot.Behind =
+      scene.EnvironmentBackground ? SceneEnvironment(scene, shown.Scene->Images) : std::nullopt;
+    slot.BehindCamera = 0; // painted again at the next draw
+    slot.Renderer->SetTexturedBackground(slot.Behind.has_value());
     if (i == 0)
     {
       // The first material's program: the others differ at most in their specular code.
@@ -105,6 +112,36 @@ void Inspector::ReportStageErrors()
       problems.front().first + ": " + problems.front().second + " (the generated stages draw)";
     this->UpdateHud();
   }
+}
+
+void Inspector::PaintBehind(vtkObject* renderer, unsigned long, void*)
+{
+  const auto slot = std::find_if(this->Slots.begin(), this->Slots.end(),
+    [renderer](const Slot& s) { return s.Renderer.GetPointer() == renderer; });
+  if (slot == this->Slots.end() || !slot->Behind)
+  {
+    return;
+  }
+  const int* size = slot->Renderer->GetSize();
+  const std::array<int, 2> now{ std::max(size[0], 1), std::max(size[1], 1) };
+  vtkCamera* camera = slot->Renderer->GetActiveCamera();
+  if (camera->GetMTime() == slot->BehindCamera && now == slot->BehindSize)
+  {
+    return;
+  }
+  // Pixel for pixel, as headless lays a picture over it (nearest texels).
+  FloatImage behind{ now[0], now[1],
+    std::vector<float>(static_cast<std::size_t>(now[0]) * now[1] * 4, 0.0f) };
+  OverEnvironment(behind.Rgba, now[0], now[1], PinholeCameraOf(camera), *slot->Behind);
+  if (!slot->BehindPicture)
+  {
+    slot->BehindPicture = vtkSmartPointer<vtkTexture>::New();
+    slot->BehindPicture->InterpolateOff();
+  }
+  slot->BehindPicture->SetInputData(ToVtkImage(behind));
+  slot->Renderer->SetBackgroundTexture(slot->BehindPicture);
+  slot->BehindCamera = camera->GetMTime();
+  slot->BehindSize = now;
 }
 
 // The glyphs and edges that are on, over the panel's mesh `shown`.
@@ -175,6 +212,7 @@ void Inspector::MakeSlots(std::size_t count, int columns, bool difference)
     place(slot.Renderer, static_cast<int>(i));
     slot.Renderer->SetActiveCamera(this->Camera);
     slot.Renderer->SetBackground(this->Options.Scene.Background.data());
+    slot.Renderer->AddObserver(vtkCommand::StartEvent, this, &Inspector::PaintBehind);
     slot.Label = vtkSmartPointer<vtkTextActor>::New();
     slot.Label->GetTextProperty()->SetFontSize(16);
     slot.Label->GetTextProperty()->SetVerticalJustificationToTop();

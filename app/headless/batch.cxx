@@ -236,8 +236,9 @@ private:
     renderer.SetMaximumNumberOfPeels(options.Peels);
     // An 8-bit file's picture is rendered in 8 bits, the same bytes for less;
     // a ray-traced one is quantised by the writer, as a float one is.
+    // So is one laid over the environment, in float.
     const bool eightBit = ResolvePixelType(shot.Output, shot.Scene.Pixels) == PixelType::UInt8 &&
-      options.ShadingRule != Shading::Raytrace;
+      options.ShadingRule != Shading::Raytrace && !options.EnvironmentBackground;
     FloatImage image;
     Image8 image8;
     std::string error;

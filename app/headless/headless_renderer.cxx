@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "headless/vtkShadelabCapturePass.h"
 #include "headless/vtkShadelabOSMesaRenderWindow.h"
+#include "shadelabEnvironmentBackground.h"
 #include "vtkShadelabOutputWindow.h"
 #include "vtkShadelabPeelingPass.h"
 
@@ -60,11 +61,16 @@ void HeadlessRenderer::RenderFrame(bool eightBit)
   ReportWarnings("render", messages.Warnings());
 }
 
-FloatImage HeadlessRenderer::Render()
+FloatImage HeadlessRenderer::Render(const EnvironmentMap* behind)
 {
   this->RenderFrame(false);
   FloatImage samples{ this->Capture->GetWidth(), this->Capture->GetHeight(),
     this->Capture->TakePixels() };
+  if (behind && this->Error.empty())
+  {
+    OverEnvironment(samples.Rgba, samples.Width, samples.Height,
+      PinholeCameraOf(this->Renderer->GetActiveCamera()), *behind);
+  }
   return this->Samples > 1 ? BoxAverage(samples, this->Samples) : samples;
 }
 

@@ -16,6 +16,8 @@ class vtkShadelabPeelingPass;
 
 namespace shadelab
 {
+struct EnvironmentMap;
+
 class HeadlessRenderer
 {
 public:
@@ -32,11 +34,13 @@ public:
   vtkRenderer* GetRenderer() const { return this->Renderer; }
 
   /**
-   * Renders one frame and returns it. VTK's first error during the frame (a
-   * shader that does not compile, say) is then GetError(), else "";
-   * its warnings are reported.
+   * Renders one frame and returns it; with `behind`, each sample laid over
+   * the environment along its own ray before the samples are averaged
+   * (OverEnvironment: --background environment). VTK's first error during
+   * the frame (a shader that does not compile, say) is then GetError(),
+   * else ""; its warnings are reported.
    */
-  FloatImage Render();
+  FloatImage Render(const EnvironmentMap* behind = nullptr);
   const std::string& GetError() const { return this->Error; }
 
   /**

@@ -2,6 +2,7 @@
 
 #include "headless/headless_renderer.h"
 #include "raytrace/ray_tracer.h"
+#include "scene/scene_parts.h"
 
 #include <vtkRenderer.h>
 
@@ -55,7 +56,9 @@ std::string SceneFrame(const SceneOptions& options, const BuiltScene& scene,
 {
   if (options.ShadingRule != Shading::Raytrace)
   {
-    frame = renderer.Render();
+    const std::optional<EnvironmentMap> behind =
+      options.EnvironmentBackground ? SceneEnvironment(options, scene.Images) : std::nullopt;
+    frame = renderer.Render(behind ? &*behind : nullptr);
     return renderer.GetError();
   }
   const RayTracer tracer(

@@ -224,8 +224,9 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
   j["camera"] = cam;
   j["size"] = { o.Size.Width, o.Size.Height };
   j["ssaa"] = o.Supersampling;
-  j["background"] =
-    o.TransparentBackground ? nlohmann::json("transparent") : nlohmann::json(o.Background);
+  j["background"] = o.TransparentBackground ? nlohmann::json("transparent")
+    : o.EnvironmentBackground               ? nlohmann::json("environment")
+                                            : nlohmann::json(o.Background);
   if (o.Fogging.Mode != FogMode::None)
   {
     j["fog"] = settings::FogSpec{}.Text(o.Fogging); // as --fog and the scene key write it

@@ -45,6 +45,11 @@ PixelProber::PixelProber(const SceneOptions& options, vtkPolyData* mesh, vtkCame
   this->Fogging = options.Fogging;
   this->Translucent = AnyTranslucent(this->Surface.GetParts()) || options.FogsTowardsTransparent();
   this->Background = options.OpaqueBackground();
+  if (options.EnvironmentBackground)
+  {
+    this->Behind = SceneEnvironment(options, images);
+    this->Camera = PinholeCameraOf(camera);
+  }
   s.Peels = options.Peels;
   if (options.Drawn != Representation::Surface)
   {
@@ -90,6 +95,12 @@ PixelProbe PixelProber::Probe(Pixel at) const
 {
   PixelProbe p = this->Scene;
   p.At = at;
+  if (this->Behind)
+  {
+    p.Behind = EnvironmentBehind(
+      *this->Behind, this->Camera, p.Size.Width, p.Size.Height, at.X + 0.5, at.Y + 0.5);
+    p.Background = p.Behind->Texel;
+  }
   TriangleCorners corners;
   if (!this->Locate(at, p, corners))
   {
@@ -149,7 +160,9 @@ void PixelProber::Composite(PixelProbe& p) const
 {
   std::vector<Layer> translucent;
   // Transparent: black with no coverage.
-  Covered behind = this->Background ? Covered{ *this->Background, 1 } : Covered{ { 0, 0, 0 }, 0 };
+  Covered behind = this->Background ? Covered{ *this->Background, 1 }
+    : p.Behind                      ? Covered{ p.Behind->Texel, 1 }
+                                    : Covered{ { 0, 0, 0 }, 0 };
   for (const PictureTriangles::Hit& hit : this->Triangles.Through(p.At.X + 0.5, p.At.Y + 0.5))
   {
     PixelProbe layer = this->Scene;

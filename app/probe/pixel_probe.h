@@ -10,6 +10,7 @@
 #include "raytrace/ray_tracer.h"
 #include "scene/scene_parts.h"
 #include "scene/scene_surface.h"
+#include "shadelabEnvironmentBackground.h"
 #include "shadelabPictureElements.h"
 #include "shadelabPixelRays.h"
 #include "shadelabTranslucency.h"
@@ -54,7 +55,9 @@ struct PixelProbe
     int MapDisagrees = 0;
   };
   std::vector<ShadowCheck> Shadows;
-  Rgb Background{};
+  Rgb Background{}; // with the environment behind: E along the pixel's ray
+  // --background environment: what the environment shows behind the pixel.
+  std::optional<EnvironmentTerm> Behind;
   bool Orthographic = false;
   Representation Drawn = Representation::Surface;
   bool HasNormals = false; // the mesh has vertex normals (Fragment.Normals)
@@ -166,7 +169,10 @@ private:
   IlluminationInputs In;
   Fog Fogging;
   bool Translucent = false;      // a part drawn has a < 1, or fog takes coverage away
-  std::optional<Rgb> Background; // none where it is transparent
+  std::optional<Rgb> Background; // none where it is transparent or the environment
+  // --background environment: the environment, and the camera whose rays see it.
+  std::optional<EnvironmentMap> Behind;
+  PinholeCamera Camera;
   PictureTriangles Triangles;
   std::unique_ptr<PictureElements> Elements; // drawn as edges or points
   int ElementPixels = 1;                     // the lines' width or the points' size

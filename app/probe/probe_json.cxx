@@ -149,6 +149,12 @@ ordered_json ProbeJson(const PixelProbe& p)
   if (!p.Hit)
   {
     j["background"] = p.Background;
+    if (p.Behind)
+    {
+      j["background_environment"] = { { "direction", p.Behind->R },
+        { "environment_direction", p.Behind->Direction }, { "texcoord", p.Behind->TexCoord },
+        { "texel", p.Behind->Texel } };
+    }
     return j;
   }
   j["oracle"] = OracleOf(p);

@@ -299,6 +299,18 @@ std::string ProbeText(const PixelProbe& p)
         (p.Drawn != Representation::Surface ? ": no edge or point drawn there, "
                                             : ": no triangle under its centre, the nearest edge ") +
         ProbeNumber(p.EdgeDistance) + " px away");
+    if (p.Behind)
+    {
+      out.Add("", "background: the environment", "along the ray through the pixel's centre");
+      out.Add("  ", "d = " + ProbeTriple(p.Behind->R), "the ray's direction, unit");
+      out.Add(
+        "  ", "(x, y, z) = " + ProbeTriple(p.Behind->Direction), "d in the environment's frame");
+      out.Add("  ",
+        "(s, t) = (" + ProbeNumber(p.Behind->TexCoord[0]) + ", " +
+          ProbeNumber(p.Behind->TexCoord[1]) + ")",
+        "(0.5 + atan2(x, -z)/2pi, 0.5 + asin(y)/pi)");
+      out.Add("  ", "E(d) = " + ProbeTriple(p.Behind->Texel), "the environment's texel there");
+    }
     out.Add("", "background = " + ProbeTriple(p.Background));
     out.Add("", rendered, p.RenderedFrom);
     out.Add("", stored, "round(255*clamp(rendered, 0, 1)), as 8-bit files store it");

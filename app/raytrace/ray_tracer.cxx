@@ -2,13 +2,12 @@
 
 #include "scene/scene.h"
 #include "shadelabMeshTriangles.h"
+#include "shadelabParallelRows.h"
 #include "shadelabVec3.h"
 
 #include <vtkCamera.h>
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace shadelab
 {
@@ -215,10 +214,8 @@ FloatImage RayTracer::Blank(int samples) const
 
 void RayTracer::TraceRows(FloatImage& image, int first, int last) const
 {
-  std::atomic<int> next{ first };
-  const auto rows = [&]
-  {
-    for (int y; (y = next++) < last;)
+  ForEachRow(first, last,
+    [&](int y)
     {
       // Bottom row first, as OpenGL reads them; picture y from the top.
       float* out =
@@ -229,17 +226,6 @@ void RayTracer::TraceRows(FloatImage& image, int first, int last) const
         std::copy(c.Color.begin(), c.Color.end(), out);
         out[3] = static_cast<float>(c.Alpha);
       }
-    }
-  };
-  std::vector<std::thread> threads(std::max(1u, std::thread::hardware_concurrency()) - 1);
-  for (std::thread& thread : threads)
-  {
-    thread = std::thread(rows);
-  }
-  rows();
-  for (std::thread& thread : threads)
-  {
-    thread.join();
-  }
+    });
 }
 }

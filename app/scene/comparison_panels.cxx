@@ -141,7 +141,9 @@ void ShowTerms(
   s.Ks = specular ? s.Ks : Zero;
   if (!environment)
   {
+    // The environment goes, and the background that shows it with it: black.
     s.Environment.clear();
+    s.EnvironmentBackground = false;
   }
   if (!normalMap)
   {

@@ -86,6 +86,12 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       return shown;
     }
   }
+  if (options.EnvironmentBackground && options.Environment.empty())
+  {
+    shown.Input = "--background";
+    shown.Error = "environment needs --environment, the image it shows";
+    return shown;
+  }
   if (!options.Environment.empty())
   {
     images.Environment = decoded(options.Environment, {});

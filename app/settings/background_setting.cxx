@@ -1,5 +1,6 @@
-// --background: a colour, or transparent (alpha 0 around the mesh, whose
-// colours stay those it has over black: OpenImageIO's associated alpha).
+// --background: a colour, transparent (alpha 0 around the mesh, whose
+// colours stay those it has over black: OpenImageIO's associated alpha), or
+// the environment (--environment seen along each pixel's ray).
 #include "settings/setting_kinds.h"
 #include "settings/special_settings.h"
 
@@ -13,10 +14,12 @@ Setting BackgroundSetting()
   Setting s;
   s.Option = "--background";
   s.Key = "background";
-  s.ValueName = "R,G,B|transparent";
+  s.ValueName = "R,G,B|transparent|environment";
   s.Default = colour.Text(SceneOptions{}.Background);
   s.Help =
-    "Background colour, or transparent (alpha in PNG, TIFF and EXR) (default " + s.Default + ")";
+    "Background colour, or transparent (alpha in PNG, TIFF and EXR), or environment (--environment "
+    "seen along each pixel's ray, what covers the pixel laid over it) (default " +
+    s.Default + ")";
   s.Commands = PictureCommands;
   s.Declare = [names = s](CLI::App& c, SceneOptions& o)
   {
@@ -26,9 +29,11 @@ Setting BackgroundSetting()
         [&o](const std::string& text)
         {
           o.TransparentBackground = text == "transparent";
+          o.EnvironmentBackground = text == "environment";
           try
           {
-            o.Background = o.TransparentBackground ? Rgb{ 0, 0, 0 } : ParseRgb(text);
+            o.Background =
+              o.TransparentBackground || o.EnvironmentBackground ? Rgb{ 0, 0, 0 } : ParseRgb(text);
           }
           catch (const std::invalid_argument& e)
           {
@@ -42,6 +47,7 @@ Setting BackgroundSetting()
   const auto given = [colour](const SceneOptions& o)
   {
     return o.TransparentBackground                ? std::string("transparent")
+      : o.EnvironmentBackground                   ? std::string("environment")
       : o.Background != SceneOptions{}.Background ? colour.Text(o.Background)
                                                   : std::string();
   };
@@ -56,22 +62,25 @@ Setting BackgroundSetting()
   s.Read = [colour](
              const json& v, const std::string& path, const std::filesystem::path&, SceneOptions& o)
   {
-    const bool transparent = v.is_string() && v.get<std::string>() == "transparent";
+    const bool named = v.is_string() &&
+      (v.get<std::string>() == "transparent" || v.get<std::string>() == "environment");
     scene_file::Apply(
-      o, { "--background=" + (transparent ? "transparent" : colour.FromJson(v, path)) }, path);
+      o, { "--background=" + (named ? v.get<std::string>() : colour.FromJson(v, path)) }, path);
   };
   s.Write = [colour, given](const SceneOptions& o, ordered_json& shot)
   {
     if (!given(o).empty())
     {
-      shot["background"] =
-        o.TransparentBackground ? ordered_json("transparent") : colour.ToJson(o.Background);
+      shot["background"] = o.TransparentBackground || o.EnvironmentBackground
+        ? ordered_json(given(o))
+        : colour.ToJson(o.Background);
     }
   };
   s.Schema = [help = s.Help]()
   {
     return ordered_json{ { "oneOf",
-                           { { { "$ref", "#/$defs/color" } }, { { "const", "transparent" } } } },
+                           { { { "$ref", "#/$defs/color" } }, { { "const", "transparent" } },
+                             { { "const", "environment" } } } },
       { "description", help } };
   };
   s.Sample = [](SceneOptions& o) { o.TransparentBackground = true; };

@@ -1,10 +1,10 @@
 #include "shadelabExactImage.h"
 
+#include "shadelabParallelRows.h"
 #include "shadelabVec3.h"
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 namespace shadelab
 {
@@ -19,9 +19,8 @@ ExactImage RenderExactImage(const AnalyticSurface& surface, const PinholeCamera&
   image.Height = height;
   image.Rgb.assign(3 * static_cast<std::size_t>(width) * height, 0.0);
   image.Covered.assign(static_cast<std::size_t>(width) * height, 0);
-  auto renderRows = [&](int first, int step)
-  {
-    for (int j = first; j < height; j += step)
+  ForEachRow(0, height,
+    [&](int j)
     {
       for (int i = 0; i < width; ++i)
       {
@@ -37,20 +36,7 @@ ExactImage RenderExactImage(const AnalyticSurface& surface, const PinholeCamera&
         const Rgb color = Illuminate(in, hit.Point, hit.Normal);
         std::copy(color.begin(), color.end(), image.Rgb.begin() + 3 * p);
       }
-    }
-  };
-  // Rows interleaved over the cores: the torus's rays cost unevenly.
-  const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t)
-  {
-    workers.emplace_back(renderRows, t, threads);
-  }
-  renderRows(0, threads);
-  for (std::thread& worker : workers)
-  {
-    worker.join();
-  }
+    });
   return image;
 }
 }

@@ -44,8 +44,14 @@ struct EnvironmentTerm
 std::array<double, 2> EnvironmentTexCoord(const Vec3& d);
 
 /**
+ * What the environment shows along unit direction d (in the computation's
+ * frame): R = d, its direction, (s, t) and texel; Term zero.
+ */
+EnvironmentTerm EnvironmentAlong(const EnvironmentMap& e, const Vec3& d);
+
+/**
  * The environment's term for unit normal N and unit V towards the viewer,
- * with specular coefficient ks.
+ * with specular coefficient ks: EnvironmentAlong(R), its Term ks E(R).
  */
 EnvironmentTerm EnvironmentAt(const EnvironmentMap& e, const Vec3& N, const Vec3& V, const Rgb& ks);
 }

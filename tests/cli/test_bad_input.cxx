@@ -601,6 +601,12 @@ const BadCase Cases[] = {
         { "--shading", "raytrace", "--normal-map", (d / "n.png").string() });
     },
     1, { "n.png", "not a normal map's" } },
+  // --background environment names no image of its own: it needs --environment.
+  { "EnvironmentBackgroundWithoutAnEnvironment",
+    [](const TempDir& d) {
+      return WithMesh(d, "t.obj", Tetrahedron, { "--background", "environment" });
+    },
+    1, { "--background", "needs --environment" } },
   // --bump-map: a mesh without texture coordinates, an image that is not
   // grey (a normal map's), both maps at once; under the ray tracer.
   { "BumpMapWithoutTextureCoordinates",

@@ -242,3 +242,49 @@ TEST(Probe, CtrlClickExplainsThePixelAsTheCommandLineDoesWithArrowsAlongNLH)
   EXPECT_TRUE(inspector.GetProbeArrows().empty());
   EXPECT_NE(readout->toPlainText().indexOf("no triangle under its centre"), -1);
 }
+
+// The environment behind the mesh (--background environment): a pixel off
+// the mesh shows in the window what headless draws and explains there, the
+// environment along the pixel's ray; the window's 8-bit pixel within its
+// rounding of the float render. Turning the camera paints it again: the
+// same pixel then looks another way.
+TEST(Probe, TheEnvironmentBehindShowsInTheWindowAsHeadless)
+{
+  TempDir dir;
+  std::vector<unsigned char> sky;
+  for (int i = 0; i < 16 * 8; ++i)
+  {
+    sky.insert(sky.end(),
+      { static_cast<unsigned char>(20 + 13 * (i % 16)),
+        static_cast<unsigned char>(40 + 25 * (i / 16)), 90 });
+  }
+  WriteImage8(dir / "sky.png", 16, 8, sky);
+  ViewOptions options = SpotView(Shading::Phong);
+  options.Scene.Environment = (dir / "sky.png").string();
+  options.Scene.EnvironmentBackground = true;
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+  vtkRenderWindowInteractor* mouse = inspector.GetWindow()->GetInteractor();
+  const Pixel corner{ 3, 4 };
+  inspector.Probe(corner);
+  ASSERT_TRUE(inspector.GetProbe());
+  json window_probe = ProbeJson(*inspector.GetProbe());
+  const json headless = Headless(inspector, corner);
+  ASSERT_FALSE(window_probe["hit"].get<bool>());
+  ASSERT_TRUE(headless.contains("background_environment"));
+  ExpectNear(window_probe["background"], headless["background"], Near, "background");
+  ExpectNear(window_probe["background"], headless["rendered"], Near, "headless rendered");
+  ExpectNear(window_probe["rendered"], headless["rendered"], 0.5 / 255 + 1e-6, "rendered");
+  // A turned camera: the pixel shows another texel, and the window still
+  // agrees with headless.
+  Click(mouse, 120, 95, false, 40);
+  Click(mouse, corner.X, corner.Y, true);
+  ASSERT_TRUE(inspector.GetProbe());
+  window_probe = ProbeJson(*inspector.GetProbe());
+  const json turned = Headless(inspector, corner);
+  EXPECT_NE(turned["background"], headless["background"]);
+  ExpectNear(window_probe["rendered"], turned["rendered"], 0.5 / 255 + 1e-6, "turned");
+}

@@ -31,6 +31,9 @@ struct Mark
   QColor Colour; // light backgrounds, far enough apart to tell and light enough to read on
   const char* Formula;
   bool Effect; // compiled in only where a scene uses it: its button shows only then
+  // An effect a scene has instead of the one before (a bump map, or a
+  // normal map): its button takes that one's place where its lines are.
+  bool Instead = false;
 };
 
 const std::array<Mark, ShaderPanel::MarkCount>& Marks()
@@ -45,7 +48,7 @@ const std::array<Mark, ShaderPanel::MarkCount>& Marks()
     { "shadow", QColor(0xd2, 0xe6, 0xe6), "d <= map + bias", true },
     { "environment", QColor(0xe6, 0xf0, 0xc8), "ks*E(R)", true },
     { "normal map", QColor(0xf0, 0xe0, 0xd0), "N'=T x+B y+N z", true },
-    { "bump map", QColor(0xe6, 0xd8, 0xf0), "N'=N-k(T dh_s+B dh_t)", true },
+    { "bump map", QColor(0xe6, 0xd8, 0xf0), "N'=N-k(T hs+B ht)", true, true },
   } };
   return marks;
 }
@@ -172,8 +175,19 @@ ShaderPanel::ShaderPanel(QWidget* parent)
     group->addButton(button);
     if (i != AllMarks && Marks()[i - 1].Effect)
     {
-      effects->addWidget(button, effect / EffectColumns, effect % EffectColumns);
-      ++effect;
+      // One in its place: the cell of the effect before, shown instead
+      // (Show), as wide as it, so that the panel keeps its size.
+      const bool instead = Marks()[i - 1].Instead;
+      const int cell = instead ? effect - 1 : effect++;
+      effects->addWidget(button, cell / EffectColumns, cell % EffectColumns);
+      button->setVisible(!instead);
+      if (instead)
+      {
+        const int wide =
+          std::max(button->sizeHint().width(), this->Buttons[i - 1]->sizeHint().width());
+        button->setMinimumWidth(wide);
+        this->Buttons[i - 1]->setMinimumWidth(wide);
+      }
     }
     else
     {
@@ -276,6 +290,11 @@ void ShaderPanel::Show(const ShaderSources& sources)
       const bool used = sources.Vertex.find(marker) != std::string::npos ||
         sources.Fragment.find(marker) != std::string::npos;
       this->Buttons[i + 1]->setEnabled(used);
+      if (Marks()[i].Instead)
+      {
+        this->Buttons[i + 1]->setVisible(used);
+        this->Buttons[i]->setVisible(!used);
+      }
       if (!used && this->Shown == i + 1)
       {
         this->HighlightMark(AllMarks);

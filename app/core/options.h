@@ -136,6 +136,9 @@ struct ScaledImage
   }
 };
 
+/** --normal-map none: no part has a normal map, not even the mesh file's own. */
+constexpr const char* NoNormalMap = "none";
+
 /** How vertex normals are computed (vtkShadelabMeshNormals's settings). */
 struct NormalsSettings
 {
@@ -174,6 +177,7 @@ struct SceneOptions
   // --normal-map: a tangent-space normal map (shadelabNormalMap.h) over
   // the whole mesh at its texture coordinates, its x and y times Scale,
   // looked up with TextureWrapping and TextureFiltering.
+  // NoNormalMap as its image: no normal map at all, not the files' either.
   std::optional<ScaledImage> NormalMap;
   // --bump-map: a height map (shadelabNormalMap.h, Height), its Scale the
   // height of white in texels' widths, which perturbs the normal in
@@ -258,12 +262,20 @@ struct SceneOptions
       : std::optional<Rgb>(this->Background);
   }
 
-  /** The map of the normal given: --normal-map's, else --bump-map's (a height map), else none. */
+  /** --normal-map none: the parts draw no normal map, the file's included. */
+  bool NoNormalMaps() const { return this->NormalMap && this->NormalMap->Image == NoNormalMap; }
+  /**
+   * The map of the normal given: --normal-map's (but none), else
+   * --bump-map's (a height map), else none.
+   */
   const std::optional<ScaledImage>& Relief() const
   {
-    return this->NormalMap ? this->NormalMap : this->BumpMap;
+    return this->NormalMap && !this->NoNormalMaps() ? this->NormalMap : this->BumpMap;
   }
-  std::optional<ScaledImage>& Relief() { return this->NormalMap ? this->NormalMap : this->BumpMap; }
+  std::optional<ScaledImage>& Relief()
+  {
+    return this->NormalMap && !this->NoNormalMaps() ? this->NormalMap : this->BumpMap;
+  }
 
   /** Fog with no colour over a transparent background: it takes coverage away (FogAt). */
   bool FogsTowardsTransparent() const

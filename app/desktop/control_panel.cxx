@@ -290,6 +290,11 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
           });
       });
   }
+  else if (inspector.HasFileNormalMaps() && !inspector.GetState().Scene.NoNormalMaps())
+  {
+    // The file's maps on or off (each part's scale is its own).
+    terms->addRow(this->Toggle("normal map  N'", &ViewState::Relief));
+  }
 
   QFormLayout* normals = group("Normals");
   if (inspector.HasFileNormals())

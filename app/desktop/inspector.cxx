@@ -125,6 +125,7 @@ int Inspector::Load()
   this->Points = loaded.Mesh->GetPoints();
   this->Triangles = loaded.Mesh->GetNumberOfPolys();
   this->FileNormals = loaded.NormalsFromFile;
+  this->FileNormalMaps = FileMapsNormals(loaded.Mesh);
   this->State.Lights = scene.Lights.empty() ? LightMode::PointAtCamera : LightMode::Given;
   if (auto [input, error] = ReadOwnStages(scene, this->State.Stages); !error.empty())
   {

@@ -120,6 +120,8 @@ public:
   const ShaderSources& GetShownShaders() const { return this->ShownShaders; }
   /** The mesh has normals of its own: the first of the normals' choices. */
   bool HasFileNormals() const { return this->FileNormals; }
+  /** The mesh file gives a part a normal map of its own. */
+  bool HasFileNormalMaps() const { return this->FileNormalMaps; }
   /** A light of `kind` where the camera is, shining along the view. */
   Light LightAtCamera(LightKind kind) const;
   /** The handle that drags the light list's light `index` in the 3D view
@@ -298,8 +300,9 @@ private:
   std::string CommandLine;
   ViewState State;
   bool Dragging = false;
-  bool FileNormals = false; // the mesh has normals of its own: the first of `w`'s cycle
-  std::string Problem;      // the last thing that went wrong, shown in the HUD
+  bool FileNormals = false;    // the mesh has normals of its own: the first of `w`'s cycle
+  bool FileNormalMaps = false; // a part of the mesh has its own normal map
+  std::string Problem;         // the last thing that went wrong, shown in the HUD
   std::vector<InputProblem> StageProblems; // the refused stages' errors, as reported last
   OwnStages Saved;                         // what the stage files State names hold (SaveStages)
   MeshCache Meshes{ DecodingThrough(this->Writer) }; // Writer: declared below, started when used

@@ -147,6 +147,10 @@ std::vector<std::pair<std::string, std::string>> DescribePicture(const std::stri
       { "up", ToString(o.EnvironmentUp.value_or(o.Up)) },
       { "filter", ToString(o.TextureFiltering) } };
   }
+  if (o.NoNormalMaps())
+  {
+    j["normal_map"] = NoNormalMap;
+  }
   if (const auto& relief = o.Relief())
   {
     j[o.BumpMap ? "bump_map" : "normal_map"] = { { "image", relief->Image },

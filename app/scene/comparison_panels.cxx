@@ -147,7 +147,8 @@ void ShowTerms(
   }
   if (!normalMap)
   {
-    s.NormalMap.reset();
+    // The options' and the file's maps: none at all.
+    s.NormalMap = ScaledImage{ NoNormalMap, 1 };
     s.BumpMap.reset();
   }
 }

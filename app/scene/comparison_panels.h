@@ -49,8 +49,9 @@ extern const char* const ModesHelp;
 
 /**
  * Leaves only the chosen terms of the illumination in scene, by zeroing the
- * others' coefficients (and the environment by dropping it), and the normal
- * map only where chosen: the shaders then hold no code for them
+ * others' coefficients (and the environment, with the background that shows
+ * it, by dropping it), and the normal maps, the options' and the file's,
+ * only where chosen (else --normal-map none): the shaders then hold no code for them
  * (doc/design.md, generated for what the scene needs).
  */
 void ShowTerms(SceneOptions& scene, bool ambient, bool diffuse, bool specular,

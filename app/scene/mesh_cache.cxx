@@ -16,7 +16,7 @@ const LoadedMesh& MeshCache::Get(const SceneOptions& o)
 {
   const bool lit = UsesVertexNormals(o.ShadingRule);
   const Key key{ o.Mesh, o.Normals, o.Computed.Weighting, o.Computed.FeatureAngle.value_or(-1),
-    o.Computed.Orient, lit, o.Relief().has_value() };
+    o.Computed.Orient, lit, o.Relief().has_value(), o.NoNormalMaps() };
   auto cached = this->Meshes.find(key);
   if (cached == this->Meshes.end())
   {

@@ -62,7 +62,7 @@ private:
   std::map<std::string, LoadedTexture> Textures;
   // What makes two meshes the same: the file and how its normals are got
   // (LoadMesh computes them only for the lit rules).
-  using Key = std::tuple<std::string, NormalsMode, std::string, double, bool, bool, bool>;
+  using Key = std::tuple<std::string, NormalsMode, std::string, double, bool, bool, bool, bool>;
   std::map<Key, LoadedMesh> Meshes;
 };
 }

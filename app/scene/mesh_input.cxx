@@ -57,8 +57,8 @@ std::string Undrawable(vtkPolyData* mesh)
   }
   return {};
 }
+}
 
-// Whether a part of mesh has a normal map of the file's own.
 bool FileMapsNormals(vtkPolyData* mesh)
 {
   vtkDataArray* maps = mesh->GetFieldData()->GetArray(PartNormalTextureArrayName);
@@ -70,7 +70,6 @@ bool FileMapsNormals(vtkPolyData* mesh)
     }
   }
   return false;
-}
 }
 
 ComputedNormals ComputeNormals(vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals)
@@ -194,7 +193,7 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   lap("normals");
   // A normal map's frame, where there are texture coordinates to make it
   // of (the scene says so where there are none).
-  if ((options.Relief() || FileMapsNormals(mesh)) &&
+  if ((options.Relief() || (!options.NoNormalMaps() && FileMapsNormals(mesh))) &&
     mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
   {
     auto withTangents = vtkSmartPointer<vtkPolyData>::New();

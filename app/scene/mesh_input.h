@@ -46,6 +46,9 @@ struct ComputedNormals
  * mesh with vertex normals computed by vtkShadelabMeshNormals as settings
  * say, and with face normals if `cellNormals`.
  */
+/** Whether a part of mesh has a normal map of the file's own (PartNormalTexture). */
+bool FileMapsNormals(vtkPolyData* mesh);
+
 ComputedNormals ComputeNormals(
   vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals = false);
 

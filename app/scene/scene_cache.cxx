@@ -56,7 +56,7 @@ SceneCache::Shown SceneCache::Show(const SceneOptions& options, vtkRenderer* ren
       return shown;
     }
   }
-  if (options.NormalMap && options.BumpMap)
+  if (options.NormalMap && !options.NoNormalMaps() && options.BumpMap)
   {
     shown.Input = "--bump-map";
     shown.Error = "takes the normal map's place, and --normal-map is given too: give one";

@@ -105,7 +105,7 @@ void SetNormalMap(const SceneOptions& options, const std::vector<Texture>& textu
       given->Scale, options.BumpMap.has_value() };
     return;
   }
-  const int n = fileTextures.Normal;
+  const int n = options.NoNormalMaps() ? -1 : fileTextures.Normal;
   if (n < 0 || n >= static_cast<int>(textures.size()))
   {
     return;

@@ -252,7 +252,10 @@ ScaledImage ScaledFile::FromJson(
   {
     throw scene_file::SceneError{ path, e.what() };
   }
-  image.Image = File{}.FromJson(image.Image, path, folder);
+  if (image.Image != NoNormalMap) // a keyword, not a file beside the scene
+  {
+    image.Image = File{}.FromJson(image.Image, path, folder);
+  }
   return image;
 }
 

@@ -91,7 +91,8 @@ std::vector<Setting> MakeSettings()
             "direction 2 RGB - 1 along the tangent, bitangent and normal, its x and y times "
             "SCALE, default 1, as glTF's normalTexture) at the mesh's texture coordinates: it "
             "takes the normal's place where the rule takes the normal (per fragment, per vertex, "
-            "at the provoking vertex); looked up with --texture-wrap and --texture-filter" },
+            "at the provoking vertex); looked up with --texture-wrap and --texture-filter; "
+            "none: no normal map at all, not even the mesh file's own" },
       ScaledFile{}, SHADELAB_FIELD(NormalMap)),
     Plain({ "--bump-map", "bump_map", "IMAGE[:SCALE]",
             "A height (bump) map, grey, its stored values as data, at the mesh's texture "

@@ -334,6 +334,30 @@ TEST(NormalMapFiles, AnObjsNormAndBumpAreTheOptionsMaps)
   }
 }
 
+// --normal-map none draws no normal map, not even the file's own: the
+// picture of the mesh without its norm statement.
+TEST(NormalMapFiles, NoneDrawsNotEvenTheFilesOwn)
+{
+  Scene s;
+  s.NormalMap = NormalMapKind::Pattern;
+  TempDir dir;
+  std::string error;
+  Render(s, dir, error); // writes normals.png
+  ASSERT_EQ(error, "");
+  std::vector<std::string> args =
+    Without(SceneArguments(s, dir), { "--normal-map", "--ka", "--kd", "--ks", "--ns" });
+  args[0] = GridObj(s, dir, "").string();
+  const Image plain = RenderArgs(args, dir, error);
+  args[0] = GridObj(s, dir, "norm normals.png").string();
+  const Image mapped = RenderArgs(args, dir, error);
+  args.insert(args.end(), { "--normal-map", "none" });
+  const Image none = RenderArgs(args, dir, error);
+  ASSERT_EQ(error, "");
+  EXPECT_GT(Largest(mapped, plain), 0.01);
+  EXPECT_EQ(Largest(none, plain), 0);
+  EXPECT_EQ(json::parse(none.Description).at("normal_map"), "none");
+}
+
 // A real file with normal maps (assimp-testmodels' glTF clear-coat test:
 // ribbed and wrinkled normalTextures on some of its parts): at every
 // third pixel, probe finds the map where a part has one, and the render
@@ -401,10 +425,12 @@ TEST(NormalMapBatch, EachShotMapsAsItsOwnRender)
   ExpectEachShotIsItsOwnRender(dir,
     R"({ "mesh": ")" + mesh + R"(", "normal_map": "normals.png:0.5", "size": [64, 64],
          "material": "chrome",
-         "shots": [ {}, { "normal_map": "normals.png" }, { "texture_filter": "nearest" } ] })",
+         "shots": [ {}, { "normal_map": "normals.png" }, { "texture_filter": "nearest" },
+                    { "normal_map": "none" } ] })",
     mesh,
     { { "--normal-map", normals + ":0.5" }, { "--normal-map", normals },
-      { "--normal-map", normals + ":0.5", "--texture-filter", "nearest" } });
+      { "--normal-map", normals + ":0.5", "--texture-filter", "nearest" },
+      { "--normal-map", "none" } });
   const json described = json::parse(ReadImage(dir / "shot0.exr").Description);
   EXPECT_EQ(described.at("normal_map").at("image"), (dir / "normals.png").string());
   EXPECT_EQ(described.at("normal_map").at("scale"), 0.5);

@@ -435,7 +435,13 @@ TEST(Controls, TheNormalMapsToggleAndScaleChangeOnlyIt)
     const auto with = Settings(inspector);
     EXPECT_EQ(with.at(option), image + ";");
     toggle->click();
-    EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ option });
+    // Off: --normal-map none (no map, nor the file's), in the bump map's place too.
+    const auto off = Settings(inspector);
+    const std::set<std::string> changed = bump
+      ? std::set<std::string>{ "--bump-map", "--normal-map" }
+      : std::set<std::string>{ "--normal-map" };
+    EXPECT_EQ(Changed(with, off), changed);
+    EXPECT_EQ(off.at("--normal-map"), "none;");
     EXPECT_FALSE(inspector.ShownScene().Relief());
     toggle->click();
     EXPECT_EQ(Settings(inspector), with);
@@ -444,4 +450,32 @@ TEST(Controls, TheNormalMapsToggleAndScaleChangeOnlyIt)
     EXPECT_EQ(Changed(with, scaled), std::set<std::string>{ option });
     EXPECT_EQ(scaled.at(option), image + ":0.5;");
   }
+}
+
+// A mesh file's own normal map has the toggle too (its parts' scales are
+// their own: no scale box); off, the view draws --normal-map none.
+TEST(Controls, TheFilesNormalMapHasItsToggle)
+{
+  TempDir dir;
+  WriteText(dir / "square.obj",
+    "mtllib square.mtl\nusemtl m\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\n"
+    "vt 1 1\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+  WriteText(dir / "square.mtl", "newmtl m\nKd 0.5 0.5 0.5\nnorm n.png\n");
+  WriteImage8(dir / "n.png", 2, 1, { 200, 110, 220, 128, 128, 255 });
+  ViewOptions options = SpotView(Shading::Phong);
+  options.Scene.Mesh = (dir / "square.obj").string();
+  Inspector inspector(options, "shadelab view");
+  ASSERT_EQ(inspector.Load(), 0);
+  const auto application = MakeApplication();
+  InspectorWindow window(inspector);
+  ASSERT_TRUE(window.Open(options.Scene.Size));
+  QCheckBox* toggle = ToggleNamed(window, "normal map");
+  ASSERT_NE(toggle, nullptr);
+  EXPECT_EQ(window.findChild<QDoubleSpinBox*>("normal map scale"), nullptr);
+  const auto with = Settings(inspector);
+  toggle->click();
+  EXPECT_EQ(Changed(with, Settings(inspector)), std::set<std::string>{ "--normal-map" });
+  EXPECT_TRUE(inspector.ShownScene().NoNormalMaps());
+  toggle->click();
+  EXPECT_EQ(Settings(inspector), with);
 }

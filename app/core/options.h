@@ -277,6 +277,15 @@ struct SceneOptions
     return this->NormalMap && !this->NoNormalMaps() ? this->NormalMap : this->BumpMap;
   }
 
+  /**
+   * The parts draw a normal or bump map: one given, or the mesh file's own
+   * (`fileMaps`, FileMapsNormals) unless --normal-map none.
+   */
+  bool MapsNormals(bool fileMaps) const
+  {
+    return this->Relief() || (fileMaps && !this->NoNormalMaps());
+  }
+
   /** Fog with no colour over a transparent background: it takes coverage away (FogAt). */
   bool FogsTowardsTransparent() const
   {

@@ -290,7 +290,7 @@ ControlPanel::ControlPanel(Inspector& inspector, QWidget* parent)
           });
       });
   }
-  else if (inspector.HasFileNormalMaps() && !inspector.GetState().Scene.NoNormalMaps())
+  else if (inspector.GetState().Scene.MapsNormals(inspector.HasFileNormalMaps()))
   {
     // The file's maps on or off (each part's scale is its own).
     terms->addRow(this->Toggle("normal map  N'", &ViewState::Relief));

@@ -224,10 +224,11 @@ private:
     std::unique_ptr<Tracing> Traced; // a raytrace panel's
     // --background environment: the environment behind the panel, and
     // its picture (OverEnvironment of nothing) for the camera and size it
-    // was last painted for.
+    // was last painted for (none: paint at the next draw). The camera's
+    // rays, not its modification time, which a clipping range moves too.
     std::optional<EnvironmentMap> Behind;
     vtkSmartPointer<vtkTexture> BehindPicture;
-    vtkMTimeType BehindCamera = 0;
+    std::optional<PinholeCamera> BehindCamera;
     std::array<int, 2> BehindSize{};
   };
 

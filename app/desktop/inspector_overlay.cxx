@@ -136,7 +136,7 @@ void Inspector::UpdateHud()
       << " | terms:" << (this->State.Ambient ? " ambient" : "")
       << (this->State.Diffuse ? " diffuse" : "") << (this->State.Specular ? " specular" : "")
       << (!s.Environment.empty() && this->State.Reflected ? " environment" : "")
-      << ((s.Relief() || (this->FileNormalMaps && !s.NoNormalMaps())) && this->State.Relief
+      << (s.MapsNormals(this->FileNormalMaps) && this->State.Relief
              ? (s.BumpMap ? " | bump map" : " | normal map")
              : "")
       << "\n";

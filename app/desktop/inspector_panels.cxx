@@ -68,7 +68,7 @@ void Inspector::Apply()
     this->ShowExtras(slot, scene, shown.Mesh->Mesh);
     slot.Behind =
       scene.EnvironmentBackground ? SceneEnvironment(scene, shown.Scene->Images) : std::nullopt;
-    slot.BehindCamera = 0; // painted again at the next draw
+    slot.BehindCamera.reset(); // painted again at the next draw
     slot.Renderer->SetTexturedBackground(slot.Behind.has_value());
     if (i == 0)
     {
@@ -124,15 +124,15 @@ void Inspector::PaintBehind(vtkObject* renderer, unsigned long, void*)
   }
   const int* size = slot->Renderer->GetSize();
   const std::array<int, 2> now{ std::max(size[0], 1), std::max(size[1], 1) };
-  vtkCamera* camera = slot->Renderer->GetActiveCamera();
-  if (camera->GetMTime() == slot->BehindCamera && now == slot->BehindSize)
+  const PinholeCamera camera = PinholeCameraOf(slot->Renderer->GetActiveCamera());
+  if (camera == slot->BehindCamera && now == slot->BehindSize)
   {
     return;
   }
   // Pixel for pixel, as headless lays a picture over it (nearest texels).
   FloatImage behind{ now[0], now[1],
     std::vector<float>(static_cast<std::size_t>(now[0]) * now[1] * 4, 0.0f) };
-  OverEnvironment(behind.Rgba, now[0], now[1], PinholeCameraOf(camera), *slot->Behind);
+  OverEnvironment(behind.Rgba, now[0], now[1], camera, *slot->Behind);
   if (!slot->BehindPicture)
   {
     slot->BehindPicture = vtkSmartPointer<vtkTexture>::New();
@@ -140,7 +140,7 @@ void Inspector::PaintBehind(vtkObject* renderer, unsigned long, void*)
   }
   slot->BehindPicture->SetInputData(ToVtkImage(behind));
   slot->Renderer->SetBackgroundTexture(slot->BehindPicture);
-  slot->BehindCamera = camera->GetMTime();
+  slot->BehindCamera = camera;
   slot->BehindSize = now;
 }
 

@@ -84,8 +84,8 @@ void AddTerms(ordered_json& j, const PixelProbe& p, const IlluminationTerms& t)
   }
 }
 
-// A normal or bump map's perturbation, as `key` names it: the normal
-// before it, the tangent frame, where the map was read and what it held (a
+// A normal or bump map's perturbation (under "normal_map" or "bump_map"):
+// the normal before it, the tangent frame, where the map was read and what it held (a
 // height map's heights there and one texel along s and t), and the normal
 // that lit.
 void AddMapping(ordered_json& j, const NormalMapping& m)

@@ -61,7 +61,8 @@ private:
   PhaseTimer* Timer;
   std::map<std::string, LoadedTexture> Textures;
   // What makes two meshes the same: the file and how its normals are got
-  // (LoadMesh computes them only for the lit rules).
+  // (LoadMesh computes them only for the lit rules), and what decides its
+  // tangents (SceneOptions::MapsNormals: a map given, the file's dropped).
   using Key = std::tuple<std::string, NormalsMode, std::string, double, bool, bool, bool, bool>;
   std::map<Key, LoadedMesh> Meshes;
 };

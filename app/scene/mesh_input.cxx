@@ -193,7 +193,7 @@ LoadedMesh LoadMesh(const SceneOptions& options, PhaseTimer* timer, bool cellNor
   lap("normals");
   // A normal map's frame, where there are texture coordinates to make it
   // of (the scene says so where there are none).
-  if ((options.Relief() || (!options.NoNormalMaps() && FileMapsNormals(mesh))) &&
+  if (options.MapsNormals(FileMapsNormals(mesh)) &&
     mesh->GetPointData()->GetArray(TextureCoordinatesArrayName))
   {
     auto withTangents = vtkSmartPointer<vtkPolyData>::New();

@@ -24,6 +24,9 @@ struct LoadedMesh
   vtkIdType DuplicatedFaces = 0; // ComputedNormals's, when they were computed
 };
 
+/** Whether a part of mesh has a normal map of the file's own (PartNormalTexture). */
+bool FileMapsNormals(vtkPolyData* mesh);
+
 /**
  * Reads options.Mesh and computes its normals as asked; warnings are
  * reported. `timer` (if given) times the phases "read" and "normals" (and
@@ -46,9 +49,6 @@ struct ComputedNormals
  * mesh with vertex normals computed by vtkShadelabMeshNormals as settings
  * say, and with face normals if `cellNormals`.
  */
-/** Whether a part of mesh has a normal map of the file's own (PartNormalTexture). */
-bool FileMapsNormals(vtkPolyData* mesh);
-
 ComputedNormals ComputeNormals(
   vtkPolyData* mesh, const NormalsSettings& settings, bool cellNormals = false);
 

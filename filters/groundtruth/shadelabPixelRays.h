@@ -27,6 +27,13 @@ struct PinholeCamera
   double ViewAngle = 30; // perspective: vertical, degrees
   bool Orthographic = false;
   double ParallelScale = 1; // orthographic: half the view height in world units
+
+  bool operator==(const PinholeCamera& o) const
+  {
+    return this->Position == o.Position && this->FocalPoint == o.FocalPoint &&
+      this->ViewUp == o.ViewUp && this->ViewAngle == o.ViewAngle &&
+      this->Orthographic == o.Orthographic && this->ParallelScale == o.ParallelScale;
+  }
 };
 
 /** vtkCamera's position, focal point, view-up, view angle and projection. */
